@@ -1,0 +1,93 @@
+"""Configuration: load YAML, validate against the JSON schema, explain what is wrong.
+
+Every key of ``config/config.yaml`` is declared in ``config/schema.yaml`` with
+its type, range and description; unknown keys are errors (a typo must not be
+silently ignored). :func:`validate` collects *all* problems and raises one
+:class:`ConfigError` whose message names each bad key, its value, the
+allowed range and what the key means.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import jsonschema
+import yaml
+
+
+class ConfigError(ValueError):
+    """The configuration does not satisfy the schema."""
+
+
+def load_yaml(path) -> dict:
+    with open(path) as fh:
+        return yaml.safe_load(fh) or {}
+
+
+def _key(path) -> str:
+    out = ""
+    for part in path:
+        out += f"[{part}]" if isinstance(part, int) else (f".{part}" if out else str(part))
+    return out or "<top level>"
+
+
+def _subschema(schema: dict, path) -> dict:
+    node = schema
+    for part in path:
+        if isinstance(part, int):
+            node = node.get("items", {})
+        else:
+            node = node.get("properties", {}).get(part, {})
+    return node
+
+
+def _describe(error: jsonschema.ValidationError, schema: dict) -> str:
+    key = _key(error.absolute_path)
+    node = _subschema(schema, error.absolute_path)
+    if error.validator == "additionalProperties":
+        allowed = ", ".join(sorted(error.schema.get("properties", {})))
+        extra = sorted(set(error.instance) - set(error.schema.get("properties", {})))
+        where = f"{key}." if error.absolute_path else ""
+        return f"unknown key {', '.join(repr(where + e) for e in extra)} (allowed here: {allowed})"
+    if error.validator == "required":
+        missing = error.message.split("'")[1] if "'" in error.message else error.message
+        where = f"{key}." if error.absolute_path else ""
+        return f"missing key '{where}{missing}'"
+    bounds = []
+    for word, sym in (("minimum", ">="), ("exclusiveMinimum", ">"), ("maximum", "<="), ("exclusiveMaximum", "<")):
+        if word in node:
+            bounds.append(f"{sym} {node[word]}")
+    allowed = f" (allowed: {node.get('type', 'value')} {' and '.join(bounds)})" if bounds else ""
+    if "enum" in node:
+        allowed = f" (allowed: one of {node['enum']})"
+    desc = f" -- {node['description']}" if "description" in node else ""
+    return f"{key} = {error.instance!r} is invalid: {error.message}{allowed}{desc}"
+
+
+def validate(config: dict, schema_path) -> dict:
+    """Validate ``config`` against the schema at ``schema_path``; return it or raise :class:`ConfigError`."""
+    schema = load_yaml(schema_path)
+    validator = jsonschema.Draft202012Validator(schema)
+    errors = sorted(validator.iter_errors(config), key=lambda e: list(map(str, e.absolute_path)))
+    problems = [_describe(e, schema) for e in errors] if errors else _consistency(config)
+    if problems:
+        lines = "\n".join(f"  - {p}" for p in problems)
+        raise ConfigError(f"invalid configuration ({Path(schema_path).name}):\n{lines}")
+    return config
+
+
+def _consistency(config: dict) -> list[str]:
+    """Relations between keys that a JSON schema cannot express."""
+    problems = []
+    for model in ("mean",):
+        m = config.get(model, {})
+        if m.get("outer_radius_um", 0) <= m.get("inner_radius_um", 0):
+            problems.append(f"{model}.outer_radius_um = {m.get('outer_radius_um')} must exceed "
+                            f"{model}.inner_radius_um = {m.get('inner_radius_um')}")
+    cal = config.get("calibration", {})
+    top = cal.get("max_pressure_mmHg", 0)
+    for k, p in enumerate(cal.get("transmural_pressures_mmHg", [])):
+        if p > top:
+            problems.append(f"calibration.transmural_pressures_mmHg[{k}] = {p} exceeds "
+                            f"calibration.max_pressure_mmHg = {top}")
+    return problems

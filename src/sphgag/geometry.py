@@ -1,0 +1,176 @@
+"""Particle layout of the quarter-annulus arterial cross-section (paper section 2.4, figure 1a).
+
+The paper discretises the quarter annulus with the nodes of an unstructured
+triangle mesh. We generate the layout instead, from one resolution parameter
+``dx_um``, so that refining the resolution means the same thing everywhere:
+
+* **Rings in r.** Every layer ``[r_a, r_b]`` of the wall is split into cells of
+  equal radial width. The inner and outer surfaces carry a ring of particles
+  (surface particles own a half cell, so boundary conditions act exactly at the
+  surfaces) and every interface between layers is a cell boundary (no particle
+  straddles two layers).
+* **Equal arc spacing.** Each ring carries ``n = round(arc / dx)`` particles at
+  equal angular spacing, offset by half a spacing from the symmetry edges
+  ``theta = 0`` and ``theta = pi/2``. The edges are mirror planes (see
+  :mod:`sphgag.kernel`), so no particle sits on them.
+* **Volumes.** A particle's volume is the exact area of its annular cell,
+  ``(r_hi^2 - r_lo^2) / 2 * dtheta`` (reference area per unit reference axial
+  length; the axial stretch enters through the constitutive law). The volumes
+  sum to the exact area of the quarter annulus.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+QUARTER = 0.5 * np.pi
+
+
+@dataclass(frozen=True)
+class Layout:
+    """Reference configuration of the particles (flat arrays, SI-free units: um).
+
+    Attributes
+    ----------
+    X : (N, 2) reference positions.
+    volume : (N,) reference areas of the particles' annular cells [um^2].
+    radius, theta : (N,) reference polar coordinates of the particles.
+    ring : (N,) index of the particle's ring (0 = inner surface).
+    layer : (N,) index into ``layer_names``.
+    ring_radius : (n_rings,) reference radius of each ring.
+    ring_cell : (n_rings, 2) radial extent [r_lo, r_hi] of each ring's cells.
+    interfaces : radii of the wall surfaces and layer interfaces, inner to outer.
+    layer_names : name of each layer, inner to outer.
+    dx : requested particle spacing [um].
+    """
+
+    X: np.ndarray
+    volume: np.ndarray
+    radius: np.ndarray
+    theta: np.ndarray
+    ring: np.ndarray
+    layer: np.ndarray
+    ring_radius: np.ndarray
+    ring_cell: np.ndarray
+    interfaces: tuple
+    layer_names: tuple
+    dx: float
+    _ring_members: list = field(default_factory=list, repr=False, compare=False)
+
+    @property
+    def n(self) -> int:
+        return self.X.shape[0]
+
+    @property
+    def inner_radius(self) -> float:
+        return float(self.interfaces[0])
+
+    @property
+    def outer_radius(self) -> float:
+        return float(self.interfaces[-1])
+
+    def ring_members(self, k: int) -> np.ndarray:
+        """Indices of the particles of ring ``k``, ordered by increasing theta."""
+        return self._ring_members[k]
+
+    @property
+    def inner_surface(self) -> np.ndarray:
+        return self.ring_members(0)
+
+    @property
+    def outer_surface(self) -> np.ndarray:
+        return self.ring_members(len(self.ring_radius) - 1)
+
+    def layer_mask(self, name: str) -> np.ndarray:
+        return self.layer == self.layer_names.index(name)
+
+
+def _ring_radii(interfaces, dx):
+    """Ring radii and cell bounds such that surfaces carry rings and interfaces are cell bounds.
+
+    With ``L`` layers and ``n_l`` rings in layer ``l`` (radial widths ``d_l``):
+    a single layer spans ``(n - 1) d`` (half cells at both surfaces); with several
+    layers the first spans ``(n_1 - 1/2) d_1``, inner ones ``n_l d_l`` and the last
+    ``(n_L - 1/2) d_L``.
+    """
+    interfaces = np.asarray(interfaces, dtype=float)
+    n_layers = len(interfaces) - 1
+    radii, cells, layer_of_ring = [], [], []
+    for l in range(n_layers):
+        a, b = interfaces[l], interfaces[l + 1]
+        first, last = l == 0, l == n_layers - 1
+        half_cells = int(first) + int(last)  # surfaces own half cells
+        n = max(int(round((b - a) / dx + 0.5 * half_cells)), 1 + int(first and last))
+        d = (b - a) / (n - 0.5 * half_cells)
+        start = a if first else a + 0.5 * d
+        for k in range(n):
+            r = start + k * d
+            lo = max(r - 0.5 * d, a)
+            hi = min(r + 0.5 * d, b)
+            radii.append(r)
+            cells.append((lo, hi))
+            layer_of_ring.append(l)
+    return np.array(radii), np.array(cells), np.array(layer_of_ring)
+
+
+def quarter_annulus(interfaces, dx, layer_names=("wall",)) -> Layout:
+    """Generate the particle layout of a (possibly layered) quarter annulus.
+
+    Parameters
+    ----------
+    interfaces : radii ``[R_in, (interfaces...), R_out]`` in um.
+    dx : target particle spacing in um (the resolution parameter ``dx_um``).
+    layer_names : one name per layer, inner to outer.
+    """
+    interfaces = tuple(float(r) for r in interfaces)
+    if len(layer_names) != len(interfaces) - 1:
+        raise ValueError("need one layer name per layer (len(interfaces) - 1)")
+    if any(b <= a for a, b in zip(interfaces, interfaces[1:])):
+        raise ValueError(f"interfaces must increase strictly, got {interfaces}")
+    if dx <= 0:
+        raise ValueError("dx must be positive")
+    radii, cells, layer_of_ring = _ring_radii(interfaces, dx)
+
+    X, vol, rad, th, ring, layer, members = [], [], [], [], [], [], []
+    start = 0
+    for k, (r, (lo, hi)) in enumerate(zip(radii, cells)):
+        n_theta = max(int(round(QUARTER * r / dx)), 2)
+        dth = QUARTER / n_theta
+        t = (np.arange(n_theta) + 0.5) * dth
+        X.append(np.column_stack([r * np.cos(t), r * np.sin(t)]))
+        vol.append(np.full(n_theta, 0.5 * (hi * hi - lo * lo) * dth))
+        rad.append(np.full(n_theta, r))
+        th.append(t)
+        ring.append(np.full(n_theta, k))
+        layer.append(np.full(n_theta, layer_of_ring[k]))
+        members.append(np.arange(start, start + n_theta))
+        start += n_theta
+
+    # number the particles by angle (then radius): neighbours get nearby indices, which keeps
+    # the Jacobian banded for the sparse direct solver and the force loops cache friendly
+    theta_all = np.concatenate(th)
+    order = np.lexsort((np.concatenate(ring), theta_all))
+    rank = np.empty_like(order)
+    rank[order] = np.arange(order.size)
+    members = [np.sort(rank[m]) for m in members]
+    return Layout(
+        X=np.ascontiguousarray(np.vstack(X)[order]),
+        volume=np.concatenate(vol)[order],
+        radius=np.concatenate(rad)[order],
+        theta=theta_all[order],
+        ring=np.concatenate(ring).astype(np.int64)[order],
+        layer=np.concatenate(layer).astype(np.int64)[order],
+        ring_radius=radii,
+        ring_cell=cells,
+        interfaces=interfaces,
+        layer_names=tuple(layer_names),
+        dx=float(dx),
+        _ring_members=members,
+    )
+
+
+def quarter_annulus_area(r_in: float, r_out: float) -> float:
+    """Exact area of the quarter annulus, the sum the particle volumes must reproduce."""
+    return 0.25 * np.pi * (r_out**2 - r_in**2)

@@ -1,0 +1,238 @@
+"""Spiky kernel, reference neighbour lists and corrected gradients (paper eqs. 2.1-2.8).
+
+Neighbour lists are built once, in the reference configuration (total
+Lagrangian SPH, section 2.1), as flat CSR arrays: the entries of particle ``i``
+are ``ptr[i]:ptr[i+1]``.
+
+**Symmetry edges.** The quarter annulus is bounded by the mirror planes
+``theta = 0`` (``y = 0``) and ``theta = pi/2`` (``x = 0``). We realise the
+paper's sliding boundaries as exact mirror symmetry: a particle near an edge
+also interacts with the mirror images ("ghosts") of the particles across it.
+A ghost's position is always the mirror image of its real particle, so the
+normal displacement on the edge is zero and the tangential traction is free,
+and every particle has a complete kernel support except at the inner and outer
+surfaces. Each entry carries the diagonal of its mirror map, ``mirror[e] =
+(s_x, s_y)`` with ``s = +-1``; a ghost of ``j`` sits at ``(s_x x_j, s_y y_j)``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numba import njit
+
+from .geometry import Layout
+
+# Mirror maps: identity, mirror across y = 0 (theta = 0), mirror across x = 0 (theta = pi/2).
+MIRRORS = np.array([[1.0, 1.0], [1.0, -1.0], [-1.0, 1.0]])
+
+
+@njit(cache=True)
+def spiky(r, h):
+    """Spiky kernel xi(R) = 10 (h - R)^3 / (pi h^5) for R < h (eq. 2.4)."""
+    if r >= h:
+        return 0.0
+    return 10.0 * (h - r) ** 3 / (np.pi * h**5)
+
+
+@njit(cache=True)
+def spiky_derivative(r, h):
+    """d xi / dR of the spiky kernel (used in eq. 2.3)."""
+    if r >= h:
+        return 0.0
+    return -30.0 * (h - r) ** 2 / (np.pi * h**5)
+
+
+@njit(cache=True)
+def _count_neighbours(X, h, mirror_codes, counts):
+    n = X.shape[0]
+    h2 = h * h
+    for i in range(n):
+        c = 0
+        for j in range(n):
+            for m in mirror_codes:
+                sx, sy = MIRRORS[m, 0], MIRRORS[m, 1]
+                dx = sx * X[j, 0] - X[i, 0]
+                dy = sy * X[j, 1] - X[i, 1]
+                d2 = dx * dx + dy * dy
+                if d2 < h2 and d2 > 0.0:
+                    c += 1
+        counts[i] = c
+
+
+@njit(cache=True)
+def _fill_neighbours(X, h, mirror_codes, ptr, nbr, mir):
+    n = X.shape[0]
+    h2 = h * h
+    for i in range(n):
+        e = ptr[i]
+        for j in range(n):
+            for m in mirror_codes:
+                sx, sy = MIRRORS[m, 0], MIRRORS[m, 1]
+                dx = sx * X[j, 0] - X[i, 0]
+                dy = sy * X[j, 1] - X[i, 1]
+                d2 = dx * dx + dy * dy
+                if d2 < h2 and d2 > 0.0:
+                    nbr[e] = j
+                    mir[e, 0] = sx
+                    mir[e, 1] = sy
+                    e += 1
+
+
+@njit(cache=True)
+def _corrected_gradients(X, V, h, ptr, nbr, mir, R, w, a, s, A_out):
+    """Per-entry reference separation R_ij, kernel value, and V_j A_i^-1 grad xi (eqs. 2.3, 2.7, 2.8)."""
+    n = X.shape[0]
+    for i in range(n):
+        a00 = a01 = a10 = a11 = 0.0
+        for e in range(ptr[i], ptr[i + 1]):
+            j = nbr[e]
+            r0 = mir[e, 0] * X[j, 0] - X[i, 0]
+            r1 = mir[e, 1] * X[j, 1] - X[i, 1]
+            d = np.sqrt(r0 * r0 + r1 * r1)
+            R[e, 0] = r0
+            R[e, 1] = r1
+            w[e] = spiky(d, h)
+            g = spiky_derivative(d, h) / d
+            # A_i = sum_j V_j grad xi (x) R_j  (eq. 2.8)
+            a00 += V[j] * g * r0 * r0
+            a01 += V[j] * g * r0 * r1
+            a10 += V[j] * g * r1 * r0
+            a11 += V[j] * g * r1 * r1
+        det = a00 * a11 - a01 * a10
+        A_out[i, 0, 0] = a00
+        A_out[i, 0, 1] = a01
+        A_out[i, 1, 0] = a10
+        A_out[i, 1, 1] = a11
+        i00, i01, i10, i11 = a11 / det, -a01 / det, -a10 / det, a00 / det
+        s0 = s1 = 0.0
+        for e in range(ptr[i], ptr[i + 1]):
+            j = nbr[e]
+            d = np.sqrt(R[e, 0] ** 2 + R[e, 1] ** 2)
+            g = V[j] * spiky_derivative(d, h) / d
+            g0, g1 = g * R[e, 0], g * R[e, 1]
+            a[e, 0] = i00 * g0 + i01 * g1
+            a[e, 1] = i10 * g0 + i11 * g1
+            s0 += a[e, 0]
+            s1 += a[e, 1]
+        s[i, 0] = s0
+        s[i, 1] = s1
+
+
+@dataclass(frozen=True)
+class Neighbours:
+    """Reference neighbour lists and corrected kernel gradients (flat CSR arrays).
+
+    ptr : (N+1,) CSR offsets; entries of particle i are ``ptr[i]:ptr[i+1]``.
+    nbr : (E,) neighbour index j of each entry.
+    mirror : (E, 2) diagonal of the mirror map of each entry (ghost = mirror * x_j).
+    R : (E, 2) reference separation ``mirror * X_j - X_i`` (``R_j`` in eq. 2.1).
+    w : (E,) kernel value xi(|R_j|) (eq. 2.4).
+    a : (E, 2) ``V_j A_i^-1 grad xi(R_j)``: volume-weighted corrected gradient (eq. 2.8).
+    s : (N, 2) ``sum_j a_ij``.
+    A : (N, 2, 2) correction matrices (eq. 2.8).
+    h : kernel support.
+    ext : (E,) uint32 index of each entry's neighbour in the *extended* particle
+        array (real particles ``0..N-1`` followed by the ghosts), used by the
+        force kernel so that its inner loop needs no mirror logic.
+    ghost_owner : (G,) real particle whose mirror image each ghost is.
+    ghost_mirror : (G, 2) mirror diagonal of each ghost.
+    pair_ptr, pair_entry, pair_reverse : half list of the real pairs ``i < j``:
+        for particle i, ``pair_entry[pair_ptr[i]:pair_ptr[i+1]]`` are its entries
+        ``i -> j`` with ``j > i`` and ``pair_reverse`` the matching entries ``j -> i``
+        (the force kernel handles both directions of a pair at once).
+    solo_ptr, solo_entry : the ghost entries of each particle (one direction only).
+    """
+
+    ptr: np.ndarray
+    nbr: np.ndarray
+    mirror: np.ndarray
+    R: np.ndarray
+    w: np.ndarray
+    a: np.ndarray
+    s: np.ndarray
+    A: np.ndarray
+    h: float
+    ext: np.ndarray
+    ghost_owner: np.ndarray
+    ghost_mirror: np.ndarray
+    pair_ptr: np.ndarray
+    pair_entry: np.ndarray
+    pair_reverse: np.ndarray
+    solo_ptr: np.ndarray
+    solo_entry: np.ndarray
+
+    @property
+    def n_entries(self) -> int:
+        return self.nbr.shape[0]
+
+    def counts(self) -> np.ndarray:
+        return np.diff(self.ptr)
+
+
+def build_neighbours(X, volume, h, mirrors=(1, 2)) -> Neighbours:
+    """Neighbour lists within support ``h`` in the reference configuration.
+
+    ``mirrors`` lists the symmetry planes whose ghosts join the stencils
+    (1: y = 0, 2: x = 0); pass ``()`` for a free body.
+    """
+    X = np.ascontiguousarray(X, dtype=float)
+    V = np.ascontiguousarray(volume, dtype=float)
+    codes = np.array((0,) + tuple(mirrors), dtype=np.int64)
+    n = X.shape[0]
+    counts = np.zeros(n, dtype=np.int64)
+    _count_neighbours(X, float(h), codes, counts)
+    ptr = np.zeros(n + 1, dtype=np.int64)
+    np.cumsum(counts, out=ptr[1:])
+    E = int(ptr[-1])
+    nbr = np.empty(E, dtype=np.int64)
+    mir = np.empty((E, 2))
+    _fill_neighbours(X, float(h), codes, ptr, nbr, mir)
+    R = np.empty((E, 2))
+    w = np.empty(E)
+    a = np.empty((E, 2))
+    s = np.empty((n, 2))
+    A = np.empty((n, 2, 2))
+    _corrected_gradients(X, V, float(h), ptr, nbr, mir, R, w, a, s, A)
+    cond = np.linalg.cond(A)
+    if not np.all(np.isfinite(cond)) or cond.max() > 1e8:
+        raise ValueError(
+            f"singular SPH correction matrix (max condition number {cond.max():.3g}); "
+            f"increase the kernel support h = {h}"
+        )
+    # ghosts: one per distinct (particle, mirror) pair among the mirrored entries
+    code = np.where(mir[:, 0] < 0, 2, np.where(mir[:, 1] < 0, 1, 0))
+    ghost_key = np.unique(nbr[code > 0] * 3 + code[code > 0])
+    ghost_owner = ghost_key // 3
+    ghost_mirror = MIRRORS[ghost_key % 3]
+    ext = nbr.copy()
+    ghost = code > 0
+    ext[ghost] = n + np.searchsorted(ghost_key, nbr[ghost] * 3 + code[ghost])
+    # half list of real pairs, and the ghost ("solo") entries
+    owner = np.repeat(np.arange(n), counts)
+    upper = ~ghost & (owner < nbr)
+    lower = ~ghost & (owner > nbr)
+    pair_entry = np.flatnonzero(upper)  # sorted by owner, then j
+    key_lower = nbr[lower] * n + owner[lower]  # (j, i) of entries j -> i, reindexed as (i, j)
+    order = np.argsort(key_lower)
+    pair_reverse = np.flatnonzero(lower)[order]
+    if not np.array_equal(np.sort(key_lower), owner[upper] * n + nbr[upper]):
+        raise AssertionError("neighbour lists are not symmetric")
+    solo_entry = np.flatnonzero(ghost)
+    return Neighbours(ptr=ptr, nbr=nbr, mirror=mir, R=R, w=w, a=a, s=s, A=A, h=float(h),
+                      ext=ext.astype(np.uint32), ghost_owner=ghost_owner.astype(np.int64),
+                      ghost_mirror=np.ascontiguousarray(ghost_mirror),
+                      pair_ptr=_offsets(owner[pair_entry], n), pair_entry=pair_entry, pair_reverse=pair_reverse,
+                      solo_ptr=_offsets(owner[solo_entry], n), solo_entry=solo_entry)
+
+
+def _offsets(sorted_owner, n):
+    ptr = np.zeros(n + 1, dtype=np.int64)
+    np.cumsum(np.bincount(sorted_owner, minlength=n), out=ptr[1:])
+    return ptr
+
+
+def for_layout(layout: Layout, support_factor: float) -> Neighbours:
+    """Neighbours of a quarter-annulus layout with ``h = support_factor * dx`` and both mirror planes."""
+    return build_neighbours(layout.X, layout.volume, support_factor * layout.dx, mirrors=(1, 2))

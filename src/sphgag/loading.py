@@ -1,0 +1,156 @@
+"""Loads and boundary conditions: axial stretch, lumen pressure, prescribed inner radius.
+
+A :class:`Load` is one point on a loading path; the quasi-static driver
+(:mod:`sphgag.solver`) moves between loads by linear interpolation, so every
+ramp in the paper (axial stretch, pressure, deposition pre-stretch, swelling)
+is a path of loads.
+
+**Pressure** acts on the inner surface as the exact gradient of the work
+``P lz A``, where ``A`` is the area of the quarter lumen bounded by the
+polygon through the inner-surface particles (closed on the symmetry planes)
+and ``lz`` turns it into a volume per unit reference length. The load is
+therefore conservative (its stiffness is symmetric) and follows the
+deformed surface. The outer surface is traction free: that is the natural
+boundary condition of the discrete energy, so no force is applied there (the
+paper instead zeroes the normal component of P at outer particles, section
+2.4.1; we check the resulting radial stress instead).
+
+**Prescribed inner radius** (displacement control, as in the authors'
+script) places the inner-surface particles at radius ``r_in`` on their
+reference rays; the pressure the wall carries is read from the reactions.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+from numba import njit
+
+MMHG_TO_KPA = 0.133322387415
+
+
+@dataclass(frozen=True)
+class Load:
+    """One load state.
+
+    axial_stretch : lambda_z of plane strain (relative to the reference).
+    pressure_kPa : lumen pressure (pressure control), or None.
+    inner_radius : prescribed inner radius in um (displacement control), or None.
+    material : named scalars the model's material depends on (e.g. a
+        pre-stretch ramp fraction or a GAG concentration), interpolated like
+        the rest.
+    """
+
+    axial_stretch: float = 1.0
+    pressure_kPa: float | None = 0.0
+    inner_radius: float | None = None
+    material: tuple = field(default_factory=tuple)
+
+    def __post_init__(self):
+        if (self.pressure_kPa is None) == (self.inner_radius is None):
+            raise ValueError("a load prescribes exactly one of pressure_kPa and inner_radius")
+
+    @property
+    def pressure_mmHg(self):
+        return None if self.pressure_kPa is None else self.pressure_kPa / MMHG_TO_KPA
+
+    def with_material(self, **values) -> "Load":
+        d = dict(self.material)
+        d.update(values)
+        return replace(self, material=tuple(sorted(d.items())))
+
+    def material_value(self, name, default=None):
+        return dict(self.material).get(name, default)
+
+    def lerp(self, other: "Load", t: float) -> "Load":
+        """The load a fraction ``t`` of the way from ``self`` to ``other``."""
+        if (self.pressure_kPa is None) != (other.pressure_kPa is None):
+            raise ValueError("cannot interpolate between pressure and radius control")
+
+        def mix(a, b):
+            return None if a is None else a + t * (b - a)
+
+        mine, theirs = dict(self.material), dict(other.material)
+        if set(mine) != set(theirs):
+            raise ValueError("cannot interpolate loads with different material parameters")
+        return Load(
+            axial_stretch=mix(self.axial_stretch, other.axial_stretch),
+            pressure_kPa=mix(self.pressure_kPa, other.pressure_kPa),
+            inner_radius=mix(self.inner_radius, other.inner_radius),
+            material=tuple(sorted((k, mix(mine[k], theirs[k])) for k in mine)),
+        )
+
+
+@njit(cache=True)
+def lumen_area_gradient(x, idx, grad):
+    """Quarter lumen area A and dA/dx of the inner-surface particles ``idx`` (ordered by theta).
+
+    The polygon runs ``(x_0, 0) -> p_0 -> ... -> p_{n-1} -> (0, y_{n-1})``,
+    i.e. it is closed by the mirror images across both symmetry planes.
+    """
+    n = idx.shape[0]
+    area = 0.0
+    for k in range(n - 1):
+        a, b = idx[k], idx[k + 1]
+        area += x[a, 0] * x[b, 1] - x[a, 1] * x[b, 0]
+    first, last = idx[0], idx[n - 1]
+    area += x[first, 0] * x[first, 1] + x[last, 0] * x[last, 1]
+    for k in range(n):
+        p = idx[k]
+        if k == 0:
+            y_prev, x_prev = -x[p, 1], x[p, 0]  # mirror across y = 0
+        else:
+            y_prev, x_prev = x[idx[k - 1], 1], x[idx[k - 1], 0]
+        if k == n - 1:
+            y_next, x_next = x[p, 1], -x[p, 0]  # mirror across x = 0
+        else:
+            y_next, x_next = x[idx[k + 1], 1], x[idx[k + 1], 0]
+        grad[k, 0] = 0.5 * (y_next - y_prev)
+        grad[k, 1] = 0.5 * (x_prev - x_next)
+    return 0.5 * area
+
+
+def pressure_forces(x, inner, pressure_kPa, lz):
+    """External nodal forces of the lumen pressure, ``P lz dA/dx`` (all particles, zeros off the surface)."""
+    f = np.zeros_like(x)
+    if pressure_kPa:
+        g = np.empty((inner.size, 2))
+        lumen_area_gradient(x, inner, g)
+        f[inner] = pressure_kPa * lz * g
+    return f
+
+
+def add_pressure_stiffness(data, blocks_of, inner, pressure_kPa, lz):
+    """Add d(P lz dA/dx)/dx to Jacobian blocks; ``blocks_of(p, q)`` gives a block index.
+
+    d(dA/dx_k)/dy_{k+1} = 1/2, d(dA/dx_k)/dy_{k-1} = -1/2, d(dA/dy_k)/dx_{k-1} = 1/2,
+    d(dA/dy_k)/dx_{k+1} = -1/2; the mirror closures add d(dA/dx)/dy = 1/2 at the
+    first and d(dA/dy)/dx = 1/2 at the last particle (the Hessian is symmetric).
+    """
+    if not pressure_kPa:
+        return
+    c = 0.5 * pressure_kPa * lz
+    n = inner.size
+    for k in range(n):
+        p = inner[k]
+        if k + 1 < n:
+            b = blocks_of(p, inner[k + 1])
+            data[b, 0, 1] += c
+            data[b, 1, 0] -= c
+        if k > 0:
+            b = blocks_of(p, inner[k - 1])
+            data[b, 0, 1] -= c
+            data[b, 1, 0] += c
+    b = blocks_of(inner[0], inner[0])
+    data[b, 0, 1] += c
+    data[b, 1, 0] += c
+    b = blocks_of(inner[-1], inner[-1])
+    data[b, 0, 1] += c
+    data[b, 1, 0] += c
+
+
+def prescribed_inner_positions(X_inner, r_in):
+    """Inner-surface particles at radius ``r_in`` on their reference rays."""
+    R = np.linalg.norm(X_inner, axis=1)
+    return X_inner * (r_in / R)[:, None]

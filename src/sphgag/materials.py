@@ -1,0 +1,326 @@
+"""Constitutive laws, evaluated particle-wise under plane strain (paper sections 2.4-2.6).
+
+Every particle carries one row of a flat property table ``props[i, :]``; the
+same Numba kernel evaluates every material, so changing a particle's material
+(e.g. converting a medial particle to GAG) is a change of its row, not a new
+particle type. A row describes a constrained mixture:
+
+* **elastin-dominated matrix** (neo-Hookean, eqs. 2.18, 2.21), shear modulus
+  ``MU`` (already weighted by its mass fraction), bulk penalty ``LAM`` and
+  deposition pre-stretch ``G^e = diag(GR, GT, GZ)`` in the local (r, theta, z)
+  frame: ``W^e = MU/2 (tr(G C G) - 3) - MU ln J + LAM/2 (ln J)^2``;
+* up to ``MAX_FAMILIES`` **fibre families** (eqs. 2.18-2.19, 2.22) with
+  direction ``M = [0, sin a, cos a]`` in (r, theta, z) (stored as ``sin^2 a``), mass fraction ``phi``,
+  deposition stretch ``G``, ``I4 = G^2 M.C M`` and
+  ``W^k = phi c1/(4 c2) (exp[c2 (I4 - 1)^2] - 1)`` with constants
+  ``(c1+, c2+)`` in tension (I4 >= 1) and ``(c1-, c2-)`` in compression;
+* **active smooth-muscle tone** (eq. 2.24), a circumferential Cauchy stress
+  ``T(l) = TACT l (1 - ((LMAX - l)/(LMAX - LMIN))^2)`` (clipped at zero),
+  ``l`` the circumferential stretch from the reference;
+* **Gibbs-Donnan swelling** (eqs. 2.25-2.27): ``sigma -= PI I``, i.e.
+  ``W -= PI (J - 1)``.
+
+Plane strain at a prescribed axial stretch ``lz``: ``C = diag(C_2D, lz^2)``
+and ``J = det(F_2D) lz`` (section 2.4.1).
+
+Differences from the printed equations (see docs/physics.md):
+(2.18) prints ``mu/2 (I1 - 3 + ln J)``, which is not stress free at ``F = I``;
+we use ``mu/2 (I1 - 3) - mu ln J``, whose derivative is the first term of
+(2.20). (2.20) then prints ``lambda/2 ln J C^-1`` where the derivative of
+(2.18)'s ``lambda/2 (ln J)^2`` is ``lambda ln J C^-1``; we follow (2.18).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+# Column layout of the property table.
+MU, LAM, GR, GT, GZ, PI, TACT, LMAX, LMIN, HG_E, NFAM = range(11)
+FAM0 = 11
+MAX_FAMILIES = 4
+FAM_STRIDE = 7
+PHI, SIN2, C1P, C2P, C1M, C2M, GF = range(FAM_STRIDE)
+NPROP = FAM0 + MAX_FAMILIES * FAM_STRIDE
+
+
+def empty_props(n: int) -> np.ndarray:
+    """A property table for ``n`` particles: stress-free, no constituents."""
+    p = np.zeros((n, NPROP))
+    p[:, GR] = p[:, GT] = p[:, GZ] = 1.0
+    p[:, LMAX], p[:, LMIN] = 1.1, 0.6
+    return p
+
+
+def set_family(props, rows, k, phi, alpha_deg, c1p, c2p, c1m=None, c2m=None, prestretch=1.0):
+    """Fill fibre family ``k`` of the given rows (``c1m, c2m`` default to the tension constants)."""
+    if not 0 <= k < MAX_FAMILIES:
+        raise ValueError(f"fibre family index {k} outside 0..{MAX_FAMILIES - 1}")
+    base = FAM0 + k * FAM_STRIDE
+    props[rows, base + PHI] = phi
+    props[rows, base + SIN2] = np.sin(np.deg2rad(alpha_deg)) ** 2
+    props[rows, base + C1P] = c1p
+    props[rows, base + C2P] = c2p
+    props[rows, base + C1M] = c1p if c1m is None else c1m
+    props[rows, base + C2M] = c2p if c2m is None else c2m
+    props[rows, base + GF] = prestretch
+    props[rows, NFAM] = np.maximum(props[rows, NFAM], k + 1)
+
+
+def mean_behaviour(n, mu, lam, families, hourglass_modulus):
+    """Property table of the mean-behaviour model (eq. 2.18, Table 1).
+
+    ``families`` is a sequence of ``(alpha_deg, c1, c2)``: axial (0 deg),
+    circumferential (SMC + collagen, 90 deg) and the two diagonal families
+    (+-alpha_0). No deposition pre-stretch, same constants in tension and compression.
+    """
+    p = empty_props(n)
+    rows = np.arange(n)
+    p[:, MU] = mu
+    p[:, LAM] = lam
+    p[:, HG_E] = hourglass_modulus
+    for k, (alpha, c1, c2) in enumerate(families):
+        set_family(p, rows, k, 1.0, alpha, c1, c2)
+    return merge_identical_families(p)
+
+
+def merge_identical_families(props):
+    """Lump fibre families that are identical in plane strain (e.g. the diagonal pair +-alpha_0).
+
+    Under plane strain (no theta-z shear) families at +alpha and -alpha have the same
+    I4 and the same in-plane stress, so one family with the summed mass fraction is
+    exact and halves the exponentials per particle.
+    """
+    out = props.copy()
+    for row in np.unique(props[:, FAM0:], axis=0, return_index=True)[1]:
+        rows = np.flatnonzero((props[:, FAM0:] == props[row, FAM0:]).all(axis=1))
+        fams = []
+        for k in range(int(props[row, NFAM])):
+            f = props[row, FAM0 + k * FAM_STRIDE: FAM0 + (k + 1) * FAM_STRIDE].copy()
+            for g in fams:
+                if np.array_equal(np.delete(g, PHI), np.delete(f, PHI)):
+                    g[PHI] += f[PHI]
+                    break
+            else:
+                fams.append(f)
+        out[np.ix_(rows, np.arange(FAM0, NPROP))] = 0.0
+        for k, f in enumerate(fams):
+            out[np.ix_(rows, np.arange(FAM0 + k * FAM_STRIDE, FAM0 + (k + 1) * FAM_STRIDE))] = f
+        out[rows, NFAM] = len(fams)
+    return out
+
+
+# ---------------------------------------------------------------------------
+# Constitutive kernels in the particle's local reference frame (e_r, e_theta).
+# c_rr, c_tt, c_rt are the in-plane components of C = F^T F in that frame.
+# ---------------------------------------------------------------------------
+
+
+@njit(cache=True, fastmath=True, error_model="numpy")
+def _fibre_terms(I4, c1p, c2p, c1m, c2m):
+    """W(I4), W'(I4), W''(I4) of c1/(4 c2) (exp[c2 (I4-1)^2] - 1) (eqs. 2.18, 2.22)."""
+    E = I4 - 1.0
+    if E >= 0.0:
+        c1, c2 = c1p, c2p
+    else:
+        c1, c2 = c1m, c2m
+    if c2 == 0.0:
+        return 0.25 * c1 * E * E, 0.5 * c1 * E, 0.5 * c1
+    ex = np.exp(c2 * E * E)
+    return 0.25 * c1 / c2 * (ex - 1.0), 0.5 * c1 * E * ex, 0.5 * c1 * ex * (1.0 + 2.0 * c2 * E * E)
+
+
+@njit(cache=True, fastmath=True, error_model="numpy", inline="always")
+def _fibre_slope(I4, c1p, c2p, c1m, c2m):
+    """W'(I4) = c1/2 (I4 - 1) exp[c2 (I4 - 1)^2] alone (the stress needs nothing else)."""
+    E = I4 - 1.0
+    if E >= 0.0:
+        return 0.5 * c1p * E * np.exp(c2p * E * E)
+    return 0.5 * c1m * E * np.exp(c2m * E * E)
+
+
+@njit(cache=True, fastmath=True, error_model="numpy", inline="always")
+def _active_tension(lam, tmax, lmax, lmin):
+    """Active Cauchy stress T(lambda) of eq. (2.24) and dT/dlambda, clipped at zero."""
+    span = lmax - lmin
+    u = (lmax - lam) / span
+    t = tmax * lam * (1.0 - u * u)
+    if t <= 0.0:
+        return 0.0, 0.0
+    return t, tmax * ((1.0 - u * u) + 2.0 * lam * u / span)
+
+
+@njit(cache=True, fastmath=True, error_model="numpy", inline="always")
+def _fibre_I4(props, i, base, c_tt, lz):
+    """I4 = G^2 M.C M of a family with M = [0, sin a, cos a] (eqs. 2.19, 2.22)."""
+    s2 = props[i, base + SIN2]
+    return props[i, base + GF] ** 2 * (s2 * c_tt + (1.0 - s2) * lz * lz)
+
+
+@njit(cache=True, fastmath=True, error_model="numpy", inline="always")
+def pk2(c_rr, c_tt, c_rt, lz, props, i):
+    """Second Piola-Kirchhoff stress ``(S_rr, S_tt, S_rt)`` of particle ``i``.
+
+    Elastin (2.18/2.21): ``MU (G^2 - C^-1) + LAM ln J C^-1``; swelling (2.27):
+    ``-PI J C^-1``; fibres (2.20/2.22): ``2 phi W'(I4) G^2 sin^2 a e_t e_t``;
+    active tone (2.24): ``J T(l) / l^2 e_t e_t`` with ``l^2 = C_tt``.
+    """
+    det2 = c_rr * c_tt - c_rt * c_rt
+    J = lz * np.sqrt(det2)
+    mu = props[i, MU]
+    beta = (mu - props[i, LAM] * np.log(J) + props[i, PI] * J) / det2  # coefficient of -C^-1 det C
+    s_rr = mu * props[i, GR] ** 2 - beta * c_tt
+    s_tt = mu * props[i, GT] ** 2 - beta * c_rr
+    s_rt = beta * c_rt
+    for k in range(int(props[i, NFAM])):
+        base = FAM0 + k * FAM_STRIDE
+        s2 = props[i, base + SIN2]
+        if s2 == 0.0:
+            continue  # e.g. the axial family: no in-plane stress under plane strain
+        I4 = _fibre_I4(props, i, base, c_tt, lz)
+        w1 = _fibre_slope(I4, props[i, base + C1P], props[i, base + C2P], props[i, base + C1M], props[i, base + C2M])
+        s_tt += 2.0 * props[i, base + PHI] * w1 * props[i, base + GF] ** 2 * s2
+    if props[i, TACT] != 0.0:
+        t = _active_tension(np.sqrt(c_tt), props[i, TACT], props[i, LMAX], props[i, LMIN])[0]
+        s_tt += J * t / c_tt
+    return s_rr, s_tt, s_rt
+
+
+@njit(cache=True, fastmath=True, error_model="numpy")
+def material_tangent(c_rr, c_tt, c_rt, lz, props, i, C):
+    """Material tangent ``2 dS/dC`` of particle ``i`` into ``C`` (3 x 3, Voigt order rr, tt, rt).
+
+    Elastin + swelling: ``(LAM - PI J) C^-1 (x) C^-1 + 2 beta I_{C^-1}`` with
+    ``beta = MU - LAM ln J + PI J`` and ``I_{C^-1}`` the symmetrised identity on C^-1;
+    fibres: ``4 phi W''(I4) G^4 sin^4 a`` on (tt, tt); active tone (no major
+    symmetry): ``S_tt^act C^-1`` on row tt plus ``J (T'/l^2 - 2 T/l^3)/l`` on (tt, tt).
+    """
+    det2 = c_rr * c_tt - c_rt * c_rt
+    J = lz * np.sqrt(det2)
+    i_rr, i_tt, i_rt = c_tt / det2, c_rr / det2, -c_rt / det2
+    beta = props[i, MU] - props[i, LAM] * np.log(J) + props[i, PI] * J
+    a = props[i, LAM] - props[i, PI] * J
+    b = 2.0 * beta
+    C[0, 0] = (a + b) * i_rr * i_rr
+    C[1, 1] = (a + b) * i_tt * i_tt
+    C[0, 1] = C[1, 0] = a * i_rr * i_tt + b * i_rt * i_rt
+    C[0, 2] = C[2, 0] = (a + b) * i_rr * i_rt
+    C[1, 2] = C[2, 1] = (a + b) * i_tt * i_rt
+    C[2, 2] = a * i_rt * i_rt + 0.5 * b * (i_rr * i_tt + i_rt * i_rt)
+    for k in range(int(props[i, NFAM])):
+        base = FAM0 + k * FAM_STRIDE
+        s2 = props[i, base + SIN2]
+        if s2 == 0.0:
+            continue
+        I4 = _fibre_I4(props, i, base, c_tt, lz)
+        w2 = _fibre_terms(I4, props[i, base + C1P], props[i, base + C2P], props[i, base + C1M], props[i, base + C2M])[2]
+        C[1, 1] += 4.0 * props[i, base + PHI] * w2 * props[i, base + GF] ** 4 * s2 * s2
+    if props[i, TACT] != 0.0:
+        l = np.sqrt(c_tt)
+        t, dt = _active_tension(l, props[i, TACT], props[i, LMAX], props[i, LMIN])
+        sa = J * t / c_tt
+        C[1, 0] += sa * i_rr
+        C[1, 1] += sa * i_tt + J * (dt / c_tt - 2.0 * t / (c_tt * l)) / l
+        C[1, 2] += sa * i_rt
+
+
+@njit(cache=True, fastmath=True, error_model="numpy")
+def strain_energy(c_rr, c_tt, c_rt, lz, props, i):
+    """Strain energy density W of particle ``i`` (eqs. 2.18, 2.21-2.23, 2.27; active tone has none).
+
+    ``MU/2 (tr(G C G) - 3) - MU ln J + LAM/2 (ln J)^2 - PI (J - 1) + sum_k phi_k W_k(I4_k)``.
+    """
+    J = lz * np.sqrt(c_rr * c_tt - c_rt * c_rt)
+    lnJ = np.log(J)
+    mu = props[i, MU]
+    I1 = props[i, GR] ** 2 * c_rr + props[i, GT] ** 2 * c_tt + props[i, GZ] ** 2 * lz * lz
+    W = 0.5 * mu * (I1 - 3.0) - mu * lnJ + 0.5 * props[i, LAM] * lnJ * lnJ - props[i, PI] * (J - 1.0)
+    for k in range(int(props[i, NFAM])):
+        base = FAM0 + k * FAM_STRIDE
+        I4 = _fibre_I4(props, i, base, c_tt, lz)
+        w0 = _fibre_terms(I4, props[i, base + C1P], props[i, base + C2P], props[i, base + C1M], props[i, base + C2M])[0]
+        W += props[i, base + PHI] * w0
+    return W
+
+
+# ---------------------------------------------------------------------------
+# Global x-y frame: F -> P = F S and dP/dF
+# ---------------------------------------------------------------------------
+
+
+@njit(cache=True, fastmath=True, error_model="numpy", inline="always")
+def local_deformation(f00, f01, f10, f11, cth, sth):
+    """``F_loc = F Q`` with Q = [e_r, e_theta] of the reference angle, and its ``C_loc``."""
+    l00 = f00 * cth + f01 * sth
+    l10 = f10 * cth + f11 * sth
+    l01 = -f00 * sth + f01 * cth
+    l11 = -f10 * sth + f11 * cth
+    return l00, l01, l10, l11, l00 * l00 + l10 * l10, l01 * l01 + l11 * l11, l00 * l01 + l10 * l11
+
+
+@njit(cache=True, fastmath=True, error_model="numpy", inline="always")
+def first_piola(f00, f01, f10, f11, lz, cth, sth, props, i):
+    """First Piola-Kirchhoff stress ``P = F S`` (eq. 2.10) of particle ``i`` in global x-y.
+
+    ``(cth, sth)``: cos/sin of the particle's reference angle. Returns
+    ``(P00, P01, P10, P11)``.
+    """
+    l00, l01, l10, l11, c_rr, c_tt, c_rt = local_deformation(f00, f01, f10, f11, cth, sth)
+    s_rr, s_tt, s_rt = pk2(c_rr, c_tt, c_rt, lz, props, i)
+    # P = F_loc S_loc Q^T
+    m00 = l00 * s_rr + l01 * s_rt
+    m01 = l00 * s_rt + l01 * s_tt
+    m10 = l10 * s_rr + l11 * s_rt
+    m11 = l10 * s_rt + l11 * s_tt
+    return m00 * cth - m01 * sth, m00 * sth + m01 * cth, m10 * cth - m11 * sth, m10 * sth + m11 * cth
+
+
+_VOIGT = np.array([[0, 2], [2, 1]])
+
+
+@njit(cache=True, fastmath=True, error_model="numpy")
+def tangent_modulus(f00, f01, f10, f11, lz, cth, sth, props, i, C, A):
+    """First elasticity tensor ``A[2a+B, 2c+D] = dP_aB / dF_cD`` of particle ``i``, global x-y.
+
+    ``A_aBcD = delta_ac S_BD + F_aE (2 dS/dC)_EBFD F_cF`` evaluated with the
+    reference indices in the local frame, then rotated. ``C``: (3, 3) scratch.
+    """
+    l00, l01, l10, l11, c_rr, c_tt, c_rt = local_deformation(f00, f01, f10, f11, cth, sth)
+    s_rr, s_tt, s_rt = pk2(c_rr, c_tt, c_rt, lz, props, i)
+    material_tangent(c_rr, c_tt, c_rt, lz, props, i, C)
+    FL = np.empty((2, 2))
+    FL[0, 0], FL[0, 1], FL[1, 0], FL[1, 1] = l00, l01, l10, l11
+    SL = np.empty((2, 2))
+    SL[0, 0], SL[1, 1], SL[0, 1], SL[1, 0] = s_rr, s_tt, s_rt, s_rt
+    Q = np.empty((2, 2))
+    Q[0, 0], Q[0, 1], Q[1, 0], Q[1, 1] = cth, -sth, sth, cth
+    Al = np.zeros((2, 2, 2, 2))  # (global a, local b, global c, local d)
+    for a_ in range(2):
+        for b in range(2):
+            for c in range(2):
+                for d in range(2):
+                    v = SL[b, d] if a_ == c else 0.0
+                    for e in range(2):
+                        for f in range(2):
+                            v += FL[a_, e] * C[_VOIGT[e, b], _VOIGT[f, d]] * FL[c, f]
+                    Al[a_, b, c, d] = v
+    for a_ in range(2):
+        for B in range(2):
+            for c in range(2):
+                for D in range(2):
+                    v = 0.0
+                    for b in range(2):
+                        for d in range(2):
+                            v += Q[B, b] * Q[D, d] * Al[a_, b, c, d]
+                    A[2 * a_ + B, 2 * c + D] = v
+
+
+def swelling_pressure(c_fc, c_bath, temperature_K=310.0):
+    """Gibbs-Donnan swelling pressure Pi = R T (sqrt(c_FC^2 + c*^2) - c*) in kPa (eqs. 2.25-2.26).
+
+    Concentrations in mEq/l (= mol/m^3 for monovalent ions); R T in J/mol, so
+    the product is in Pa; divided by 1000 for kPa.
+    """
+    R = 8.314462618
+    c = np.asarray(c_fc, dtype=float)
+    return R * temperature_K * (np.sqrt(c * c + c_bath * c_bath) - c_bath) / 1000.0

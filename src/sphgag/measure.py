@@ -1,0 +1,94 @@
+"""Measurements on converged states: diameters, Cauchy stresses in the current polar frame, profiles.
+
+Stresses are reported as Cauchy stress ``sigma = P F^T / J`` (eq. 2.10) in the
+local (r, theta) frame of the *current* configuration (the angle of the
+particle's current position).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from .loading import lumen_area_gradient
+from .model import Evaluation, Model
+
+
+def cauchy_polar(ev: Evaluation):
+    """``(sigma_rr, sigma_tt, sigma_rt, J)`` of every particle in its current polar frame."""
+    F, P, x = ev.F, ev.P, ev.x
+    lz = ev.load.axial_stretch
+    det = F[:, 0, 0] * F[:, 1, 1] - F[:, 0, 1] * F[:, 1, 0]
+    J = det * lz
+    # sigma = P F^T / J (in-plane block)
+    sig = np.einsum("nab,ncb->nac", P, F) / J[:, None, None]
+    phi = np.arctan2(x[:, 1], x[:, 0])
+    c, s = np.cos(phi), np.sin(phi)
+    srr = c * c * sig[:, 0, 0] + s * s * sig[:, 1, 1] + c * s * (sig[:, 0, 1] + sig[:, 1, 0])
+    stt = s * s * sig[:, 0, 0] + c * c * sig[:, 1, 1] - c * s * (sig[:, 0, 1] + sig[:, 1, 0])
+    srt = c * s * (sig[:, 1, 1] - sig[:, 0, 0]) + c * c * sig[:, 0, 1] - s * s * sig[:, 1, 0]
+    return srr, stt, srt, J
+
+
+def surface_radius(model: Model, x: np.ndarray, which: str) -> float:
+    """Mean current radius of the inner or outer surface particles."""
+    idx = model.layout.inner_surface if which == "inner" else model.layout.outer_surface
+    return float(np.linalg.norm(x[idx], axis=1).mean())
+
+
+def diameters(model: Model, x: np.ndarray) -> tuple[float, float]:
+    """(inner, outer) diameter of the deformed cross-section."""
+    return 2.0 * surface_radius(model, x, "inner"), 2.0 * surface_radius(model, x, "outer")
+
+
+def ring_profile(model: Model, ev: Evaluation) -> pd.DataFrame:
+    """Transmural profile: per ring, the mean current radius and mean Cauchy stresses.
+
+    Rings are averaged over all their particles (the state is axisymmetric
+    for the intact wall); ``circ_stress_std_kPa`` shows how uniform a ring is.
+    """
+    lay = model.layout
+    srr, stt, _, J = cauchy_polar(ev)
+    rad = np.linalg.norm(ev.x, axis=1)
+    rows = []
+    for k in range(len(lay.ring_radius)):
+        m = lay.ring_members(k)
+        rows.append(
+            dict(
+                ring=k,
+                reference_radius_um=lay.ring_radius[k],
+                radius_um=rad[m].mean(),
+                layer=lay.layer_names[lay.layer[m[0]]],
+                radial_stress_kPa=srr[m].mean(),
+                circ_stress_kPa=stt[m].mean(),
+                circ_stress_std_kPa=stt[m].std(),
+                jacobian=J[m].mean(),
+            )
+        )
+    return pd.DataFrame(rows)
+
+
+def hoop_force(profile: pd.DataFrame) -> float:
+    """``int sigma_tt dr`` across the wall (trapezoid over the rings; surfaces carry rings)."""
+    r = profile["radius_um"].to_numpy()
+    s = profile["circ_stress_kPa"].to_numpy()
+    return float(np.sum(0.5 * (s[1:] + s[:-1]) * np.diff(r)))
+
+
+def carried_pressure(model: Model, ev: Evaluation) -> float:
+    """Lumen pressure [kPa] the state carries: applied pressure, or read from the reactions.
+
+    Under radius control the reactions of the inner particles balance the wall;
+    their outward radial sum divided by ``lz`` times the current inner arc length is
+    the pressure that would hold the wall there.
+    """
+    if ev.load.pressure_kPa is not None:
+        return float(ev.load.pressure_kPa)
+    inner = model.layout.inner_surface
+    x = ev.x[inner]
+    er = x / np.linalg.norm(x, axis=1)[:, None]
+    # the reactions push the wall outwards; the pressure would do the same
+    push = np.sum(ev.reactions * er)
+    g = np.empty_like(x)
+    lumen_area_gradient(ev.x, inner, g)
+    return float(push / (ev.load.axial_stretch * np.sum(np.linalg.norm(g, axis=1))))

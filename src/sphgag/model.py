@@ -1,0 +1,166 @@
+"""The discrete arterial cross-section: particles, neighbours, materials and loads.
+
+:class:`Model` bundles the static data of a simulation (layout, neighbour
+lists, property table, hourglass parameter) and evaluates, for positions
+``x`` and a :class:`~sphgag.loading.Load`, everything the solver and the
+measurements need (:class:`Evaluation`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Callable
+
+import numpy as np
+import scipy.sparse as sp
+
+from . import forces
+from .geometry import Layout
+from .kernel import Neighbours
+from .loading import Load, add_pressure_stiffness, pressure_forces, prescribed_inner_positions
+
+
+@dataclass
+class Evaluation:
+    """Forces and stresses of one configuration under one load."""
+
+    x: np.ndarray
+    load: Load
+    F: np.ndarray
+    P: np.ndarray
+    f_int: np.ndarray
+    f_ext: np.ndarray
+    min_det: float
+    constrained: np.ndarray  # particle indices with prescribed positions
+    target: np.ndarray  # their prescribed positions
+
+    @property
+    def residual_vector(self) -> np.ndarray:
+        """Out-of-balance force on the free particles (zeros on constrained ones)."""
+        r = self.f_int + self.f_ext
+        r[self.constrained] = 0.0
+        return r
+
+    @property
+    def reactions(self) -> np.ndarray:
+        """Forces the prescribed particles receive from their supports."""
+        return -(self.f_int + self.f_ext)[self.constrained]
+
+    @property
+    def finite(self) -> bool:
+        return bool(np.isfinite(self.f_int).all() and np.isfinite(self.P).all())
+
+    def force_scale(self, model: "Model") -> float:
+        """Reference force of the relative residual (see :func:`sphgag.solver.relative_residual`)."""
+        loaded = np.linalg.norm(self.f_ext) + np.linalg.norm(self.reactions)
+        if loaded > 0.0:
+            return float(loaded)
+        q = np.empty(model.n)
+        forces.pair_force_scale(model.layout.volume, model.nb.ptr, model.nb.a, self.P, q)
+        return float(np.linalg.norm(q)) or 1.0
+
+    @property
+    def constraint_error(self) -> float:
+        return float(np.abs(self.x[self.constrained] - self.target).max()) if self.constrained.size else 0.0
+
+
+@dataclass
+class Model:
+    """Static description of one simulation.
+
+    name : run name used in logs and error messages.
+    layout, nb : reference particles and neighbour lists.
+    props : (N, NPROP) property table (:mod:`sphgag.materials`), or a callable
+        ``props(load) -> table`` for materials that change along a path.
+    hourglass_alpha : alpha of eq. (2.14); E comes from the property table.
+    """
+
+    name: str
+    layout: Layout
+    nb: Neighbours
+    props: np.ndarray | Callable[[Load], np.ndarray]
+    hourglass_alpha: float
+    _cache: dict = field(default_factory=dict, repr=False)
+
+    def __post_init__(self):
+        self.cth = np.cos(self.layout.theta)
+        self.sth = np.sin(self.layout.theta)
+        indptr, indices, blockmap, map_ptr = forces.block_pattern(self.nb.ptr, self.nb.nbr)
+        self.block_indptr, self.block_indices = indptr, indices
+        self.blockmap, self.map_ptr = blockmap, map_ptr
+        n_ext = self.n + self.nb.ghost_owner.size
+        self._xe, self._fe = np.empty((n_ext, 2)), np.empty((n_ext, 2))
+        self.block_diagonal = np.array([self.block_index(i, i) for i in range(self.n)], dtype=np.int64)
+
+    @property
+    def n(self) -> int:
+        return self.layout.n
+
+    # -- material -----------------------------------------------------------
+    def material(self, load: Load):
+        """Property table, hourglass coefficients (eq. 2.14) and packed pair data for ``load``, cached."""
+        key = load.material if callable(self.props) else None
+        if "props" not in self._cache or self._cache["key"] != key:
+            props = np.ascontiguousarray(self.props(load) if callable(self.props) else self.props)
+            hgc = np.empty(self.nb.n_entries)
+            forces.hourglass_coefficients(
+                self.layout.volume, self.nb.ptr, self.nb.nbr, self.nb.R, self.nb.w, props, self.hourglass_alpha, hgc
+            )
+            pairs = forces.PairData.pack(self.nb, self.layout.volume, hgc)
+            self._cache.update(key=key, props=props, hgc=hgc, pairs=pairs)
+        return self._cache["props"], self._cache["hgc"], self._cache["pairs"]
+
+    def set_props(self, props) -> None:
+        """Replace the property table (e.g. after converting particles to GAG)."""
+        self.props = props
+        self._cache.clear()
+
+    # -- boundary conditions --------------------------------------------------
+    def constraints(self, load: Load):
+        inner = self.layout.inner_surface
+        if load.inner_radius is None:
+            return np.empty(0, dtype=np.int64), np.empty((0, 2))
+        return inner, prescribed_inner_positions(self.layout.X[inner], load.inner_radius)
+
+    # -- evaluation -----------------------------------------------------------
+    def evaluate(self, x: np.ndarray, load: Load) -> Evaluation:
+        nb, lay = self.nb, self.layout
+        n = self.n
+        FP = np.empty((n, 8))
+        f = np.empty((n, 2))
+        props, hgc, pairs = self.material(load)
+        min_det = forces.evaluate_forces(x, lay.volume, nb, pairs, load.axial_stretch, self.cth, self.sth, props,
+                                         self._xe, self._fe, FP, f)
+        F, P = FP[:, :4].reshape(n, 2, 2), FP[:, 4:].reshape(n, 2, 2)
+        p = load.pressure_kPa or 0.0
+        f_ext = pressure_forces(x, lay.inner_surface, p, load.axial_stretch)
+        cons, target = self.constraints(load)
+        return Evaluation(x=x, load=load, F=F, P=P, f_int=f, f_ext=f_ext, min_det=float(min_det),
+                          constrained=cons, target=target)
+
+    def jacobian(self, ev: Evaluation) -> np.ndarray:
+        """``d(f_int + f_ext)/dx`` (exact) as the 2 x 2 blocks of the pattern :meth:`block_matrix` uses."""
+        nb, lay, load = self.nb, self.layout, ev.load
+        props, hgc, _ = self.material(load)
+        data = np.zeros((self.block_indices.size, 2, 2))
+        forces.jacobian_blocks(
+            ev.x, lay.volume, nb.ptr, nb.nbr, nb.mirror, nb.a, nb.s, nb.R, hgc, ev.F,
+            load.axial_stretch, self.cth, self.sth, props, self.blockmap, self.map_ptr, data,
+        )
+        add_pressure_stiffness(data, self.block_index, lay.inner_surface, load.pressure_kPa or 0.0, load.axial_stretch)
+        return data
+
+    def block_index(self, p: int, q: int) -> int:
+        lo, hi = self.block_indptr[p], self.block_indptr[p + 1]
+        k = lo + np.searchsorted(self.block_indices[lo:hi], q)
+        if k >= hi or self.block_indices[k] != q:
+            raise KeyError(f"no Jacobian block ({p}, {q})")
+        return int(k)
+
+    def row_blocks(self, rows) -> np.ndarray:
+        """Indices of all blocks in the given block rows."""
+        return np.concatenate([np.arange(self.block_indptr[r], self.block_indptr[r + 1]) for r in rows])
+
+    def block_matrix(self, data) -> sp.bsr_matrix:
+        n2 = 2 * self.n
+        return sp.bsr_matrix((data, self.block_indices, self.block_indptr), shape=(n2, n2))

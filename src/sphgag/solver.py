@@ -1,0 +1,213 @@
+"""Quasi-static equilibrium: Newton's method on the discrete SPH forces, and load paths.
+
+The paper integrates the particles' motion with leapfrog steps (eq. 2.13),
+mass scaling and artificial viscosity for a fixed number of steps, and takes
+the last state as quasi-static. We solve for the equilibrium itself: at every
+load we find ``x`` with ``f_int(x) + f_ext(x) = 0`` by Newton's method with the
+exact Jacobian of the same discrete forces (:func:`sphgag.forces.jacobian_blocks`),
+a sparse direct solve and a backtracking line search, and accept the state
+only when the relative residual is below a tolerance.
+
+**Relative residual** ``||f_int + f_ext||_2 (free particles) / f_ref``, where
+``f_ref = ||f_ext||_2 + ||reactions||_2`` whenever the state carries an
+external load (pressure, or reactions of a prescribed radius), and otherwise
+(e.g. the axial-stretch ramp at zero pressure) the norm of the per-particle
+stress-flux scale ``V_i |P_i| sum_j |V_j A_i^-1 grad xi_ij|``.
+
+A load increment that does not converge is bisected (up to ``max_bisections``
+times). A state with NaN forces, an inverted particle (``det F <= 0``) or no
+convergence stops the run with a :class:`SimulationError` naming the run and
+the load.
+"""
+
+from __future__ import annotations
+
+import logging
+import time
+from dataclasses import dataclass
+from typing import Callable, Sequence
+
+import numpy as np
+import scipy.sparse.linalg as spla
+
+from .loading import Load
+from .model import Evaluation, Model
+
+log = logging.getLogger("sphgag")
+
+
+class SimulationError(RuntimeError):
+    """A simulation that cannot deliver a trustworthy equilibrium state."""
+
+    def __init__(self, run: str, load: Load | None, reason: str):
+        self.run, self.load, self.reason = run, load, reason
+        super().__init__(f"[{run}] {reason}" + (f" at {describe(load)}" if load is not None else ""))
+
+
+class Diverged(SimulationError):
+    """NaN or infinite forces."""
+
+
+class Inverted(SimulationError):
+    """A particle's deformation gradient has det F <= 0."""
+
+
+class NotConverged(SimulationError):
+    """No equilibrium within the iteration and bisection budget."""
+
+
+def describe(load: Load) -> str:
+    parts = [f"lambda_z={load.axial_stretch:.4g}"]
+    if load.pressure_kPa is not None:
+        parts.append(f"P={load.pressure_mmHg:.4g} mmHg")
+    else:
+        parts.append(f"r_in={load.inner_radius:.5g} um")
+    parts += [f"{k}={v:.4g}" for k, v in load.material]
+    return ", ".join(parts)
+
+
+@dataclass
+class Convergence:
+    """How one equilibrium state was reached."""
+
+    residual: float
+    iterations: int
+    force_evaluations: int
+    jacobians: int
+    seconds: float
+
+
+def relative_residual(model: Model, ev: Evaluation) -> float:
+    return float(np.linalg.norm(ev.residual_vector) / ev.force_scale(model))
+
+
+def _check(model: Model, ev: Evaluation, run: str):
+    if ev.min_det <= 0.0:
+        raise Inverted(run, ev.load, f"particle inversion (min det F = {ev.min_det:.3g})")
+    if not ev.finite:
+        raise Diverged(run, ev.load, "non-finite forces")
+
+
+def newton(model: Model, x0: np.ndarray, load: Load, *, tol: float = 1e-4, max_iter: int = 30,
+           run: str | None = None) -> tuple[np.ndarray, Evaluation, Convergence]:
+    """Equilibrium at ``load`` starting from ``x0`` (Newton with exact Jacobian and line search)."""
+    run = run or model.name
+    t0 = time.perf_counter()
+    x = x0.copy()
+    ev = model.evaluate(x, load)
+    _check(model, ev, run)
+    n_eval, n_jac = 1, 0
+    cons = ev.constrained
+    target = ev.target
+    for it in range(max_iter + 1):
+        rel = relative_residual(model, ev)
+        if rel < tol and ev.constraint_error < 1e-9 * model.layout.outer_radius:
+            return x, ev, Convergence(rel, it, n_eval, n_jac, time.perf_counter() - t0)
+        if it == max_iter:
+            break
+        data = model.jacobian(ev)
+        n_jac += 1
+        # constrained particles: rows become k * (x - target) = 0, k a typical stiffness
+        d = data[model.block_diagonal]
+        diag = 0.5 * (np.abs(d[:, 0, 0]).mean() + np.abs(d[:, 1, 1]).mean())
+        rhs = -(ev.f_int + ev.f_ext)
+        if cons.size:
+            data[model.row_blocks(cons)] = 0.0
+            data[model.block_diagonal[cons]] = diag * np.eye(2)
+            rhs[cons] = diag * (target - x[cons])
+        merit0 = _merit(ev, diag)
+        try:
+            lu = spla.splu(model.block_matrix(data).tocsc(), permc_spec="NATURAL")
+        except RuntimeError as exc:  # exactly singular factor
+            raise NotConverged(run, load, f"singular Jacobian ({exc})") from exc
+        dx = lu.solve(rhs.ravel()).reshape(-1, 2)
+        # backtracking line search on the residual norm, along the Newton step bent onto
+        # the area-preserving radial map (see _radial_correction)
+        inner = model.layout.inner_surface
+        rho_in = np.linalg.norm(x[inner], axis=1)
+        r_in = rho_in.mean()
+        dr_in = float(np.mean((dx[inner] * x[inner]).sum(axis=1) / rho_in))
+        step = 1.0
+        for _ in range(30):
+            x_try = x + step * dx + _radial_correction(x, r_in, step * dr_in)
+            ev_try = model.evaluate(x_try, load)
+            n_eval += 1
+            if ev_try.min_det > 0.0 and ev_try.finite and _merit(ev_try, diag) <= (1.0 - 1e-4 * step) * merit0:
+                break
+            step *= 0.5
+        else:
+            raise NotConverged(run, load, f"line search failed at Newton iteration {it} (relative residual {rel:.3g})")
+        log.debug("[%s] newton %d: residual %.3e, step %.3g, |dx|max %.3g", run, it, rel, step, np.abs(dx).max())
+        x, ev = x_try, ev_try
+    raise NotConverged(run, load, f"no convergence in {max_iter} Newton iterations (relative residual {rel:.3g})")
+
+
+def _radial_correction(x, r_in, dr):
+    """Second-order correction that makes the axisymmetric part of a step area preserving.
+
+    Near-incompressibility makes the linearised step ``u_r = r_in dr / rho``
+    (the Newton step's mean radial expansion) change the particles' area at
+    second order, which the bulk penalty punishes hard: the first Newton steps
+    of a pressure increment on the compliant low-pressure branch would need tiny
+    line-search factors. The exact area-preserving map ``rho -> sqrt(rho^2 +
+    (r_in + dr)^2 - r_in^2)`` differs from the linearised one by this
+    correction, which vanishes as ``dr -> 0`` (so Newton's quadratic
+    convergence is untouched).
+    """
+    rho = np.sqrt((x * x).sum(axis=1))
+    exact = np.sqrt(rho * rho + 2.0 * r_in * dr + dr * dr) - rho
+    linear = r_in * dr / rho
+    return ((exact - linear) / rho)[:, None] * x
+
+
+def _merit(ev: Evaluation, k: float) -> float:
+    r = ev.residual_vector
+    c = k * (ev.x[ev.constrained] - ev.target)
+    return float(np.sqrt((r * r).sum() + (c * c).sum()))
+
+
+@dataclass
+class State:
+    """A converged equilibrium state on a load path."""
+
+    load: Load
+    x: np.ndarray
+    evaluation: Evaluation
+    convergence: Convergence
+
+
+def follow_path(model: Model, x0: np.ndarray, start: Load, targets: Sequence[Load], *, tol: float = 1e-4,
+                max_iter: int = 30, max_bisections: int = 10, run: str | None = None,
+                on_state: Callable[[State], None] | None = None) -> list[State]:
+    """Converged states at every load of ``targets``, moving from ``start`` (state ``x0``).
+
+    Each increment is solved with :func:`newton`; an increment that fails is
+    split in two (recursively, up to ``max_bisections`` levels). Only the
+    requested loads are returned (and passed to ``on_state``).
+    """
+    run = run or model.name
+    x, current = x0.copy(), start
+    states = []
+    for target in targets:
+        x, ev, conv = _reach(model, x, current, target, tol, max_iter, max_bisections, run)
+        current = target
+        state = State(target, x.copy(), ev, conv)
+        states.append(state)
+        if on_state is not None:
+            on_state(state)
+    return states
+
+
+def _reach(model, x, current, target, tol, max_iter, depth, run):
+    try:
+        return newton(model, x, target, tol=tol, max_iter=max_iter, run=run)
+    except (NotConverged, Inverted, Diverged) as exc:
+        if depth == 0:
+            raise NotConverged(run, target, f"no convergence after bisecting the load increment ({exc.reason})") from exc
+        log.debug("[%s] bisecting increment to %s (%s)", run, describe(target), exc.reason)
+    middle = current.lerp(target, 0.5)
+    xm, evm, cm = _reach(model, x, current, middle, tol, max_iter, depth - 1, run)
+    x2, ev2, c2 = _reach(model, xm, middle, target, tol, max_iter, depth - 1, run)
+    total = Convergence(c2.residual, cm.iterations + c2.iterations, cm.force_evaluations + c2.force_evaluations,
+                        cm.jacobians + c2.jacobians, cm.seconds + c2.seconds)
+    return x2, ev2, total

@@ -1,0 +1,36 @@
+rule calibrate_mean:
+    """Figure 2a on the mean-behaviour model: axial stretch, then 0-200 mmHg, beside the exact thick wall."""
+    input:
+        code=SPHGAG,
+    output:
+        states="results/calibration/mean_pressure_diameter.csv",
+        exact="results/calibration/mean_exact_curve.csv",
+        transmural="results/calibration/transmural_mean.csv",
+        provenance="results/provenance/calibrate_mean.json",
+    params:
+        mean=config["mean"],
+        numerics=config["numerics"],
+        calibration=config["calibration"],
+    conda:
+        "../envs/sphgag.yaml"
+    log:
+        "logs/calibrate_mean.log",
+    benchmark:
+        "results/benchmarks/calibrate_mean.tsv"
+    threads: 1
+    script:
+        "../scripts/calibrate_mean.py"
+
+
+rule transmural:
+    """Transmural stress profiles of all models in one tidy table (figure 3b,c)."""
+    input:
+        "results/calibration/transmural_mean.csv",
+    output:
+        "results/calibration/transmural.csv",
+    conda:
+        "../envs/sphgag.yaml"
+    log:
+        "logs/transmural.log",
+    script:
+        "../scripts/concat_tables.py"

@@ -1,0 +1,11 @@
+"""Rule fig3b: transmural stresses of the mean model (figure 3b)."""
+
+import pandas as pd
+
+from sphgag import plots, runlog
+
+sm = snakemake  # noqa: F821
+with runlog.run("fig3b", sm.log[0]):
+    profiles = pd.read_csv(sm.input.profiles)
+    plots.finite_or_raise(profiles, ["radius_um", "radial_stress_kPa", "circ_stress_kPa"], "fig3b")
+    plots.save(plots.fig3b(profiles), [sm.output.pdf, sm.output.png], "Figure 3b (mean-behaviour model), sphgag")
