@@ -68,16 +68,23 @@ class PairData:
                    nb.solo_ptr, nb.ext[se].copy(), np.ascontiguousarray(solo_geo), hgc[se].copy())
 
 
-def evaluate_forces(x, V, nb, pd: PairData, lz, cth, sth, props, xe, fe, FP, f):
-    """One force evaluation (see :func:`forces_and_stresses`); fills FP = (F, P) and f."""
+NO_EXTRA_STRESS = np.empty((0, 4))
+
+
+def evaluate_forces(x, V, nb, pd: PairData, lz, cth, sth, props, xe, fe, FP, f, extra=NO_EXTRA_STRESS):
+    """One force evaluation (see :func:`forces_and_stresses`); fills FP = (F, P) and f.
+
+    ``extra`` (N, 4), if given, is added to every particle's P before the forces
+    are formed (the viscous stress of section 2.3 in :mod:`sphgag.dynamics`).
+    """
     return forces_and_stresses(x, nb.ptr, nb.ext, nb.a, pd.pair_ptr, pd.pair_j, pd.pair_geo, pd.pair_hgc,
                                pd.solo_ptr, pd.solo_j, pd.solo_geo, pd.solo_hgc, nb.ghost_owner, nb.ghost_mirror,
-                               lz, cth, sth, props, xe, fe, FP, f)
+                               lz, cth, sth, props, extra, xe, fe, FP, f)
 
 
 @njit(cache=True, fastmath=True, error_model="numpy")
 def forces_and_stresses(x, ptr, ext, a, pair_ptr, pair_j, pair_geo, pair_hgc, solo_ptr, solo_j, solo_geo,
-                        solo_hgc, ghost_owner, ghost_mirror, lz, cth, sth, props, xe, fe, FP, f):
+                        solo_hgc, ghost_owner, ghost_mirror, lz, cth, sth, props, extra, xe, fe, FP, f):
     """One force evaluation: F (eq. 2.9), P (eq. 2.10) and the forces of eqs. (2.11), (2.14).
 
     Pass 1, per particle: ``F_i = sum_j (x_j - x_i) (x) a_ij`` over its stencil,
@@ -116,6 +123,9 @@ def forces_and_stresses(x, ptr, ext, a, pair_ptr, pair_j, pair_geo, pair_hgc, so
         if det > 0.0:
             dmin = min(dmin, det)
             FP[i, 4], FP[i, 5], FP[i, 6], FP[i, 7] = first_piola(f00, f01, f10, f11, lz, cth[i], sth[i], props, i)
+            if extra.shape[0]:
+                for k in range(4):
+                    FP[i, 4 + k] += extra[i, k]
         else:
             dmin = -np.inf if det != det else min(dmin, det)
             FP[i, 4] = FP[i, 5] = FP[i, 6] = FP[i, 7] = np.nan

@@ -53,11 +53,9 @@ class Evaluation:
     def force_scale(self, model: "Model") -> float:
         """Reference force of the relative residual (see :func:`sphgag.solver.relative_residual`)."""
         loaded = np.linalg.norm(self.f_ext) + np.linalg.norm(self.reactions)
-        if loaded > 0.0:
-            return float(loaded)
         q = np.empty(model.n)
         forces.pair_force_scale(model.layout.volume, model.nb.ptr, model.nb.a, self.P, q)
-        return float(np.linalg.norm(q)) or 1.0
+        return float(max(loaded, 1e-3 * np.linalg.norm(q))) or 1.0
 
     @property
     def constraint_error(self) -> float:
@@ -123,14 +121,16 @@ class Model:
         return inner, prescribed_inner_positions(self.layout.X[inner], load.inner_radius)
 
     # -- evaluation -----------------------------------------------------------
-    def evaluate(self, x: np.ndarray, load: Load) -> Evaluation:
+    def evaluate(self, x: np.ndarray, load: Load, extra_stress: np.ndarray | None = None) -> Evaluation:
+        """Forces and stresses at positions ``x`` under ``load`` (``extra_stress``: (N, 4) added to P)."""
         nb, lay = self.nb, self.layout
         n = self.n
         FP = np.empty((n, 8))
         f = np.empty((n, 2))
         props, hgc, pairs = self.material(load)
+        extra = forces.NO_EXTRA_STRESS if extra_stress is None else extra_stress
         min_det = forces.evaluate_forces(x, lay.volume, nb, pairs, load.axial_stretch, self.cth, self.sth, props,
-                                         self._xe, self._fe, FP, f)
+                                         self._xe, self._fe, FP, f, extra)
         F, P = FP[:, :4].reshape(n, 2, 2), FP[:, 4:].reshape(n, 2, 2)
         p = load.pressure_kPa or 0.0
         f_ext = pressure_forces(x, lay.inner_surface, p, load.axial_stretch)

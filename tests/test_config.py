@@ -1,0 +1,78 @@
+"""Configuration validation: every key typed and ranged, messages that name the bad key."""
+
+import copy
+
+import pytest
+
+from sphgag import config
+
+from .conftest import ROOT
+
+SCHEMA = ROOT / "config" / "schema.yaml"
+
+
+@pytest.mark.parametrize("name", ["config.yaml", "ci.yaml"])
+def test_shipped_configs_are_valid(name):
+    config.validate(config.load_yaml(ROOT / "config" / name), SCHEMA)
+
+
+def bad(cfg, path, value):
+    cfg = copy.deepcopy(cfg)
+    node = cfg
+    for key in path[:-1]:
+        node = node[key]
+    if value is KeyError:
+        del node[path[-1]]
+    else:
+        node[path[-1]] = value
+    with pytest.raises(config.ConfigError) as info:
+        config.validate(cfg, SCHEMA)
+    return str(info.value)
+
+
+def test_out_of_range_value_names_the_key_and_the_range(full_config):
+    msg = bad(full_config, ["mean", "dx_um"], -3.0)
+    assert "mean.dx_um = -3.0" in msg
+    assert ">= 0.5" in msg and "<= 100" in msg
+    assert "particle spacing" in msg
+
+
+def test_wrong_type_is_rejected(full_config):
+    msg = bad(full_config, ["numerics", "max_newton_iterations"], 2.5)
+    assert "numerics.max_newton_iterations = 2.5" in msg and "integer" in msg
+
+
+def test_unknown_key_is_rejected(full_config):
+    cfg = copy.deepcopy(full_config)
+    cfg["mean"]["dx"] = 5.0
+    with pytest.raises(config.ConfigError, match=r"unknown key 'mean.dx'.*allowed here:.*dx_um"):
+        config.validate(cfg, SCHEMA)
+
+
+def test_missing_key_is_rejected(full_config):
+    assert "missing key 'calibration.pressure_points'" in bad(full_config, ["calibration", "pressure_points"], KeyError)
+
+
+def test_nested_items_are_checked(full_config):
+    msg = bad(full_config, ["calibration", "transmural_pressures_mmHg"], [103.0, -5.0])
+    assert "calibration.transmural_pressures_mmHg[1] = -5.0" in msg
+
+
+def test_fibre_angle_range(full_config):
+    msg = bad(full_config, ["mean", "fibres", "diagonal", "angle_deg"], 95.0)
+    assert "mean.fibres.diagonal.angle_deg = 95.0" in msg and "< 90" in msg
+
+
+def test_relations_between_keys(full_config):
+    assert "must exceed mean.inner_radius_um" in bad(full_config, ["mean", "outer_radius_um"], 300.0)
+    msg = bad(full_config, ["calibration", "transmural_pressures_mmHg"], [103.0, 250.0])
+    assert "exceeds calibration.max_pressure_mmHg" in msg
+
+
+def test_all_problems_are_reported_at_once(full_config):
+    cfg = copy.deepcopy(full_config)
+    cfg["mean"]["dx_um"] = 0.0
+    cfg["numerics"]["tolerance"] = 1.0
+    with pytest.raises(config.ConfigError) as info:
+        config.validate(cfg, SCHEMA)
+    assert "mean.dx_um" in str(info.value) and "numerics.tolerance" in str(info.value)

@@ -1,0 +1,99 @@
+"""The reduced pipeline end to end: snakemake on config/ci.yaml in a temporary directory."""
+
+import copy
+import json
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pandas as pd
+import pytest
+import yaml
+
+from .conftest import ROOT
+
+pytestmark = pytest.mark.pipeline
+
+CONTRACT = {
+    "results/calibration/mean_pressure_diameter.csv": [
+        "pressure_mmHg", "outer_diameter_um", "inner_diameter_um", "mean_circ_stress_kPa", "mean_circ_stretch",
+        "residual"],
+    "results/calibration/transmural.csv": [
+        "model", "pressure_mmHg", "radius_um", "layer", "radial_stress_kPa", "circ_stress_kPa"],
+}
+FIGURES = ["figures/fig3a_mean.pdf", "figures/fig3a_mean.png", "figures/fig3b.pdf", "figures/fig3b.png"]
+
+
+def snakemake(workdir, *args, configfile=ROOT / "config" / "ci.yaml"):
+    cmd = [sys.executable, "-m", "snakemake", "--snakefile", str(ROOT / "Snakefile"), "--directory", str(workdir),
+           "--configfile", str(configfile), "--cores", "2", *args]
+    return subprocess.run(cmd, capture_output=True, text=True, env=os.environ.copy())
+
+
+def edited_config(tmp_path, ci_config, section, key, value):
+    cfg = copy.deepcopy(ci_config)
+    cfg[section][key] = value
+    path = tmp_path / "edited.yaml"
+    path.write_text(yaml.safe_dump(cfg))
+    return path
+
+
+@pytest.fixture(scope="module")
+def workdir(tmp_path_factory):
+    wd = tmp_path_factory.mktemp("pipeline")
+    run = snakemake(wd, "all")
+    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
+    yield wd
+    shutil.rmtree(wd, ignore_errors=True)
+
+
+def test_outputs_follow_the_data_contracts(workdir, ci_config):
+    for path, columns in CONTRACT.items():
+        table = pd.read_csv(workdir / path)
+        assert set(columns) <= set(table.columns), path
+        assert len(table) > 0
+    states = pd.read_csv(workdir / "results/calibration/mean_pressure_diameter.csv")
+    assert (states.residual < ci_config["numerics"]["tolerance"]).all()
+    for fig in FIGURES:
+        assert (workdir / fig).stat().st_size > 5000
+
+
+def test_logs_show_progress_and_the_verification_number(workdir):
+    log = (workdir / "logs/calibrate_mean.log").read_text()
+    assert log.count("converged at") >= 5
+    assert "max |OD error| over 10-200 mmHg" in log
+
+
+def test_provenance_records_code_and_parameters(workdir, ci_config):
+    record = json.loads((workdir / "results/provenance/calibrate_mean.json").read_text())
+    assert record["params"]["mean"] == ci_config["mean"]
+    assert len(record["code"]["source_sha256"]) == 64
+
+
+def test_nothing_to_do_after_a_complete_run(workdir):
+    run = snakemake(workdir, "-n", "all")
+    assert run.returncode == 0
+    assert "Nothing to be done" in run.stdout + run.stderr
+
+
+def test_changing_a_parameter_reruns_only_what_it_affects(workdir, ci_config, tmp_path):
+    edited = edited_config(tmp_path, ci_config, "calibration", "pressure_points", 6)
+    run = snakemake(workdir, "-n", "all", configfile=edited)
+    out = run.stdout + run.stderr
+    assert run.returncode == 0, out
+    assert "calibrate_mean" in out and "fig3a_mean" in out
+
+
+def test_a_bad_config_stops_the_workflow_with_a_named_key(tmp_path, ci_config):
+    edited = edited_config(tmp_path, ci_config, "numerics", "kernel_support_factor", 9.0)
+    run = snakemake(tmp_path, "-n", "all", configfile=edited)
+    assert run.returncode != 0
+    assert "numerics.kernel_support_factor = 9.0" in run.stdout + run.stderr
+
+
+def test_lint_is_clean():
+    run = subprocess.run([sys.executable, "-m", "snakemake", "--snakefile", str(ROOT / "Snakefile"), "--lint"],
+                         capture_output=True, text=True, cwd=ROOT)
+    assert "Congratulations" in run.stdout + run.stderr, run.stdout[-2000:]
