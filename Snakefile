@@ -11,11 +11,13 @@ SRC = str(Path(workflow.basedir, "src").resolve())
 sys.path.insert(0, SRC)
 os.environ.update(PYTHONPATH=os.pathsep.join(filter(None, [SRC, os.environ.get("PYTHONPATH")])))
 
-from sphgag.config import validate  # noqa: E402
+from sphgag.config import canonical, validate  # noqa: E402
 
 configfile: "config/config.yaml"
 
 validate(config, Path(workflow.basedir, "config", "schema.yaml"))
+# key order must not matter when Snakemake compares a rule's params with its last run
+config = canonical(config)
 
 # Snakemake tracks a rule's script, not the modules it imports: every simulation
 # rule depends on the package sources, so a physics edit reruns what it affects.
@@ -23,13 +25,19 @@ SPHGAG = sorted(str(p) for p in Path(SRC, "sphgag").glob("*.py"))
 
 
 include: "workflow/rules/calibration.smk"
+include: "workflow/rules/homeostasis.smk"
 include: "workflow/rules/figures.smk"
 
 
 rule all:
     input:
         rules.calibrate_mean.output,
+        rules.homeostasis.output,
+        expand(rules.bilayer_pressure_diameter.output, model=("passive", "active")),
+        rules.bilayer_table.output,
         rules.transmural.output,
+        rules.fig1.output,
         rules.fig3a_mean.output,
         rules.fig3b.output,
+        rules.fig3.output,
     default_target: True

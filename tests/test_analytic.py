@@ -15,7 +15,7 @@ def test_thin_wall_means():
 def test_neo_hookean_tube_matches_the_stretch_integral():
     """For W = mu/2 (I1 - 3), P = int_{l_b}^{l_a} W'(l) / (l^2 lz - 1) dl (Ogden's form, independent route)."""
     mu, lz, Ri, Ro = 20.0, 1.4, 300.0, 420.0
-    tube = analytic.ThickWallTube(analytic.MeanBehaviour(mu, ()), Ri, Ro, lz)
+    tube = analytic.ThickWallTube.single(analytic.Mixture(mu), Ri, Ro, lz)
     for r_in in (260.0, 350.0, 500.0):
         la, lb = r_in / Ri, tube.radius(Ro, r_in) / Ro
 

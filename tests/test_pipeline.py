@@ -22,8 +22,12 @@ CONTRACT = {
         "residual"],
     "results/calibration/transmural.csv": [
         "model", "pressure_mmHg", "radius_um", "layer", "radial_stress_kPa", "circ_stress_kPa"],
+    "results/calibration/bilayer_pressure_diameter.csv": [
+        "model", "pressure_mmHg", "outer_diameter_um", "inner_diameter_um", "residual"],
+    "results/homeostasis/summary.csv": [
+        "model", "carried_pressure_mmHg", "inner_radius_um", "outer_radius_um", "residual"],
 }
-FIGURES = ["figures/fig3a_mean.pdf", "figures/fig3a_mean.png", "figures/fig3b.pdf", "figures/fig3b.png"]
+FIGURES = [f"figures/{name}.{ext}" for name in ("fig1", "fig3a_mean", "fig3b", "fig3") for ext in ("pdf", "png")]
 
 
 def snakemake(workdir, *args, configfile=ROOT / "config" / "ci.yaml"):
@@ -33,10 +37,11 @@ def snakemake(workdir, *args, configfile=ROOT / "config" / "ci.yaml"):
 
 
 def edited_config(tmp_path, ci_config, section, key, value):
+    """A copy of the CI config with one key replaced."""
     cfg = copy.deepcopy(ci_config)
     cfg[section][key] = value
     path = tmp_path / "edited.yaml"
-    path.write_text(yaml.safe_dump(cfg))
+    path.write_text(yaml.safe_dump(cfg, sort_keys=False))
     return path
 
 
@@ -54,16 +59,24 @@ def test_outputs_follow_the_data_contracts(workdir, ci_config):
         table = pd.read_csv(workdir / path)
         assert set(columns) <= set(table.columns), path
         assert len(table) > 0
-    states = pd.read_csv(workdir / "results/calibration/mean_pressure_diameter.csv")
-    assert (states.residual < ci_config["numerics"]["tolerance"]).all()
+    for table in ("calibration/mean_pressure_diameter.csv", "calibration/bilayer_pressure_diameter.csv",
+                  "homeostasis/summary.csv"):
+        states = pd.read_csv(workdir / "results" / table)
+        assert (states.residual < ci_config["numerics"]["tolerance"]).all(), table
+    transmural = pd.read_csv(workdir / "results/calibration/transmural.csv")
+    assert set(transmural.model) == {"mean", "passive", "active"}
+    assert set(pd.read_csv(workdir / "results/calibration/bilayer_pressure_diameter.csv").model) == {"passive", "active"}
     for fig in FIGURES:
         assert (workdir / fig).stat().st_size > 5000
 
 
-def test_logs_show_progress_and_the_verification_number(workdir):
+def test_logs_show_progress_and_the_verification_numbers(workdir):
     log = (workdir / "logs/calibrate_mean.log").read_text()
     assert log.count("converged at") >= 5
     assert "max |OD error| over 10-200 mmHg" in log
+    assert "carried pressure" in (workdir / "logs/homeostasis.log").read_text()
+    assert "over 60-200 mmHg" in (workdir / "logs/bilayer_pressure_diameter_active.log").read_text()
+    assert "(paper: about 20 %)" in (workdir / "logs/bilayer_table.log").read_text()
 
 
 def test_provenance_records_code_and_parameters(workdir, ci_config):
@@ -83,7 +96,8 @@ def test_changing_a_parameter_reruns_only_what_it_affects(workdir, ci_config, tm
     run = snakemake(workdir, "-n", "all", configfile=edited)
     out = run.stdout + run.stderr
     assert run.returncode == 0, out
-    assert "calibrate_mean" in out and "fig3a_mean" in out
+    assert "rule calibrate_mean:" in out and "rule fig3a_mean:" in out
+    assert "rule homeostasis:" not in out and "rule bilayer_pressure_diameter:" not in out
 
 
 def test_a_bad_config_stops_the_workflow_with_a_named_key(tmp_path, ci_config):
@@ -91,6 +105,19 @@ def test_a_bad_config_stops_the_workflow_with_a_named_key(tmp_path, ci_config):
     run = snakemake(tmp_path, "-n", "all", configfile=edited)
     assert run.returncode != 0
     assert "numerics.kernel_support_factor = 9.0" in run.stdout + run.stderr
+
+
+def test_a_later_rule_refuses_a_state_from_another_configuration(workdir, ci_config, tmp_path):
+    """Rerun only the pressure-diameter rule with a different bilayer resolution (homeostasis not rerun,
+    as if its outputs had been copied from elsewhere): it must refuse the old state."""
+    edited = edited_config(tmp_path, ci_config, "bilayer", "dx_um", 7.0)
+    copy_dir = tmp_path / "copy"
+    shutil.copytree(workdir, copy_dir)
+    run = snakemake(copy_dir, "results/calibration/bilayer_passive.csv", "--forcerun", "bilayer_pressure_diameter",
+                    "--rerun-triggers", "mtime", configfile=edited)
+    assert run.returncode != 0
+    log = (copy_dir / "logs/bilayer_pressure_diameter_passive.log").read_text()
+    assert "StateMismatch" in log and "bilayer.dx_um: expected 7.0, file has 8.0" in log
 
 
 def test_lint_is_clean():

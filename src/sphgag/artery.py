@@ -7,7 +7,10 @@ parameters it depends on.
 
 from __future__ import annotations
 
+import numpy as np
+
 from . import analytic, geometry, kernel, materials
+from .loading import Load
 from .model import Model
 
 
@@ -35,5 +38,120 @@ def mean_model(p: dict, numerics: dict, name: str = "mean") -> Model:
 
 def mean_thick_wall(p: dict) -> analytic.ThickWallTube:
     """Exact incompressible thick-walled tube for the same strain energy (eq. 2.18)."""
-    law = analytic.MeanBehaviour(p["shear_modulus_kPa"], mean_fibre_families(p))
-    return analytic.ThickWallTube(law, p["inner_radius_um"], p["outer_radius_um"], p["axial_stretch"])
+    families = tuple(analytic.Family(1.0, a, c1, c2) for a, c1, c2 in mean_fibre_families(p))
+    law = analytic.Mixture(p["shear_modulus_kPa"], families)
+    return analytic.ThickWallTube.single(law, p["inner_radius_um"], p["outer_radius_um"], p["axial_stretch"])
+
+
+# ---------------------------------------------------------------------------
+# Bi-layered constrained-mixture model (section 2.4.2, Table 2)
+# ---------------------------------------------------------------------------
+
+LAYERS = ("media", "adventitia")
+
+
+def bilayer_interfaces(p: dict):
+    """Reference radii [R_in, media/adventitia border, R_out] of the in vivo (homeostatic) geometry."""
+    r0 = p["inner_radius_um"]
+    border = r0 + p["media_thickness_um"]
+    return r0, border, border + p["adventitia_thickness_um"]
+
+
+def bilayer_families(p: dict, layer: str):
+    """Fibre families of one layer as :class:`analytic.Family` (eqs. 2.22-2.23, Table 2).
+
+    Media: SMC + circumferential collagen (phi_M^s, 90 deg, SMC constants, pre-stretch G_M^2),
+    axial collagen (phi_M^c beta_M^z) and two diagonal families (phi_M^c beta_M^d / 2 each, +-alpha_0).
+    Adventitia: collagen only, axial (beta_A^z), circumferential (beta_A^theta) and diagonal
+    (beta_A^d / 2 each). All collagen has the same constants and pre-stretch in both layers.
+    """
+    col, smc, pre = p["collagen"], p["smc"], p["prestretch"]
+    frac, beta = p["mass_fractions"][layer], p["orientations"][layer]
+    a0 = col["angle_deg"]
+
+    def collagen(phi, alpha):
+        return analytic.Family(phi, alpha, col["c1_kPa"], col["c2"], col["c1_compression_kPa"],
+                               col["c2_compression"], pre["collagen"])
+
+    fams = []
+    if layer == "media":
+        fams.append(analytic.Family(frac["smc"], 90.0, smc["c1_kPa"], smc["c2"], smc["c1_compression_kPa"],
+                                    smc["c2_compression"], pre["smc"]))
+    else:
+        fams.append(collagen(frac["collagen"] * beta["circumferential"], 90.0))
+    fams.append(collagen(frac["collagen"] * beta["axial"], 0.0))
+    fams.append(collagen(frac["collagen"] * beta["diagonal"] / 2, a0))
+    fams.append(collagen(frac["collagen"] * beta["diagonal"] / 2, -a0))
+    return tuple(fams)
+
+
+def elastin_prestretch(p: dict, fraction: float = 1.0):
+    """(G_r, G_theta, G_z) of the elastin-dominated matrix a ``fraction`` of the way from 1 (G_r = 1/(G_t G_z))."""
+    pre = p["prestretch"]
+    gt = 1.0 + fraction * (pre["elastin_circumferential"] - 1.0)
+    gz = 1.0 + fraction * (pre["elastin_axial"] - 1.0)
+    return 1.0 / (gt * gz), gt, gz
+
+
+def bilayer_law(p: dict, layer: str, active: bool) -> analytic.Mixture:
+    """Incompressible constituents of one layer at full pre-stretch, for the semi-analytical tube."""
+    gr, gt, _ = elastin_prestretch(p)
+    act = p["active"]
+    return analytic.Mixture(
+        mu=p["mass_fractions"][layer]["elastin"] * p["elastin_shear_modulus_kPa"],
+        families=bilayer_families(p, layer), Gr=gr, Gt=gt,
+        tmax=act["max_stress_kPa"] if (active and layer == "media") else 0.0,
+        lmax=act["stretch_max"], lmin=act["stretch_min"],
+    )
+
+
+def bilayer_tube(p: dict, active: bool) -> analytic.ThickWallTube:
+    """Semi-analytical incompressible bi-layered tube (same constituents and pre-stretches)."""
+    r0, rb, r1 = bilayer_interfaces(p)
+    return analytic.ThickWallTube([(r0, rb, bilayer_law(p, "media", active), "media"),
+                                   (rb, r1, bilayer_law(p, "adventitia", active), "adventitia")], lz=1.0)
+
+
+class BilayerMaterial:
+    """Property table of the bi-layered model as a function of the load's material parameters.
+
+    ``prestretch`` in [0, 1] scales every deposition stretch from 1 to its Table 2 value
+    (figure 2b); ``activation`` in [0, 1] scales the active tone T_max of the media (eq. 2.24).
+    """
+
+    def __init__(self, p: dict, layout: geometry.Layout):
+        self.p = p
+        n = layout.n
+        table = materials.empty_props(n)
+        self.media = layout.layer_mask("media")
+        for layer in LAYERS:
+            rows = np.flatnonzero(layout.layer_mask(layer))
+            table[rows, materials.MU] = p["mass_fractions"][layer]["elastin"] * p["elastin_shear_modulus_kPa"]
+            for k, f in enumerate(bilayer_families(p, layer)):
+                materials.set_family(table, rows, k, f.phi, f.alpha_deg, f.c1, f.c2, f.c1m, f.c2m, f.prestretch)
+            # eq. (2.23) weights the whole elastin energy (2.21), bulk term included, by phi^e
+            table[rows, materials.LAM] = p["mass_fractions"][layer]["elastin"] * p["lame_lambda_kPa"]
+        table[:, materials.HG_E] = p["hourglass_modulus_kPa"]
+        act = p["active"]
+        table[:, materials.LMAX], table[:, materials.LMIN] = act["stretch_max"], act["stretch_min"]
+        self.target = materials.merge_identical_families(table)
+        nf = int(self.target[:, materials.NFAM].max())
+        self._fibre_g = [materials.FAM0 + k * materials.FAM_STRIDE + materials.GF for k in range(nf)]
+
+    def __call__(self, load: Load) -> np.ndarray:
+        s = load.material_value("prestretch", 1.0)
+        a = load.material_value("activation", 0.0)
+        out = self.target.copy()
+        gr, gt, gz = elastin_prestretch(self.p, s)
+        out[:, materials.GR], out[:, materials.GT], out[:, materials.GZ] = gr, gt, gz
+        for col in self._fibre_g:
+            out[:, col] = 1.0 + s * (self.target[:, col] - 1.0)
+        out[self.media, materials.TACT] = a * self.p["active"]["max_stress_kPa"]
+        return out
+
+
+def bilayer_model(p: dict, numerics: dict, name: str = "bilayer") -> Model:
+    """Bi-layered model (section 2.4.2, Table 2) in its in vivo reference configuration."""
+    layout = geometry.quarter_annulus(bilayer_interfaces(p), p["dx_um"], layer_names=LAYERS)
+    nb = kernel.for_layout(layout, numerics["kernel_support_factor"])
+    return Model(name, layout, nb, BilayerMaterial(p, layout), numerics["hourglass_alpha"])

@@ -64,6 +64,15 @@ def _describe(error: jsonschema.ValidationError, schema: dict) -> str:
     return f"{key} = {error.instance!r} is invalid: {error.message}{allowed}{desc}"
 
 
+def canonical(config):
+    """The same configuration with every mapping's keys sorted (so that key order never matters)."""
+    if isinstance(config, dict):
+        return {k: canonical(config[k]) for k in sorted(config)}
+    if isinstance(config, list):
+        return [canonical(v) for v in config]
+    return config
+
+
 def validate(config: dict, schema_path) -> dict:
     """Validate ``config`` against the schema at ``schema_path``; return it or raise :class:`ConfigError`."""
     schema = load_yaml(schema_path)
@@ -84,10 +93,25 @@ def _consistency(config: dict) -> list[str]:
         if m.get("outer_radius_um", 0) <= m.get("inner_radius_um", 0):
             problems.append(f"{model}.outer_radius_um = {m.get('outer_radius_um')} must exceed "
                             f"{model}.inner_radius_um = {m.get('inner_radius_um')}")
-    cal = config.get("calibration", {})
-    top = cal.get("max_pressure_mmHg", 0)
-    for k, p in enumerate(cal.get("transmural_pressures_mmHg", [])):
-        if p > top:
-            problems.append(f"calibration.transmural_pressures_mmHg[{k}] = {p} exceeds "
-                            f"calibration.max_pressure_mmHg = {top}")
+    for section, key in (("calibration", "transmural_pressures_mmHg"), ("bilayer_calibration", "state_pressures_mmHg"),
+                         ("bilayer_calibration", "activation_pressure_mmHg")):
+        cal = config.get(section, {})
+        top = cal.get("max_pressure_mmHg", 0)
+        values = cal.get(key, [])
+        for k, p in enumerate(values if isinstance(values, list) else [values]):
+            if p > top:
+                where = f"{section}.{key}" + (f"[{k}]" if isinstance(values, list) else "")
+                problems.append(f"{where} = {p} exceeds {section}.max_pressure_mmHg = {top}")
+    bil = config.get("bilayer", {})
+    for layer, beta in bil.get("orientations", {}).items():
+        if abs(sum(beta.values()) - 1.0) > 1e-6:
+            problems.append(f"bilayer.orientations.{layer} must sum to 1 (beta factors of Table 2), "
+                            f"got {sum(beta.values()):.6g}")
+    for layer, frac in bil.get("mass_fractions", {}).items():
+        if abs(sum(frac.values()) - 1.0) > 1e-6:
+            problems.append(f"bilayer.mass_fractions.{layer} must sum to 1, got {sum(frac.values()):.6g}")
+    act = bil.get("active", {})
+    if act and act.get("stretch_min", 0) >= act.get("stretch_max", 1):
+        problems.append(f"bilayer.active.stretch_min = {act.get('stretch_min')} must be below "
+                        f"bilayer.active.stretch_max = {act.get('stretch_max')}")
     return problems

@@ -92,3 +92,18 @@ def carried_pressure(model: Model, ev: Evaluation) -> float:
     g = np.empty_like(x)
     lumen_area_gradient(ev.x, inner, g)
     return float(push / (ev.load.axial_stretch * np.sum(np.linalg.norm(g, axis=1))))
+
+
+def layer_stats(profile: pd.DataFrame) -> pd.DataFrame:
+    """Per layer: mean circumferential stress over its rings and how uniform it is.
+
+    ``circ_variation`` = (max - min) / mean of the ring-mean hoop stress within
+    the layer; ``circ_cv`` = standard deviation / mean.
+    """
+    rows = []
+    for layer, g in profile.groupby("layer", sort=False):
+        s = g.circ_stress_kPa
+        rows.append(dict(layer=layer, rings=len(g), circ_stress_mean_kPa=s.mean(), circ_stress_min_kPa=s.min(),
+                         circ_stress_max_kPa=s.max(), circ_variation=(s.max() - s.min()) / s.mean(),
+                         circ_cv=s.std(ddof=0) / s.mean()))
+    return pd.DataFrame(rows)

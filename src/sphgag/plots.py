@@ -113,3 +113,117 @@ def finite_or_raise(df: pd.DataFrame, columns, what: str):
     bad = [c for c in columns if not np.isfinite(df[c].to_numpy(dtype=float)).all()]
     if bad:
         raise ValueError(f"{what}: non-finite values in {bad}; refusing to draw a figure from them")
+
+
+MODEL_STYLE = {"mean": dict(color="k", marker="o", ls="-"), "passive": dict(color="k", marker="o", ls="-"),
+               "active": dict(color="0.55", marker="^", ls="--")}
+LAYER_COLOURS = {"media": "#3b6fb6", "adventitia": "#2e9e5b", "wall": "#3b6fb6", "GAG": "#d1352b"}
+
+
+def bilayer_pressure_diameter_panels(ax_pd, ax_ss, table: pd.DataFrame, exact: dict):
+    """Figure 3a for the bi-layered model: passive and active, SPH points over the semi-analytical curves."""
+    for model in ("passive", "active"):
+        st = MODEL_STYLE[model]
+        pressure_diameter_panels(ax_pd, ax_ss, table[table.model == model], exact[model], label=f"SPH {model}",
+                                 colour=st["color"], marker=st["marker"], exact_label=f"semi-analytical {model}")
+
+
+def normalised_position(radius, profile):
+    """(r - r_in) / (r_out - r_in) of a radius within a profile's wall."""
+    r = profile.radius_um
+    return (radius - r.min()) / (r.max() - r.min())
+
+
+def bilayer_transmural_panels(ax_r, ax_t, profiles: pd.DataFrame):
+    """Figure 3c: passive (solid) and active (dashed) transmural stresses against the normalised wall position."""
+    borders = []
+    for model in ("passive", "active"):
+        st = MODEL_STYLE[model]
+        data = profiles[profiles.model == model]
+        for P, grp in data.groupby("pressure_mmHg"):
+            c = pressure_colour(P)
+            ex, sph = grp[grp.source == "exact"], grp[grp.source == "sph"]
+            xe, xs = normalised_position(ex.radius_um, ex), normalised_position(sph.radius_um, ex)
+            ax_r.plot(xe, ex.radial_stress_kPa, ls=st["ls"], color=c, lw=1.0)
+            ax_t.plot(xe, ex.circ_stress_kPa, ls=st["ls"], color=c, lw=1.0)
+            ax_r.plot(xs, sph.radial_stress_kPa, st["marker"], mfc="none", color=c, ms=3.2)
+            ax_t.plot(xs, sph.circ_stress_kPa, st["marker"], mfc="none", color=c, ms=3.2)
+            media = ex[ex.layer == "media"]
+            borders.append(float(normalised_position(media.radius_um.max(), ex)))
+    for ax in (ax_r, ax_t):
+        ax.axvline(np.mean(borders), color="0.3", ls=":", lw=0.9)
+    ax_t.text(np.mean(borders), 0.97, " adventitia", transform=ax_t.get_xaxis_transform(), fontsize=7, va="top")
+    ax_t.text(np.mean(borders), 0.97, "media ", transform=ax_t.get_xaxis_transform(), fontsize=7, va="top", ha="right")
+    ax_r.set(ylabel="radial stress (kPa)")
+    ax_t.set(xlabel="normalised wall position (r - r_in)/(r_out - r_in)", ylabel="circumferential stress (kPa)")
+
+
+def fig3(mean_states, mean_exact, bilayer, bilayer_exact: dict, profiles: pd.DataFrame):
+    """Figure 3, complete: (a) pressure-diameter and stress-stretch of the mean, passive and active models;
+    (b) transmural stresses of the mean model; (c) of the bi-layered passive and active models."""
+    _style()
+    fig, axes = plt.subplots(2, 4, figsize=(13.5, 6.2))
+    pressure_diameter_panels(axes[0, 0], axes[1, 0], mean_states, mean_exact)
+    mark_homeostasis(axes[0, 0], axes[1, 0], mean_exact)
+    bilayer_pressure_diameter_panels(axes[0, 1], axes[1, 1], bilayer, bilayer_exact)
+    mark_homeostasis(axes[0, 1], axes[1, 1], bilayer_exact["passive"])
+    for ax in axes[0, :2]:
+        ax.set(xlabel="outer diameter (um)", ylabel="pressure (mmHg)")
+        ax.legend(frameon=False, loc="upper left", fontsize=7)
+    for ax in axes[1, :2]:
+        ax.set(xlabel="mean circumferential stretch (eq. 2.17)", ylabel="mean circumferential stress (kPa)")
+    axes[0, 0].set_title("(a) mean-behaviour model")
+    axes[0, 1].set_title("(a) bi-layered model")
+    transmural_panels(axes[0, 2], axes[1, 2], profiles, "mean")
+    axes[0, 2].set_title("(b) mean-behaviour model")
+    bilayer_transmural_panels(axes[0, 3], axes[1, 3], profiles)
+    axes[0, 3].set_title("(c) bi-layered model")
+    handles = [plt.Line2D([], [], color=pressure_colour(P), lw=1.2, label=f"{P:g} mmHg") for P in PRESSURE_COLOURS]
+    handles += [plt.Line2D([], [], color="k", marker="o", mfc="none", ls="-", label="passive / mean: SPH, exact"),
+                plt.Line2D([], [], color="k", marker="^", mfc="none", ls="--", label="active: SPH, exact")]
+    axes[1, 3].legend(handles=handles, frameon=False, fontsize=7, loc="upper left", bbox_to_anchor=(0.0, 0.9))
+    fig.tight_layout()
+    return fig
+
+
+def fig1(particles: pd.DataFrame, mass_fractions: dict, support_factor: float, dx: float):
+    """Figure 1: (a) the particles of the bi-layered quarter annulus by layer, (b) the spiky kernel and its
+    derivative over the support, (c) the constituent mass fractions of each layer."""
+    from .kernel import spiky, spiky_derivative
+
+    _style()
+    fig = plt.figure(figsize=(11, 3.8))
+    gs = fig.add_gridspec(1, 4, width_ratios=[1.3, 1.1, 1.0, 0.8])
+    ax = fig.add_subplot(gs[0])
+    for layer, g in particles.groupby("layer"):
+        ax.scatter(g.x_um, g.y_um, s=1.2, color=LAYER_COLOURS.get(layer, "k"), label=f"{layer} ({len(g)})")
+    ax.set_aspect("equal")
+    ax.set(xlabel="x (um)", ylabel="y (um)", title=f"(a) {len(particles)} particles, dx = {dx:g} um")
+    ax.legend(frameon=False, markerscale=6, loc="lower left")
+    zoom = fig.add_subplot(gs[1])
+    sector = particles[np.abs(np.rad2deg(particles.theta_rad) - 45.0) < 3.0]
+    for layer, g in sector.groupby("layer"):
+        zoom.scatter(g.x_um, g.y_um, s=g.volume_um2 * 0.6, color=LAYER_COLOURS.get(layer, "k"))
+    zoom.set_aspect("equal")
+    zoom.set(xlabel="x (um)", title="(a) 6 deg sector\n(symbol area ~ volume)")
+    axk = fig.add_subplot(gs[2])
+    h = support_factor * dx
+    r = np.linspace(0.0, h * 1.05, 300)
+    axk.plot(r / dx, [spiky(v, h) * h * h for v in r], "k-", label="xi h^2")
+    axk.plot(r / dx, [spiky_derivative(v, h) * h**3 for v in r], "k--", label="d xi/dR h^3")
+    for k in range(1, int(support_factor) + 1):
+        axk.axvline(k, color="0.7", lw=0.6)
+    axk.axvline(support_factor, color="r", lw=0.8)
+    axk.set(xlabel="R / dx", title=f"(b) spiky kernel, h = {support_factor:g} dx")
+    axk.legend(frameon=False)
+    axc = fig.add_subplot(gs[3])
+    bottom = np.zeros(2)
+    colours = {"elastin": "#8c6d31", "smc": "#e7969c", "collagen": "#6b6ecf"}
+    for constituent in ("elastin", "smc", "collagen"):
+        vals = np.array([mass_fractions[l].get(constituent, 0.0) for l in ("media", "adventitia")])
+        axc.bar(["media", "adventitia"], vals, bottom=bottom, color=colours[constituent], label=constituent)
+        bottom += vals
+    axc.set(ylabel="mass fraction", title="(c) composition")
+    axc.legend(frameon=False, fontsize=7, loc="upper left", bbox_to_anchor=(1.0, 1.0))
+    fig.tight_layout()
+    return fig

@@ -1,10 +1,14 @@
 """Loading protocols of the paper (figure 2), run as paths of converged quasi-static states.
 
-:func:`mean_pressure_diameter` is figure 2a: from the unloaded reference, ramp
-the axial stretch at zero pressure, then pressurise at fixed axial stretch,
-recording the pressure-diameter response, the mean circumferential stress and
-stretch (eqs. 2.16-2.17) and transmural stress profiles, each beside the exact
-thick-walled solution.
+* :func:`mean_pressure_diameter` is figure 2a: from the unloaded reference,
+  ramp the axial stretch at zero pressure, then pressurise at fixed axial
+  stretch, recording the pressure-diameter response, the mean circumferential
+  stress and stretch (eqs. 2.16-2.17) and transmural stress profiles, each
+  beside the exact thick-walled solution.
+* :func:`homeostasis` is figure 2b: deposition pre-stretches ramped at a held
+  inner radius; :func:`bilayer_pressure_diameter` then activates (optionally)
+  and pressurises the bi-layered model under pressure control, beside the
+  semi-analytical bi-layered tube.
 """
 
 from __future__ import annotations
@@ -46,27 +50,93 @@ def log_state(run: str):
 
 @dataclass
 class PressureDiameter:
-    """Results of the figure 2a protocol."""
+    """Results of a pressure-diameter protocol."""
 
-    states: pd.DataFrame  # one row per converged state at the target axial stretch
+    states: pd.DataFrame  # one row per converged state of the sweep
     transmural: pd.DataFrame  # SPH ring profiles and exact profiles
     analytic: pd.DataFrame  # dense exact curve
+    saved: dict = None  # pressure [mmHg] -> solver.State, for the state pressures
 
-    def max_od_error(self, p_min_mmHg=10.0) -> float:
-        s = self.states[self.states.pressure_mmHg >= p_min_mmHg - 1e-9]
+    def max_od_error(self, p_min_mmHg=10.0, p_max_mmHg=np.inf) -> float:
+        s = self.states[(self.states.pressure_mmHg >= p_min_mmHg - 1e-9) & (self.states.pressure_mmHg <= p_max_mmHg)]
         return float(s.od_rel_error.abs().max())
+
+
+def state_row(model: Model, s: solver.State, tube: analytic.ThickWallTube, R_ref: float, H_ref: float) -> dict:
+    """One pressure-diameter row: diameters, eqs. (2.16)-(2.17), convergence, exact diameter, equilibrium.
+
+    ``R_ref, H_ref``: inner radius and thickness of the configuration the mean
+    circumferential stretch is normalised by (eq. 2.17).
+    """
+    P_kPa = measure.carried_pressure(model, s.evaluation)
+    ID, OD = measure.diameters(model, s.x)
+    r_in, h = ID / 2.0, (OD - ID) / 2.0
+    exact_r_in = tube.inner_radius(P_kPa)
+    exact_OD = 2.0 * float(tube.radius(tube.R_out, exact_r_in))
+    profile = measure.ring_profile(model, s.evaluation)
+    hoop = measure.hoop_force(profile)
+    return dict(
+        pressure_mmHg=P_kPa / MMHG_TO_KPA,
+        outer_diameter_um=OD,
+        inner_diameter_um=ID,
+        wall_thickness_um=h,
+        mean_circ_stress_kPa=float(analytic.thin_wall_stress(P_kPa, r_in, h)),
+        mean_circ_stretch=float(analytic.thin_wall_stretch(r_in, h, R_ref, H_ref)),
+        residual=s.convergence.residual,
+        newton_iterations=s.convergence.iterations,
+        force_evaluations=s.convergence.force_evaluations,
+        jacobians=s.convergence.jacobians,
+        solve_seconds=s.convergence.seconds,
+        exact_outer_diameter_um=exact_OD,
+        exact_inner_diameter_um=2.0 * exact_r_in,
+        od_rel_error=OD / exact_OD - 1.0,
+        hoop_force_kPa_um=hoop,
+        equilibrium_error=(hoop / (P_kPa * r_in) - 1.0) if P_kPa > 0 else np.nan,
+        outer_radial_stress_kPa=float(profile.radial_stress_kPa.iloc[-1]),
+        min_jacobian=float(profile.jacobian.min()),
+        max_jacobian=float(profile.jacobian.max()),
+    )
+
+
+TRANSMURAL_COLUMNS = ["model", "pressure_mmHg", "source", "radius_um", "layer", "radial_stress_kPa", "circ_stress_kPa"]
+
+
+def transmural(model: Model, s: solver.State, tube: analytic.ThickWallTube, label: str) -> pd.DataFrame:
+    """SPH ring profile (``source = sph``) and exact profile (``source = exact``) of one state."""
+    P_mmHg = s.load.pressure_mmHg
+    sph = measure.ring_profile(model, s.evaluation).assign(model=label, pressure_mmHg=P_mmHg, source="sph")
+    ex = tube.state(s.load.pressure_kPa)
+    exact = pd.DataFrame(dict(model=label, pressure_mmHg=P_mmHg, source="exact", radius_um=ex.radius,
+                              layer=ex.layer, radial_stress_kPa=ex.radial_stress, circ_stress_kPa=ex.circ_stress))
+    out = pd.concat([sph, exact], ignore_index=True)
+    return out[TRANSMURAL_COLUMNS + [c for c in out.columns if c not in TRANSMURAL_COLUMNS]]
+
+
+def exact_curve(tube: analytic.ThickWallTube, pressures_mmHg, R_ref: float, H_ref: float) -> pd.DataFrame:
+    """Exact pressure-diameter and thin-wall mean stress-stretch curves (eqs. 2.16-2.17)."""
+    P = np.asarray(pressures_mmHg, dtype=float)
+    r_in = np.array([tube.inner_radius(p * MMHG_TO_KPA) for p in P])
+    r_out = tube.radius(tube.R_out, r_in)
+    h = r_out - r_in
+    return pd.DataFrame(dict(
+        pressure_mmHg=P,
+        outer_diameter_um=2.0 * r_out,
+        inner_diameter_um=2.0 * r_in,
+        mean_circ_stress_kPa=analytic.thin_wall_stress(P * MMHG_TO_KPA, r_in, h),
+        mean_circ_stretch=analytic.thin_wall_stretch(r_in, h, R_ref, H_ref),
+    ))
 
 
 def mean_pressure_diameter(model: Model, tube: analytic.ThickWallTube, p: dict, numerics: dict,
                            calibration: dict, label: str = "mean") -> PressureDiameter:
     """Figure 2a on the mean-behaviour model, compared with the exact tube ``tube``.
 
-    ``label`` is the ``model`` column of the transmural table.
+    ``label`` is the ``model`` column of the transmural table. The mean
+    circumferential stretch is normalised by the unloaded geometry (eq. 2.17).
     """
     run = model.name
     lz = p["axial_stretch"]
-    R_in, R_out = p["inner_radius_um"], p["outer_radius_um"]
-    H = R_out - R_in
+    R_in, H = p["inner_radius_um"], p["outer_radius_um"] - p["inner_radius_um"]
     steps = calibration["axial_stretch_steps"]
     axial = [Load(axial_stretch=s, pressure_kPa=0.0) for s in np.linspace(1.0, lz, steps + 1)[1:]]
     pressures = pressure_points(calibration)
@@ -76,60 +146,111 @@ def mean_pressure_diameter(model: Model, tube: analytic.ThickWallTube, p: dict, 
     states = solver.follow_path(model, model.layout.X, Load(1.0, 0.0), loads, run=run, on_state=log_state(run),
                                 **solver_options(numerics))
     final = [s for s in states if s.load.axial_stretch == lz]
-
-    rows, profiles = [], []
     wanted = set(np.round(calibration["transmural_pressures_mmHg"], 10))
-    for s in final:
-        P_mmHg = s.load.pressure_mmHg
-        ID, OD = measure.diameters(model, s.x)
-        r_in, h = ID / 2.0, (OD - ID) / 2.0
-        exact_r_in = tube.inner_radius(s.load.pressure_kPa)
-        exact_OD = 2.0 * float(tube.radius(R_out, exact_r_in))
-        profile = measure.ring_profile(model, s.evaluation)
-        hoop = measure.hoop_force(profile)
-        rows.append(dict(
-            pressure_mmHg=P_mmHg,
-            outer_diameter_um=OD,
-            inner_diameter_um=ID,
-            wall_thickness_um=h,
-            mean_circ_stress_kPa=float(analytic.thin_wall_stress(s.load.pressure_kPa, r_in, h)),
-            mean_circ_stretch=float(analytic.thin_wall_stretch(r_in, h, R_in, H)),
-            residual=s.convergence.residual,
-            newton_iterations=s.convergence.iterations,
-            force_evaluations=s.convergence.force_evaluations,
-            jacobians=s.convergence.jacobians,
-            solve_seconds=s.convergence.seconds,
-            exact_outer_diameter_um=exact_OD,
-            exact_inner_diameter_um=2.0 * exact_r_in,
-            od_rel_error=OD / exact_OD - 1.0,
-            hoop_force_kPa_um=hoop,
-            equilibrium_error=(hoop / (s.load.pressure_kPa * r_in) - 1.0) if P_mmHg > 0 else np.nan,
-            outer_radial_stress_kPa=float(profile.radial_stress_kPa.iloc[-1]),
-            min_jacobian=float(profile.jacobian.min()),
-        ))
-        if round(P_mmHg, 10) in wanted:
-            profiles.append(profile.assign(model=label, pressure_mmHg=P_mmHg, source="sph"))
-            ex = tube.state(s.load.pressure_kPa)
-            profiles.append(pd.DataFrame(dict(
-                model=label, pressure_mmHg=P_mmHg, source="exact", radius_um=ex.radius, layer="wall",
-                radial_stress_kPa=ex.radial_stress, circ_stress_kPa=ex.circ_stress)))
-    table = pd.DataFrame(rows)
-    transmural = pd.concat(profiles, ignore_index=True)
-    cols = ["model", "pressure_mmHg", "source", "radius_um", "layer", "radial_stress_kPa", "circ_stress_kPa"]
-    transmural = transmural[cols + [c for c in transmural.columns if c not in cols]]
-    return PressureDiameter(table, transmural, exact_curve(tube, calibration["max_pressure_mmHg"]))
+    table = pd.DataFrame([state_row(model, s, tube, R_in, H) for s in final])
+    profiles = pd.concat([transmural(model, s, tube, label) for s in final
+                          if round(s.load.pressure_mmHg, 10) in wanted], ignore_index=True)
+    curve = exact_curve(tube, np.linspace(0.0, calibration["max_pressure_mmHg"], 201), R_in, H)
+    return PressureDiameter(table, profiles, curve)
 
 
-def exact_curve(tube: analytic.ThickWallTube, max_pressure_mmHg: float, n: int = 201) -> pd.DataFrame:
-    """Dense exact pressure-diameter and thin-wall mean stress-stretch curves (eqs. 2.16-2.17)."""
-    P = np.linspace(0.0, max_pressure_mmHg, n)
-    r_in = np.array([tube.inner_radius(p * MMHG_TO_KPA) for p in P])
-    r_out = tube.radius(tube.R_out, r_in)
-    h = r_out - r_in
-    return pd.DataFrame(dict(
-        pressure_mmHg=P,
-        outer_diameter_um=2.0 * r_out,
-        inner_diameter_um=2.0 * r_in,
-        mean_circ_stress_kPa=analytic.thin_wall_stress(P * MMHG_TO_KPA, r_in, h),
-        mean_circ_stretch=analytic.thin_wall_stretch(r_in, h, tube.R_in, tube.R_out - tube.R_in),
-    ))
+# ---------------------------------------------------------------------------
+# Bi-layered model: homeostasis (figure 2b), activation and pressure-diameter
+# ---------------------------------------------------------------------------
+
+
+def homeostatic_load(inner_radius: float, prestretch: float, activation: float = 0.0) -> Load:
+    """Load of the pre-stretch stage: inner radius held, plane strain at the in vivo length (lz = 1)."""
+    return Load(1.0, None, inner_radius=inner_radius,
+                material=(("activation", activation), ("prestretch", prestretch)))
+
+
+@dataclass
+class Homeostasis:
+    """The converged homeostatic state and what it carries."""
+
+    state: solver.State
+    pressures_kPa: dict  # carried pressure: reactions, inner-surface radial stress, hoop equilibrium
+    profile: pd.DataFrame  # ring profile
+    layers: pd.DataFrame  # per-layer circumferential stress statistics
+
+
+def homeostasis(model: Model, numerics: dict, homeo: dict, x0=None, start: Load | None = None,
+                activation: float = 0.0) -> Homeostasis:
+    """Figure 2b: ramp every deposition pre-stretch from 1 to its value, inner radius held.
+
+    Nothing is forced: the pressure the state carries is read back three
+    ways (reactions of the held inner surface, mean radial stress of the inner
+    ring, and global equilibrium ``int sigma_tt dr / r_in``). With
+    ``activation > 0`` the active tone is ramped afterwards, still at the held
+    radius (``x0``/``start`` then give the passive homeostatic state).
+    """
+    run = model.name
+    R0 = model.layout.inner_radius
+    steps = homeo["prestretch_steps"]
+    if start is None:
+        start, x0 = homeostatic_load(R0, 0.0), model.layout.X
+        loads = [homeostatic_load(R0, s) for s in np.linspace(0.0, 1.0, steps + 1)[1:]]
+    else:
+        loads = [homeostatic_load(R0, 1.0, a) for a in np.linspace(0.0, activation, steps + 1)[1:]]
+    log.info("[%s] %d particles; ramping %s in %d steps at inner radius %.1f um", run, model.n,
+             "the deposition pre-stretches" if activation == 0.0 else "the active tone", steps, R0)
+    state = solver.follow_path(model, x0, start, loads, run=run, on_state=log_state(run),
+                               **solver_options(numerics))[-1]
+    profile = measure.ring_profile(model, state.evaluation)
+    r_in = measure.surface_radius(model, state.x, "inner")
+    pressures = dict(
+        reactions=measure.carried_pressure(model, state.evaluation),
+        inner_radial_stress=-float(profile.radial_stress_kPa.iloc[0]),
+        hoop_equilibrium=measure.hoop_force(profile) / r_in,
+    )
+    return Homeostasis(state, pressures, profile, measure.layer_stats(profile))
+
+
+def bilayer_pressure_diameter(model: Model, tube: analytic.ThickWallTube, homeostatic: solver.State,
+                              numerics: dict, cal: dict, active: bool, label: str) -> PressureDiameter:
+    """Pressure-diameter sweep of the passive or active bi-layered model under pressure control.
+
+    From the homeostatic state (inner radius held, carried pressure P_h) the
+    load switches to pressure control at P_h (the same equilibrium), moves to
+    the activation pressure, ramps the active tone there if ``active``, and then
+    sweeps the pressures below and above it in two branches. The mean
+    circumferential stretch is normalised by the traction-free (zero-pressure)
+    geometry, as in figure 3a (that of the semi-analytical tube, so that SPH
+    points and exact curve share the normalisation).
+    """
+    run = model.name
+    material = homeostatic.load.material
+    P_h = measure.carried_pressure(model, homeostatic.evaluation)
+    P_act = cal["activation_pressure_mmHg"]
+    opts = dict(run=run, on_state=log_state(run), **solver_options(numerics))
+    here = Load(1.0, P_h, material=material)
+    at_act = Load(1.0, P_act * MMHG_TO_KPA, material=material)
+    path = [here, at_act]
+    if active:
+        steps = cal["activation_steps"]
+        path += [Load(1.0, P_act * MMHG_TO_KPA, material=(("activation", a), ("prestretch", 1.0)))
+                 for a in np.linspace(0.0, 1.0, steps + 1)[1:]]
+    log.info("[%s] %s model: pressure control from the homeostatic %.1f mmHg to %.1f mmHg%s", run, label,
+             P_h / MMHG_TO_KPA, P_act, ", then activation in %d steps" % cal["activation_steps"] if active else "")
+    start = solver.follow_path(model, homeostatic.x, here, path, **opts)[-1]
+    sweep = np.linspace(0.0, cal["max_pressure_mmHg"], cal["pressure_points"])
+    pressures = np.unique(np.round(np.concatenate([sweep, cal["state_pressures_mmHg"], [P_act]]), 10))
+    down = [P for P in pressures[::-1] if P < P_act]
+    up = [P for P in pressures if P > P_act]
+    states = [start]
+    for branch in (down, up):
+        loads = [Load(1.0, P * MMHG_TO_KPA, material=start.load.material) for P in branch]
+        states += solver.follow_path(model, start.x, start.load, loads, **opts)
+    states.sort(key=lambda s: s.load.pressure_kPa)
+    # eq. (2.17) normalised by the traction-free (zero-pressure) geometry of the semi-analytical tube, the
+    # same constant for the SPH points and the exact curve
+    r0 = tube.inner_radius(0.0)
+    h0 = float(tube.radius(tube.R_out, r0)) - r0
+    table = pd.DataFrame([state_row(model, s, tube, r0, h0) for s in states]).assign(model=label)
+    table = table[["model"] + [c for c in table.columns if c != "model"]]
+    wanted = {round(P, 10) for P in cal["state_pressures_mmHg"]}
+    saved = {round(s.load.pressure_mmHg, 10): s for s in states if round(s.load.pressure_mmHg, 10) in wanted}
+    profiles = pd.concat([transmural(model, s, tube, label) for s in saved.values()], ignore_index=True)
+    curve = exact_curve(tube, np.linspace(0.0, cal["max_pressure_mmHg"], 201), r0, h0).assign(model=label)
+    return PressureDiameter(table, profiles, curve, saved)

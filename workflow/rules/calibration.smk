@@ -25,7 +25,7 @@ rule calibrate_mean:
 rule transmural:
     """Transmural stress profiles of all models in one tidy table (figure 3b,c)."""
     input:
-        "results/calibration/transmural_mean.csv",
+        expand("results/calibration/transmural_{model}.csv", model=("mean", "passive", "active")),
     output:
         "results/calibration/transmural.csv",
     conda:

@@ -27,3 +27,42 @@ rule fig3b:
         "logs/fig3b.log",
     script:
         "../scripts/fig3b.py"
+
+
+rule fig3:
+    """Figure 3, complete: mean, passive and active models (pressure-diameter, stress-stretch, transmural)."""
+    input:
+        mean_states=rules.calibrate_mean.output.states,
+        mean_exact=rules.calibrate_mean.output.exact,
+        bilayer=rules.bilayer_table.output.table,
+        passive_exact="results/calibration/bilayer_passive_exact_curve.csv",
+        active_exact="results/calibration/bilayer_active_exact_curve.csv",
+        profiles=rules.transmural.output[0],
+    output:
+        pdf="figures/fig3.pdf",
+        png="figures/fig3.png",
+    log:
+        "logs/fig3.log",
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/fig3.py"
+
+
+rule fig1:
+    """Figure 1: particle layout of the bi-layered model, the kernel, the layer composition."""
+    input:
+        particles=rules.homeostasis.output.particles,
+    output:
+        pdf="figures/fig1.pdf",
+        png="figures/fig1.png",
+    params:
+        mass_fractions=config["bilayer"]["mass_fractions"],
+        support_factor=config["numerics"]["kernel_support_factor"],
+        dx=config["bilayer"]["dx_um"],
+    log:
+        "logs/fig1.log",
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/fig1.py"

@@ -1,0 +1,78 @@
+"""Saved equilibrium states: positions, load and the parameters and code that made them.
+
+A state file (``.npz``) lets later rules start from a converged state (the
+homeostatic artery, the pressurised passive/active arteries) without
+recomputing it. It records the *configuration slice* the state depends on;
+:func:`load` refuses a file whose slice differs from the one the caller
+expects, so a later rule can never silently continue from a state made with
+other parameters.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from . import provenance
+from .loading import Load
+
+
+class StateMismatch(ValueError):
+    """The state file was made with different parameters than the caller expects."""
+
+
+def canonical(params) -> str:
+    """Canonical JSON of a configuration slice (sorted keys, floats as floats)."""
+    return json.dumps(params, sort_keys=True, default=float)
+
+
+@dataclass
+class SavedState:
+    x: np.ndarray
+    load: Load
+    params: dict
+    code: dict
+    info: dict
+
+
+def save(path, x: np.ndarray, load: Load, params: dict, info: dict | None = None) -> None:
+    """Write a state file with its load, configuration slice, code version and extra info."""
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
+    meta = {
+        "load": {"axial_stretch": load.axial_stretch, "pressure_kPa": load.pressure_kPa,
+                 "inner_radius": load.inner_radius, "material": list(map(list, load.material))},
+        "params": json.loads(canonical(params)),
+        "code": provenance.code_version(),
+        "info": info or {},
+    }
+    with open(path, "wb") as fh:
+        np.savez(fh, x=np.asarray(x, dtype=float), meta=np.array(json.dumps(meta)))
+
+
+def load(path, expected_params: dict | None = None) -> SavedState:
+    """Read a state file; if ``expected_params`` is given it must equal the stored slice."""
+    with np.load(path, allow_pickle=False) as data:
+        x = data["x"].copy()
+        meta = json.loads(str(data["meta"]))
+    if expected_params is not None and canonical(expected_params) != canonical(meta["params"]):
+        diff = _differences(json.loads(canonical(expected_params)), meta["params"])
+        raise StateMismatch(f"{path} was made with different parameters: {'; '.join(diff)}")
+    ld = meta["load"]
+    load_ = Load(axial_stretch=ld["axial_stretch"], pressure_kPa=ld["pressure_kPa"], inner_radius=ld["inner_radius"],
+                 material=tuple(tuple(kv) for kv in ld["material"]))
+    return SavedState(x=x, load=load_, params=meta["params"], code=meta["code"], info=meta["info"])
+
+
+def _differences(expected, stored, prefix=""):
+    out = []
+    for key in sorted(set(expected) | set(stored)):
+        a, b = expected.get(key, "<missing>"), stored.get(key, "<missing>")
+        name = f"{prefix}{key}"
+        if isinstance(a, dict) and isinstance(b, dict):
+            out += _differences(a, b, name + ".")
+        elif a != b:
+            out.append(f"{name}: expected {a!r}, file has {b!r}")
+    return out

@@ -1,0 +1,11 @@
+"""Rule fig1: particle layout of the bi-layered model, kernel and composition (figure 1)."""
+
+import pandas as pd
+
+from sphgag import plots, runlog
+
+sm = snakemake  # noqa: F821
+with runlog.run("fig1", sm.log[0]):
+    particles = pd.read_csv(sm.input.particles)
+    fig = plots.fig1(particles, sm.params.mass_fractions, sm.params.support_factor, sm.params.dx)
+    plots.save(fig, [sm.output.pdf, sm.output.png], "Figure 1 (particle layout), sphgag")
