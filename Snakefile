@@ -11,10 +11,12 @@ SRC = str(Path(workflow.basedir, "src").resolve())
 sys.path.insert(0, SRC)
 os.environ.update(PYTHONPATH=os.pathsep.join(filter(None, [SRC, os.environ.get("PYTHONPATH")])))
 
-from sphgag.config import canonical, validate  # noqa: E402
+from sphgag.config import canonical, load_yaml, validate  # noqa: E402
 
 configfile: "config/config.yaml"
 
+for _path in workflow.configfiles:  # Snakemake's own YAML reader lets a duplicated key win silently
+    load_yaml(_path)
 validate(config, Path(workflow.basedir, "config", "schema.yaml"))
 # key order must not matter when Snakemake compares a rule's params with its last run
 config = canonical(config)
@@ -26,6 +28,7 @@ SPHGAG = sorted(str(p) for p in Path(SRC, "sphgag").glob("*.py"))
 
 include: "workflow/rules/calibration.smk"
 include: "workflow/rules/homeostasis.smk"
+include: "workflow/rules/swelling.smk"
 include: "workflow/rules/figures.smk"
 
 
@@ -40,4 +43,7 @@ rule all:
         rules.fig3a_mean.output,
         rules.fig3b.output,
         rules.fig3.output,
+        rules.tip_stress.output,
+        rules.fig4.output,
+        rules.claims.output,
     default_target: True

@@ -26,8 +26,12 @@ CONTRACT = {
         "model", "pressure_mmHg", "outer_diameter_um", "inner_diameter_um", "residual"],
     "results/homeostasis/summary.csv": [
         "model", "carried_pressure_mmHg", "inner_radius_um", "outer_radius_um", "residual"],
+    "results/swelling/tip_stress.csv": [
+        "model", "case", "pressure_mmHg", "stage", "concentration_mEq_l", "swelling_pressure_kPa",
+        "tip_radial_stress_kPa", "top_circ_stress_kPa", "residual"],
+    "results/claims.csv": ["claim_id", "statement", "paper_value", "our_value", "holds"],
 }
-FIGURES = [f"figures/{name}.{ext}" for name in ("fig1", "fig3a_mean", "fig3b", "fig3") for ext in ("pdf", "png")]
+FIGURES = [f"figures/{name}.{ext}" for name in ("fig1", "fig3a_mean", "fig3b", "fig3", "fig4") for ext in ("pdf", "png")]
 
 
 def snakemake(workdir, *args, configfile=ROOT / "config" / "ci.yaml"):
@@ -60,12 +64,21 @@ def test_outputs_follow_the_data_contracts(workdir, ci_config):
         assert set(columns) <= set(table.columns), path
         assert len(table) > 0
     for table in ("calibration/mean_pressure_diameter.csv", "calibration/bilayer_pressure_diameter.csv",
-                  "homeostasis/summary.csv"):
+                  "homeostasis/summary.csv", "swelling/tip_stress.csv"):
         states = pd.read_csv(workdir / "results" / table)
         assert (states.residual < ci_config["numerics"]["tolerance"]).all(), table
     transmural = pd.read_csv(workdir / "results/calibration/transmural.csv")
     assert set(transmural.model) == {"mean", "passive", "active"}
     assert set(pd.read_csv(workdir / "results/calibration/bilayer_pressure_diameter.csv").model) == {"passive", "active"}
+    tips = pd.read_csv(workdir / "results/swelling/tip_stress.csv")
+    sw = ci_config["swelling"]
+    runs = tips.groupby(["model", "case", "pressure_mmHg"])
+    assert runs.ngroups == len(sw["models"]) * len(sw["cases"]) * len(sw["pressures_mmHg"])
+    assert (runs.stage.apply(lambda s: (s == "intact").sum()) == 1).all()
+    assert (runs.size() == 1 + sw["concentration_points"]).all()
+    claims = pd.read_csv(workdir / "results/claims.csv")
+    assert set(claims.holds) <= {"yes", "no", "n/a"} and len(claims) >= 10
+    assert "| C7 |" in (workdir / "figures/claims.md").read_text()
     for fig in FIGURES:
         assert (workdir / fig).stat().st_size > 5000
 

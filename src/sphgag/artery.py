@@ -116,11 +116,14 @@ class BilayerMaterial:
     """Property table of the bi-layered model as a function of the load's material parameters.
 
     ``prestretch`` in [0, 1] scales every deposition stretch from 1 to its Table 2 value
-    (figure 2b); ``activation`` in [0, 1] scales the active tone T_max of the media (eq. 2.24).
+    (figure 2b); ``activation`` in [0, 1] scales the active tone T_max of the media (eq. 2.24);
+    ``conversion`` in [0, 1] turns the ``pool`` particles into GAG and ``concentration``
+    [mEq/l] sets their fixed-charge density, hence the swelling pressure (eqs. 2.25-2.27).
     """
 
-    def __init__(self, p: dict, layout: geometry.Layout):
-        self.p = p
+    def __init__(self, p: dict, layout: geometry.Layout, pool=None, gag: dict | None = None):
+        self.p, self.gag = p, gag
+        self.pool = np.empty(0, dtype=np.int64) if pool is None else np.asarray(pool, dtype=np.int64)
         n = layout.n
         table = materials.empty_props(n)
         self.media = layout.layer_mask("media")
@@ -147,11 +150,31 @@ class BilayerMaterial:
         for col in self._fibre_g:
             out[:, col] = 1.0 + s * (self.target[:, col] - 1.0)
         out[self.media, materials.TACT] = a * self.p["active"]["max_stress_kPa"]
+        conversion = load.material_value("conversion", 0.0)
+        if self.pool.size and conversion > 0.0:
+            g = self.gag
+            c = load.material_value("concentration", 0.0)
+            pi = float(materials.swelling_pressure(c, g["bath_concentration_mEq_l"], g["temperature_K"]))
+            materials.convert_to_gag(out, self.pool, conversion, g["shear_modulus_kPa"], g["hourglass_modulus_kPa"],
+                                     pi)
         return out
 
 
-def bilayer_model(p: dict, numerics: dict, name: str = "bilayer") -> Model:
-    """Bi-layered model (section 2.4.2, Table 2) in its in vivo reference configuration."""
+def pool_sector(case: dict) -> geometry.Sector:
+    """A GAG pool from its configuration entry (centre, radial and angular extent)."""
+    return geometry.Sector(case["centre_radius_um"], case["centre_angle_deg"], case["radial_extent_um"],
+                           case["angular_extent_deg"])
+
+
+def bilayer_model(p: dict, numerics: dict, name: str = "bilayer", pool: geometry.Sector | None = None,
+                  gag: dict | None = None) -> Model:
+    """Bi-layered model (section 2.4.2, Table 2) in its in vivo reference configuration.
+
+    With ``pool`` (and the ``gag`` parameters), the medial particles inside that
+    sector can be converted to GAG through the load's ``conversion`` and
+    ``concentration``.
+    """
     layout = geometry.quarter_annulus(bilayer_interfaces(p), p["dx_um"], layer_names=LAYERS)
     nb = kernel.for_layout(layout, numerics["kernel_support_factor"])
-    return Model(name, layout, nb, BilayerMaterial(p, layout), numerics["hourglass_alpha"])
+    members = None if pool is None else pool.members(layout, layer="media")
+    return Model(name, layout, nb, BilayerMaterial(p, layout, members, gag), numerics["hourglass_alpha"])

@@ -19,9 +19,24 @@ class ConfigError(ValueError):
     """The configuration does not satisfy the schema."""
 
 
+class _UniqueKeyLoader(yaml.SafeLoader):
+    """A YAML loader that refuses duplicate keys (plain YAML lets the last one win silently)."""
+
+    def construct_mapping(self, node, deep=False):
+        seen = set()
+        for key_node, _ in node.value:
+            key = self.construct_object(key_node, deep=deep)
+            if key in seen:
+                raise ConfigError(f"duplicate key {key!r} at line {key_node.start_mark.line + 1} of "
+                                  f"{key_node.start_mark.name}")
+            seen.add(key)
+        return super().construct_mapping(node, deep)
+
+
 def load_yaml(path) -> dict:
+    """Read a YAML file; duplicate keys are an error."""
     with open(path) as fh:
-        return yaml.safe_load(fh) or {}
+        return yaml.load(fh, Loader=_UniqueKeyLoader) or {}
 
 
 def _key(path) -> str:
@@ -110,6 +125,24 @@ def _consistency(config: dict) -> list[str]:
     for layer, frac in bil.get("mass_fractions", {}).items():
         if abs(sum(frac.values()) - 1.0) > 1e-6:
             problems.append(f"bilayer.mass_fractions.{layer} must sum to 1, got {sum(frac.values()):.6g}")
+    sw = config.get("swelling", {})
+    saved = config.get("bilayer_calibration", {}).get("state_pressures_mmHg", [])
+    for k, p in enumerate(sw.get("pressures_mmHg", [])):
+        if p not in saved:
+            problems.append(f"swelling.pressures_mmHg[{k}] = {p} has no saved state: it must be one of "
+                            f"bilayer_calibration.state_pressures_mmHg = {saved}")
+    if bil:
+        r_in = bil.get("inner_radius_um", 0)
+        border = r_in + bil.get("media_thickness_um", 0)
+        for name, pool in sw.get("cases", {}).items():
+            lo = pool["centre_radius_um"] - pool["radial_extent_um"] / 2
+            hi = pool["centre_radius_um"] + pool["radial_extent_um"] / 2
+            if lo < r_in or hi > border:
+                problems.append(f"swelling.cases.{name}: radii {lo:g}-{hi:g} um leave the media ({r_in:g}-{border:g} um)")
+            half = pool["angular_extent_deg"] / 2
+            if pool["centre_angle_deg"] - half <= 0 or pool["centre_angle_deg"] + half >= 90:
+                problems.append(f"swelling.cases.{name}: angles {pool['centre_angle_deg'] - half:g}-"
+                                f"{pool['centre_angle_deg'] + half:g} deg reach a symmetry edge (0 or 90 deg)")
     act = bil.get("active", {})
     if act and act.get("stretch_min", 0) >= act.get("stretch_max", 1):
         problems.append(f"bilayer.active.stretch_min = {act.get('stretch_min')} must be below "

@@ -174,3 +174,42 @@ def quarter_annulus(interfaces, dx, layer_names=("wall",)) -> Layout:
 def quarter_annulus_area(r_in: float, r_out: float) -> float:
     """Exact area of the quarter annulus, the sum the particle volumes must reproduce."""
     return 0.25 * np.pi * (r_out**2 - r_in**2)
+
+
+@dataclass(frozen=True)
+class Sector:
+    """An annular sector of the reference configuration (a GAG pool, a measurement box).
+
+    Defined geometrically (um and degrees), so it means the same region at any
+    resolution: a particle belongs to it when its reference position does.
+    """
+
+    centre_radius: float
+    centre_angle_deg: float
+    radial_extent: float
+    angular_extent_deg: float
+
+    @property
+    def r_range(self):
+        return self.centre_radius - 0.5 * self.radial_extent, self.centre_radius + 0.5 * self.radial_extent
+
+    @property
+    def theta_range(self):
+        half = 0.5 * np.deg2rad(self.angular_extent_deg)
+        c = np.deg2rad(self.centre_angle_deg)
+        return c - half, c + half
+
+    def contains(self, radius, theta):
+        (r0, r1), (t0, t1) = self.r_range, self.theta_range
+        return (radius >= r0) & (radius <= r1) & (theta >= t0) & (theta <= t1)
+
+    def members(self, layout: Layout, layer: str | None = None) -> np.ndarray:
+        mask = self.contains(layout.radius, layout.theta)
+        if layer is not None:
+            mask &= layout.layer_mask(layer)
+        return np.flatnonzero(mask)
+
+    @property
+    def area(self):
+        (r0, r1) = self.r_range
+        return 0.5 * (r1 * r1 - r0 * r0) * np.deg2rad(self.angular_extent_deg)

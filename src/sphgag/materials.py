@@ -315,6 +315,37 @@ def tangent_modulus(f00, f01, f10, f11, lz, cth, sth, props, i, C, A):
                     A[2 * a_ + B, 2 * c + D] = v
 
 
+def convert_to_gag(props, rows, fraction, shear_modulus, hourglass_modulus, swelling_pressure=0.0):
+    """Turn ``rows`` of a property table a ``fraction`` of the way into GAG (eq. 2.27), in place.
+
+    A GAG particle is the modified neo-Hookean solid ``mu_GAG`` (no bulk term,
+    no deposition stretch, no fibres, no active tone) plus the Gibbs-Donnan
+    swelling pressure ``Pi``: Cauchy stress ``mu_GAG (B - I)/J - Pi I``.
+    Conversion is a change of the particle's row, nothing else. For
+    ``0 < fraction < 1`` the row is a homotopy that the quasi-static solver can
+    follow in steps: the original constituents keep a weight ``g`` that falls
+    from 1 to 0 log-uniformly (``g = (1 - s) 10^(-4 s)``: the stiffness drops by
+    four decades before it vanishes, so the state changes evenly along the path
+    instead of all at its end), moduli are blended with it and the deposition
+    stretches go as ``G^g`` (det G stays 1); ``fraction = 1`` is exactly the GAG
+    material.
+    """
+    s = float(fraction)
+    g = (1.0 - s) * 10.0 ** (-4.0 * s)
+    p = props[rows]
+    p[:, MU] = g * p[:, MU] + (1.0 - g) * shear_modulus
+    p[:, LAM] *= g
+    for col in (GR, GT, GZ):
+        p[:, col] = p[:, col] ** g
+    for k in range(MAX_FAMILIES):
+        p[:, FAM0 + k * FAM_STRIDE + PHI] *= g
+    p[:, TACT] *= g
+    p[:, HG_E] = g * p[:, HG_E] + (1.0 - g) * hourglass_modulus
+    p[:, PI] = swelling_pressure
+    props[rows] = p
+    return props
+
+
 def swelling_pressure(c_fc, c_bath, temperature_K=310.0):
     """Gibbs-Donnan swelling pressure Pi = R T (sqrt(c_FC^2 + c*^2) - c*) in kPa (eqs. 2.25-2.26).
 

@@ -107,3 +107,37 @@ def layer_stats(profile: pd.DataFrame) -> pd.DataFrame:
                          circ_stress_max_kPa=s.max(), circ_variation=(s.max() - s.min()) / s.mean(),
                          circ_cv=s.std(ddof=0) / s.mean()))
     return pd.DataFrame(rows)
+
+
+def sector_average(ev: Evaluation, layout, sector, component: str, layer: str | None = "media") -> float:
+    """Volume-weighted mean Cauchy stress component (``rr`` or ``tt``, current polar frame) in a sector.
+
+    Raises ``ValueError`` if no particle of ``layer`` lies in the sector (resolution too coarse).
+    """
+    idx = sector.members(layout, layer=layer)
+    if idx.size == 0:
+        raise ValueError(f"no {layer or ''} particle in the measurement region {sector} at dx = {layout.dx} um: "
+                         "the region must be at least about one particle spacing in size")
+    srr, stt, _, _ = cauchy_polar(ev)
+    values = {"rr": srr, "tt": stt}[component][idx]
+    w = layout.volume[idx]
+    return float(np.sum(w * values) / np.sum(w))
+
+
+def pool_probes(pool, length: float) -> dict:
+    """Measurement regions around a pool sector (all of length ``length`` um, fixed in physical size).
+
+    ``tip_low``/``tip_high``: the medial material just beyond each angular end, across
+    the pool's radial extent; ``top``/``bottom``: just outside the pool radially
+    (outer/inner side), centred on its mid-angle, ``length`` wide in arc.
+    """
+    from .geometry import Sector
+
+    R, th, t, w = pool.centre_radius, pool.centre_angle_deg, pool.radial_extent, pool.angular_extent_deg
+    arc = np.rad2deg(length / R)
+    return {
+        "tip_low": Sector(R, th - 0.5 * w - 0.5 * arc, t, arc),
+        "tip_high": Sector(R, th + 0.5 * w + 0.5 * arc, t, arc),
+        "top": Sector(R + 0.5 * t + 0.5 * length, th, length, arc),
+        "bottom": Sector(R - 0.5 * t - 0.5 * length, th, length, arc),
+    }

@@ -55,7 +55,10 @@ class Evaluation:
         loaded = np.linalg.norm(self.f_ext) + np.linalg.norm(self.reactions)
         q = np.empty(model.n)
         forces.pair_force_scale(model.layout.volume, model.nb.ptr, model.nb.a, self.P, q)
-        return float(max(loaded, 1e-3 * np.linalg.norm(q))) or 1.0
+        # floor for stress-free states: the force a stress of 1e-9 of the stiffest modulus exerts on a cell face
+        props = model.material(self.load)[0]
+        floor = 1e-9 * float(props[:, [0, 1]].sum(axis=1).max()) * model.layout.dx * np.sqrt(model.n)
+        return float(max(loaded, 1e-3 * np.linalg.norm(q), floor)) or 1.0
 
     @property
     def constraint_error(self) -> float:

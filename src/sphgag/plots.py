@@ -227,3 +227,71 @@ def fig1(particles: pd.DataFrame, mass_fractions: dict, support_factor: float, d
     axc.legend(frameon=False, fontsize=7, loc="upper left", bbox_to_anchor=(1.0, 1.0))
     fig.tight_layout()
     return fig
+
+
+def pool_geometry_panel(ax, particles: pd.DataFrame, case: dict, probe_length: float, title: str):
+    """Figure 4a: the pool (red), the media and adventitia around it, and the probe regions (outlines)."""
+    from .geometry import Sector
+    from .measure import pool_probes
+
+    pool = Sector(case["centre_radius_um"], case["centre_angle_deg"], case["radial_extent_um"],
+                  case["angular_extent_deg"])
+    th0 = np.deg2rad(pool.centre_angle_deg)
+    half = 0.5 * np.deg2rad(max(pool.angular_extent_deg, 3.0)) + 25.0 / pool.centre_radius
+    near = particles[np.abs(particles.theta_rad - th0) < half]
+    arc = (near.theta_rad - th0) * pool.centre_radius
+    in_pool = pool.contains(near.radius_um, near.theta_rad) & (near.layer == "media")
+    colours = np.where(in_pool, LAYER_COLOURS["GAG"], near.layer.map(LAYER_COLOURS).fillna("k"))
+    ax.scatter(arc, near.radius_um, s=6, c=colours, linewidths=0)
+    for name, box in pool_probes(pool, probe_length).items():
+        (r0, r1), (t0, t1) = box.r_range, box.theta_range
+        a0, a1 = (t0 - th0) * pool.centre_radius, (t1 - th0) * pool.centre_radius
+        ax.plot([a0, a1, a1, a0, a0], [r0, r0, r1, r1, r0], lw=0.7, color="k" if name.startswith("tip") else "0.45")
+    ax.set(title=title, xlabel="arc from pool centre (um)")
+    ax.set_aspect("equal")
+
+
+def swelling_panels(ax_tip, ax_top, runs: pd.DataFrame):
+    """Tip radial and top hoop stress against concentration, one line per pressure; intact values filled."""
+    for P, g in runs.groupby("pressure_mmHg"):
+        c = pressure_colour(P)
+        conv = g[g.stage == "converted"].sort_values("concentration_mEq_l")
+        intact = g[g.stage == "intact"]
+        ax_tip.plot(conv.concentration_mEq_l, conv.tip_radial_stress_kPa, "-o", color=c, ms=2.5, lw=1.0,
+                    label=f"{P:g} mmHg")
+        ax_top.plot(conv.concentration_mEq_l, conv.top_circ_stress_kPa, "-o", color=c, ms=2.5, lw=1.0)
+        ax_tip.plot(np.zeros(len(intact)), intact.tip_radial_stress_kPa, "o", color=c, ms=6, clip_on=False)
+        ax_top.plot(np.zeros(len(intact)), intact.top_circ_stress_kPa, "o", color=c, ms=6, clip_on=False)
+    ax_tip.axhline(0.0, color="0.7", lw=0.6)
+
+
+def fig4(tips: pd.DataFrame, particles: pd.DataFrame, cases: dict, probe_length: float):
+    """Figure 4: (a) the pools; (b) passive and (c) active tip radial and top hoop stress vs concentration."""
+    _style()
+    names = sorted(cases, key=lambda k: cases[k]["angular_extent_deg"])
+    models = [m for m in ("passive", "active") if m in set(tips.model)]
+    nrow = 1 + 2 * len(models)
+    fig, axes = plt.subplots(nrow, len(names), figsize=(3.0 * len(names), 2.3 * nrow), squeeze=False)
+    for j, name in enumerate(names):
+        pool_geometry_panel(axes[0, j], particles, cases[name], probe_length,
+                            f"(a) case {name}: {cases[name]['angular_extent_deg']:g} deg")
+    axes[0, 0].set_ylabel("radius (um)")
+    for i, model in enumerate(models):
+        letter = "bc"[i]
+        for j, name in enumerate(names):
+            ax_tip, ax_top = axes[1 + 2 * i, j], axes[2 + 2 * i, j]
+            runs = tips[(tips.model == model) & (tips.case == name)]
+            swelling_panels(ax_tip, ax_top, runs)
+            ax_tip.set_title(f"({letter}) {model}, case {name}")
+            ax_top.set_xlabel("GAG concentration (mEq/l)")
+        axes[1 + 2 * i, 0].set_ylabel("tip radial stress (kPa)")
+        axes[2 + 2 * i, 0].set_ylabel("top hoop stress (kPa)")
+    # shared y-limits per row make the cases comparable
+    for row in axes[1:]:
+        lo = min(ax.get_ylim()[0] for ax in row)
+        hi = max(ax.get_ylim()[1] for ax in row)
+        for ax in row:
+            ax.set_ylim(lo, hi)
+    axes[1, -1].legend(frameon=False, fontsize=7)
+    fig.tight_layout()
+    return fig

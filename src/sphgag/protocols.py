@@ -254,3 +254,82 @@ def bilayer_pressure_diameter(model: Model, tube: analytic.ThickWallTube, homeos
     profiles = pd.concat([transmural(model, s, tube, label) for s in saved.values()], ignore_index=True)
     curve = exact_curve(tube, np.linspace(0.0, cal["max_pressure_mmHg"], 201), r0, h0).assign(model=label)
     return PressureDiameter(table, profiles, curve, saved)
+
+
+# ---------------------------------------------------------------------------
+# GAG pool: conversion and Gibbs-Donnan swelling at fixed lumen pressure (section 2.6, figure 4)
+# ---------------------------------------------------------------------------
+
+
+def swelling_load(base: Load, conversion: float, concentration: float) -> Load:
+    """``base`` (a pressure-controlled state) with the pool's conversion fraction and GAG concentration."""
+    return base.with_material(conversion=float(conversion), concentration=float(concentration))
+
+
+def pool_measurements(model: Model, ev, pool, members: np.ndarray, probe_length: float) -> dict:
+    """Tip radial and top/bottom circumferential Cauchy stress around a pool (current polar frame).
+
+    Each value is the volume-weighted mean over a region of fixed physical size
+    (:func:`measure.pool_probes`): the medial material just beyond each angular
+    end of the pool across its radial extent (tips) and just outside it at its
+    mid-angle (top = outer side, bottom = inner side).
+    """
+    lay = model.layout
+    probes = measure.pool_probes(pool, probe_length)
+    tips = [measure.sector_average(ev, lay, probes[k], "rr") for k in ("tip_low", "tip_high")]
+    J = measure.cauchy_polar(ev)[3][members] if members.size else np.array([np.nan])
+    return dict(
+        tip_radial_stress_kPa=0.5 * (tips[0] + tips[1]),
+        tip_low_radial_stress_kPa=tips[0],
+        tip_high_radial_stress_kPa=tips[1],
+        top_circ_stress_kPa=measure.sector_average(ev, lay, probes["top"], "tt"),
+        bottom_circ_stress_kPa=measure.sector_average(ev, lay, probes["bottom"], "tt"),
+        pool_particles=int(members.size),
+        pool_mean_jacobian=float(np.mean(J)),
+        pool_max_jacobian=float(np.max(J)),
+    )
+
+
+def swell_pool(model: Model, start: solver.State, pool, numerics: dict, sw: dict, gag: dict) -> pd.DataFrame:
+    """Figure 4 protocol for one pool, from a converged pressurised state (lumen pressure held).
+
+    1. ``intact``: the wall before conversion (the filled markers of figure 4);
+    2. convert the pool's medial particles to GAG at c = 0 (``conversion_steps``
+       converged increments of the material homotopy of
+       :func:`materials.convert_to_gag`) and relax;
+    3. raise the fixed-charge concentration from 0 to ``max_concentration_mEq_l``
+       (``concentration_points`` converged states, c = 0 included).
+    The lumen pressure stays constant throughout: it is a follower pressure load
+    on the inner surface (pressure control), not a prescribed radius.
+    """
+    from .materials import swelling_pressure
+
+    run = model.name
+    opts = dict(run=run, on_state=log_state(run), **solver_options(numerics))
+    base = swelling_load(start.load, 0.0, 0.0)
+    members = model.props.pool  # the particles artery.BilayerMaterial converts
+    rows = []
+
+    def record(state, stage, c):
+        row = dict(stage=stage, concentration_mEq_l=c,
+                   swelling_pressure_kPa=float(swelling_pressure(c, gag["bath_concentration_mEq_l"], gag["temperature_K"])),
+                   pressure_mmHg=measure.carried_pressure(model, state.evaluation) / MMHG_TO_KPA)
+        row.update(pool_measurements(model, state.evaluation, pool, members, sw["probe_length_um"]))
+        row.update(residual=state.convergence.residual, newton_iterations=state.convergence.iterations,
+                   force_evaluations=state.convergence.force_evaluations, solve_seconds=state.convergence.seconds)
+        rows.append(row)
+
+    intact = solver.follow_path(model, start.x, base, [base], **opts)[-1]
+    record(intact, "intact", 0.0)
+    steps = sw["conversion_steps"]
+    log.info("[%s] converting %d medial particles to GAG in %d steps at %.1f mmHg", run, members.size, steps,
+             base.pressure_mmHg)
+    conv = solver.follow_path(model, intact.x, base,
+                              [swelling_load(base, f, 0.0) for f in np.linspace(0, 1, steps + 1)[1:]], **opts)[-1]
+    record(conv, "converted", 0.0)
+    cs = np.linspace(0.0, sw["max_concentration_mEq_l"], sw["concentration_points"])[1:]
+    log.info("[%s] swelling: c = %s mEq/l", run, ", ".join(f"{c:g}" for c in cs))
+    states = solver.follow_path(model, conv.x, conv.load, [swelling_load(base, 1.0, c) for c in cs], **opts)
+    for c, s in zip(cs, states):
+        record(s, "converted", float(c))
+    return pd.DataFrame(rows)

@@ -14,7 +14,8 @@ only when the relative residual is below a tolerance.
 (almost) unloaded state such as the axial-stretch ramp at zero pressure, a
 thousandth of the internal stress-flux scale ``q_i = V_i |P_i| sum_j |V_j
 A_i^-1 grad xi_ij|`` (for loaded states ``||q||`` is ~300 times the load, so
-the floor never loosens their criterion).
+the floor never loosens their criterion); a stress-free state is measured
+against the force a stress of 1e-9 of the stiffest modulus exerts on a cell.
 
 A load increment that does not converge is bisected (up to ``max_bisections``
 times). A state with NaN forces, an inverted particle (``det F <= 0``) or no

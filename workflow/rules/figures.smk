@@ -66,3 +66,44 @@ rule fig1:
         "../envs/sphgag.yaml"
     script:
         "../scripts/fig1.py"
+
+
+rule fig4:
+    """Figure 4: the pools, and the tip radial and top hoop stress against GAG concentration."""
+    input:
+        tips=rules.tip_stress.output[0],
+        particles=rules.homeostasis.output.particles,
+    output:
+        pdf="figures/fig4.pdf",
+        png="figures/fig4.png",
+    params:
+        cases=config["swelling"]["cases"],
+        probe_length=config["swelling"]["probe_length_um"],
+    log:
+        "logs/fig4.log",
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/fig4.py"
+
+
+rule claims:
+    """The paper's claims (figures 3-4) against our numbers, from the CSV tables alone."""
+    input:
+        mean=rules.calibrate_mean.output.states,
+        bilayer=rules.bilayer_table.output.table,
+        activation=rules.bilayer_table.output.activation,
+        layers=rules.homeostasis.output.layers,
+        transmural=rules.transmural.output[0],
+        tips=rules.tip_stress.output[0],
+    output:
+        table="results/claims.csv",
+        markdown="figures/claims.md",
+    params:
+        cases=config["swelling"]["cases"],
+    log:
+        "logs/claims.log",
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/claims.py"

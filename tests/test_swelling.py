@@ -1,0 +1,98 @@
+"""GAG pools: conversion, Gibbs-Donnan swelling at fixed pressure, tip and top stresses (figure 4)."""
+
+import numpy as np
+import pytest
+
+from sphgag import artery, geometry, materials, protocols, solver
+from sphgag.loading import MMHG_TO_KPA, Load
+
+RT = 8.314462618 * 310.0 / 1000.0  # kPa per mEq/l
+
+
+def test_swelling_pressure_of_the_configured_bath(full_config):
+    """c* = 300 mEq/l, T = 310 K: 0-150 mEq/l spans 0-91 kPa ('approximately 0-95 kPa')."""
+    g = full_config["gag"]
+    pi = materials.swelling_pressure(np.array([0.0, 75.0, 150.0]), g["bath_concentration_mEq_l"], g["temperature_K"])
+    assert pi[0] == 0.0
+    assert pi[1] == pytest.approx(RT * (np.sqrt(75.0**2 + 300.0**2) - 300.0), rel=1e-12)
+    assert pi[2] == pytest.approx(91.27, abs=0.01)
+
+
+def test_conversion_is_a_change_of_the_material_row_only():
+    p = materials.empty_props(3)
+    p[:, materials.MU], p[:, materials.LAM], p[:, materials.HG_E] = 42.0, 4700.0, 89.71
+    p[:, materials.GT], p[:, materials.GZ] = 1.9, 1.62
+    p[:, materials.GR] = 1 / (1.9 * 1.62)
+    materials.set_family(p, [0, 1, 2], 0, 0.47, 90.0, 261.4, 0.24, prestretch=1.2)
+    materials.convert_to_gag(p, [1], 1.0, 0.1, 89.71, 12.0)
+    assert p[1, materials.MU] == 0.1 and p[1, materials.LAM] == 0.0 and p[1, materials.PI] == 12.0
+    assert p[1, materials.GR] == p[1, materials.GT] == p[1, materials.GZ] == 1.0
+    assert p[1, materials.FAM0 + materials.PHI] == 0.0
+    assert np.array_equal(p[0], p[2])  # the other rows are untouched
+    half = p.copy()
+    materials.convert_to_gag(half, [0], 0.5, 0.1, 89.71)
+    assert np.isclose(half[0, materials.GR] * half[0, materials.GT] * half[0, materials.GZ], 1.0)  # det G = 1
+
+
+def pool_model(cfg, sector, name="test-pool"):
+    return artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=name, pool=sector, gag=cfg["gag"])
+
+
+def test_converted_unswollen_pool_in_an_unloaded_wall_is_in_equilibrium(ci_config):
+    """Without pre-stretch and pressure the wall is stress free; a GAG pool at c = 0 keeps it so."""
+    sector = artery.pool_sector(ci_config["swelling"]["cases"]["IV"])
+    model = pool_model(ci_config, sector)
+    assert model.props.pool.size > 0
+    load = Load(1.0, 0.0, material=(("activation", 0.0), ("concentration", 0.0), ("conversion", 1.0),
+                                    ("prestretch", 0.0)))
+    x, ev, conv = solver.newton(model, model.layout.X, load, tol=1e-6)
+    assert conv.iterations == 0
+    assert np.abs(ev.f_int).max() < 1e-9
+
+
+@pytest.fixture(scope="module")
+def pressurised(ci_config):
+    """Passive CI-resolution wall pressurised to 103 mmHg, the pool definitions still unused."""
+    numerics = ci_config["numerics"]
+    model = artery.bilayer_model(ci_config["bilayer"], numerics, name="test-pressurised")
+    h = protocols.homeostasis(model, numerics, ci_config["homeostasis"])
+    P_h = protocols.measure.carried_pressure(model, h.state.evaluation)
+    mat = h.state.load.material
+    return solver.follow_path(model, h.state.x, Load(1.0, P_h, material=mat), [Load(1.0, 103 * MMHG_TO_KPA, material=mat)],
+                              **protocols.solver_options(numerics))[-1]
+
+
+def swell(cfg, start, sector):
+    model = pool_model(cfg, sector)
+    table = protocols.swell_pool(model, solver.State(start.load, start.x, None, None), sector, cfg["numerics"],
+                                 cfg["swelling"], cfg["gag"])
+    return model, table
+
+
+def test_a_pool_of_zero_size_changes_nothing(ci_config, pressurised):
+    sector = geometry.Sector(663.0, 51.5, 15.0, 0.0)
+    model, table = swell(ci_config, pressurised, sector)
+    assert model.props.pool.size == 0
+    for col in ("tip_radial_stress_kPa", "top_circ_stress_kPa"):
+        assert np.allclose(table[col], table[col].iloc[0], rtol=1e-6, atol=1e-6)
+
+
+def test_swelling_keeps_the_lumen_pressure_and_converges(ci_config, pressurised):
+    _, table = swell(ci_config, pressurised, artery.pool_sector(ci_config["swelling"]["cases"]["I"]))
+    assert np.allclose(table.pressure_mmHg, 103.0)
+    assert (table.residual < ci_config["numerics"]["tolerance"]).all()
+    assert list(table.stage) == ["intact"] + ["converted"] * ci_config["swelling"]["concentration_points"]
+    conv = table[table.stage == "converted"]
+    # conversion alone: tip more compressive, top more tensile (figure 4 at c = 0)
+    assert conv.tip_radial_stress_kPa.iloc[0] < table.tip_radial_stress_kPa.iloc[0]
+    assert conv.top_circ_stress_kPa.iloc[0] > table.top_circ_stress_kPa.iloc[0]
+    # swelling raises the tip radial stress monotonically
+    assert np.all(np.diff(conv.tip_radial_stress_kPa) > 0)
+
+
+def test_a_pool_at_45_degrees_stresses_both_tips_alike(ci_config, pressurised):
+    """The layout is mirror symmetric about 45 deg, so both tips must agree (to 1e-6 of their magnitude)."""
+    case = dict(ci_config["swelling"]["cases"]["I"], centre_angle_deg=45.0)
+    _, table = swell(ci_config, pressurised, artery.pool_sector(case))
+    lo, hi = table.tip_low_radial_stress_kPa, table.tip_high_radial_stress_kPa
+    assert np.abs(lo - hi).max() <= 1e-6 * np.abs(lo).max()

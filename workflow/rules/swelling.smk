@@ -1,0 +1,51 @@
+import re
+
+SW = config["swelling"]
+CASES = list(SW["cases"])
+SWELL_PRESSURES = [f"{p:g}" for p in SW["pressures_mmHg"]]
+SWELL_SETTINGS = {k: v for k, v in SW.items() if k not in ("cases", "models", "pressures_mmHg")}
+SWELL_RUNS = expand("results/swelling/runs/{model}_{case}_{pressure}mmHg.csv", model=SW["models"], case=CASES,
+                    pressure=SWELL_PRESSURES)
+
+
+wildcard_constraints:
+    case="|".join(re.escape(c) for c in CASES),
+    pressure="|".join(re.escape(p) for p in SWELL_PRESSURES),
+
+
+rule swell:
+    """One GAG pool ({case}) in the {model} wall at {pressure} mmHg: conversion, then swelling 0-150 mEq/l."""
+    input:
+        code=SPHGAG,
+        state="results/states/{model}_{pressure}mmHg.npz",
+    output:
+        table="results/swelling/runs/{model}_{case}_{pressure}mmHg.csv",
+        provenance="results/provenance/swell_{model}_{case}_{pressure}mmHg.json",
+    params:
+        state_slice=lambda wildcards: dict(PRESSURISED_SLICE, model=wildcards.model),
+        pool=lambda wildcards: SW["cases"][wildcards.case],
+        settings=SWELL_SETTINGS,
+        gag=config["gag"],
+    log:
+        "logs/swell/{model}_{case}_{pressure}mmHg.log",
+    benchmark:
+        "results/benchmarks/swell_{model}_{case}_{pressure}mmHg.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    script:
+        "../scripts/swell.py"
+
+
+rule tip_stress:
+    """All swelling runs in one tidy table (figure 4)."""
+    input:
+        SWELL_RUNS,
+    output:
+        "results/swelling/tip_stress.csv",
+    log:
+        "logs/tip_stress.log",
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/concat_tables.py"
