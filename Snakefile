@@ -22,8 +22,12 @@ validate(config, Path(workflow.basedir, "config", "schema.yaml"))
 config = canonical(config)
 
 # Snakemake tracks a rule's script, not the modules it imports: every simulation
-# rule depends on the package sources, so a physics edit reruns what it affects.
-SPHGAG = sorted(str(p) for p in Path(SRC, "sphgag").glob("*.py"))
+# rule depends on the package's physics sources, so a physics edit reruns what it
+# affects; figure and claims rules depend on their own modules only.
+PRESENTATION = {"plots.py", "claims.py"}
+SPHGAG = sorted(str(p) for p in Path(SRC, "sphgag").glob("*.py") if p.name not in PRESENTATION)
+PLOTS = str(Path(SRC, "sphgag", "plots.py"))
+CLAIMS = str(Path(SRC, "sphgag", "claims.py"))
 
 
 include: "workflow/rules/calibration.smk"

@@ -96,3 +96,23 @@ def test_a_pool_at_45_degrees_stresses_both_tips_alike(ci_config, pressurised):
     _, table = swell(ci_config, pressurised, artery.pool_sector(case))
     lo, hi = table.tip_low_radial_stress_kPa, table.tip_high_radial_stress_kPa
     assert np.abs(lo - hi).max() <= 1e-6 * np.abs(lo).max()
+
+
+def test_refining_changes_the_tip_stress_at_150_mEq_l_by_less_than_the_measured_bound(ci_config):
+    """dx = 8 -> 6 um (cases I and IV, passive, 103 mmHg): measured changes 8.9 and 7.3 kPa at 150 mEq/l
+    (full-resolution study, dx = 3 -> 2.5 um: 8.0 and 3.4 kPa; README). Bound: 20 kPa."""
+    out = {}
+    for dx in (8.0, 6.0):
+        cfg = dict(ci_config, bilayer=dict(ci_config["bilayer"], dx_um=dx),
+                   swelling=dict(ci_config["swelling"], concentration_points=4))
+        model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=f"refine-{dx}")
+        h = protocols.homeostasis(model, cfg["numerics"], cfg["homeostasis"])
+        P_h = protocols.measure.carried_pressure(model, h.state.evaluation)
+        mat = h.state.load.material
+        start = solver.follow_path(model, h.state.x, Load(1.0, P_h, material=mat),
+                                   [Load(1.0, 103 * MMHG_TO_KPA, material=mat)])[-1]
+        for case in ("I", "IV"):
+            _, table = swell(cfg, start, artery.pool_sector(cfg["swelling"]["cases"][case]))
+            out[dx, case] = table.tip_radial_stress_kPa.iloc[-1]
+    for case in ("I", "IV"):
+        assert abs(out[8.0, case] - out[6.0, case]) < 20.0

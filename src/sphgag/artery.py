@@ -156,7 +156,7 @@ class BilayerMaterial:
             c = load.material_value("concentration", 0.0)
             pi = float(materials.swelling_pressure(c, g["bath_concentration_mEq_l"], g["temperature_K"]))
             materials.convert_to_gag(out, self.pool, conversion, g["shear_modulus_kPa"], g["hourglass_modulus_kPa"],
-                                     pi)
+                                     pi, g.get("lame_lambda_kPa", 0.0))
         return out
 
 
@@ -170,11 +170,18 @@ def bilayer_model(p: dict, numerics: dict, name: str = "bilayer", pool: geometry
                   gag: dict | None = None) -> Model:
     """Bi-layered model (section 2.4.2, Table 2) in its in vivo reference configuration.
 
+    The radii ``aligned_radii_um`` inside the media are cell boundaries of the
+    particle layout (sub-layers of the media), so that a pool whose radial
+    edges are among them has exactly its thickness at every resolution.
+
     With ``pool`` (and the ``gag`` parameters), the medial particles inside that
     sector can be converted to GAG through the load's ``conversion`` and
     ``concentration``.
     """
-    layout = geometry.quarter_annulus(bilayer_interfaces(p), p["dx_um"], layer_names=LAYERS)
+    r0, border, r1 = bilayer_interfaces(p)
+    aligned = sorted(r for r in p["aligned_radii_um"] if r0 < r < border)
+    layout = geometry.quarter_annulus([r0, *aligned, border, r1], p["dx_um"],
+                                      layer_names=["media"] * (len(aligned) + 1) + ["adventitia"])
     nb = kernel.for_layout(layout, numerics["kernel_support_factor"])
     members = None if pool is None else pool.members(layout, layer="media")
     return Model(name, layout, nb, BilayerMaterial(p, layout, members, gag), numerics["hourglass_alpha"])

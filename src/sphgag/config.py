@@ -134,6 +134,9 @@ def _consistency(config: dict) -> list[str]:
     if bil:
         r_in = bil.get("inner_radius_um", 0)
         border = r_in + bil.get("media_thickness_um", 0)
+        for k, r in enumerate(bil.get("aligned_radii_um", [])):
+            if not r_in < r < border:
+                problems.append(f"bilayer.aligned_radii_um[{k}] = {r} is not inside the media ({r_in:g}-{border:g} um)")
         for name, pool in sw.get("cases", {}).items():
             lo = pool["centre_radius_um"] - pool["radial_extent_um"] / 2
             hi = pool["centre_radius_um"] + pool["radial_extent_um"] / 2

@@ -120,13 +120,16 @@ def quarter_annulus(interfaces, dx, layer_names=("wall",)) -> Layout:
 
     Parameters
     ----------
-    interfaces : radii ``[R_in, (interfaces...), R_out]`` in um.
+    interfaces : radii ``[R_in, (interfaces...), R_out]`` in um; every one is a cell boundary.
     dx : target particle spacing in um (the resolution parameter ``dx_um``).
-    layer_names : one name per layer, inner to outer.
+    layer_names : one name per interval, inner to outer; repeating a name splits a layer
+        into sub-layers (e.g. to align cell boundaries with the radial edges of a GAG pool).
     """
     interfaces = tuple(float(r) for r in interfaces)
     if len(layer_names) != len(interfaces) - 1:
         raise ValueError("need one layer name per layer (len(interfaces) - 1)")
+    # consecutive intervals may share a name: sub-layers of one material whose bounds are cell bounds
+    names = tuple(dict.fromkeys(layer_names))
     if any(b <= a for a, b in zip(interfaces, interfaces[1:])):
         raise ValueError(f"interfaces must increase strictly, got {interfaces}")
     if dx <= 0:
@@ -144,7 +147,7 @@ def quarter_annulus(interfaces, dx, layer_names=("wall",)) -> Layout:
         rad.append(np.full(n_theta, r))
         th.append(t)
         ring.append(np.full(n_theta, k))
-        layer.append(np.full(n_theta, layer_of_ring[k]))
+        layer.append(np.full(n_theta, names.index(layer_names[layer_of_ring[k]])))
         members.append(np.arange(start, start + n_theta))
         start += n_theta
 
@@ -165,7 +168,7 @@ def quarter_annulus(interfaces, dx, layer_names=("wall",)) -> Layout:
         ring_radius=radii,
         ring_cell=cells,
         interfaces=interfaces,
-        layer_names=tuple(layer_names),
+        layer_names=names,
         dx=float(dx),
         _ring_members=members,
     )

@@ -315,7 +315,7 @@ def tangent_modulus(f00, f01, f10, f11, lz, cth, sth, props, i, C, A):
                     A[2 * a_ + B, 2 * c + D] = v
 
 
-def convert_to_gag(props, rows, fraction, shear_modulus, hourglass_modulus, swelling_pressure=0.0):
+def convert_to_gag(props, rows, fraction, shear_modulus, hourglass_modulus, swelling_pressure=0.0, lame=0.0):
     """Turn ``rows`` of a property table a ``fraction`` of the way into GAG (eq. 2.27), in place.
 
     A GAG particle is the modified neo-Hookean solid ``mu_GAG`` (no bulk term,
@@ -334,7 +334,7 @@ def convert_to_gag(props, rows, fraction, shear_modulus, hourglass_modulus, swel
     g = (1.0 - s) * 10.0 ** (-4.0 * s)
     p = props[rows]
     p[:, MU] = g * p[:, MU] + (1.0 - g) * shear_modulus
-    p[:, LAM] *= g
+    p[:, LAM] = g * p[:, LAM] + (1.0 - g) * lame
     for col in (GR, GT, GZ):
         p[:, col] = p[:, col] ** g
     for k in range(MAX_FAMILIES):

@@ -93,15 +93,21 @@ def _check(model: Model, ev: Evaluation, run: str):
 
 def newton(model: Model, x0: np.ndarray, load: Load, *, tol: float = 1e-4, max_iter: int = 30,
            run: str | None = None) -> tuple[np.ndarray, Evaluation, Convergence]:
-    """Equilibrium at ``load`` starting from ``x0`` (Newton with exact Jacobian and line search)."""
+    """Equilibrium at ``load`` starting from ``x0``.
+
+    Newton's method with the exact Jacobian, a backtracking line search on
+    the residual norm and, when the line search has to cut the step hard
+    (soft, nearly singular modes such as a GAG pool), Levenberg-Marquardt
+    damping of the linear system (``J - m diag|J|``), relaxed again as soon as
+    full steps succeed. Damping only shapes the steps; a state is accepted on
+    the undamped residual alone.
+    """
     run = run or model.name
     t0 = time.perf_counter()
     x = x0.copy()
     ev = model.evaluate(x, load)
     _check(model, ev, run)
-    n_eval, n_jac = 1, 0
-    cons = ev.constrained
-    target = ev.target
+    n_eval, n_jac, damping = 1, 0, 0.0
     for it in range(max_iter + 1):
         rel = relative_residual(model, ev)
         if rel < tol and ev.constraint_error < 1e-9 * model.layout.outer_radius:
@@ -110,40 +116,68 @@ def newton(model: Model, x0: np.ndarray, load: Load, *, tol: float = 1e-4, max_i
             break
         data = model.jacobian(ev)
         n_jac += 1
-        # constrained particles: rows become k * (x - target) = 0, k a typical stiffness
-        d = data[model.block_diagonal]
-        diag = 0.5 * (np.abs(d[:, 0, 0]).mean() + np.abs(d[:, 1, 1]).mean())
-        rhs = -(ev.f_int + ev.f_ext)
-        if cons.size:
-            data[model.row_blocks(cons)] = 0.0
-            data[model.block_diagonal[cons]] = diag * np.eye(2)
-            rhs[cons] = diag * (target - x[cons])
-        merit0 = _merit(ev, diag)
-        try:
-            lu = spla.splu(model.block_matrix(data).tocsc(), permc_spec="NATURAL")
-        except RuntimeError as exc:  # exactly singular factor
-            raise NotConverged(run, load, f"singular Jacobian ({exc})") from exc
-        dx = lu.solve(rhs.ravel()).reshape(-1, 2)
-        # backtracking line search on the residual norm, along the Newton step bent onto
-        # the area-preserving radial map (see _radial_correction)
-        inner = model.layout.inner_surface
-        rho_in = np.linalg.norm(x[inner], axis=1)
-        r_in = rho_in.mean()
-        dr_in = float(np.mean((dx[inner] * x[inner]).sum(axis=1) / rho_in))
-        step = 1.0
-        for _ in range(30):
-            with np.errstate(invalid="ignore", over="ignore"):  # a trial step may be absurd; it is rejected
-                x_try = x + step * dx + _radial_correction(x, r_in, step * dr_in)
-                ev_try = model.evaluate(x_try, load)
-                n_eval += 1
-                if ev_try.min_det > 0.0 and ev_try.finite and _merit(ev_try, diag) <= (1.0 - 1e-4 * step) * merit0:
-                    break
-            step *= 0.5
-        else:
+        while True:
+            dx, scale = _newton_step(model, ev, data.copy(), damping, run)
+            step, ev_try, evals = _line_search(model, ev, dx, scale)
+            n_eval += evals
+            if step >= 0.125 or damping >= 1e4:
+                break
+            damping = max(10.0 * damping, 1e-4)  # steps cut hard: damp the soft modes and solve again
+            log.debug("[%s] newton %d: step %.3g, damping raised to %.0e", run, it, step, damping)
+        if ev_try is None:
             raise NotConverged(run, load, f"line search failed at Newton iteration {it} (relative residual {rel:.3g})")
-        log.debug("[%s] newton %d: residual %.3e, step %.3g, |dx|max %.3g", run, it, rel, step, np.abs(dx).max())
-        x, ev = x_try, ev_try
+        if step == 1.0:
+            damping = 0.0 if damping <= 1e-4 else 0.1 * damping
+        log.debug("[%s] newton %d: residual %.3e, step %.3g, damping %.0e, |dx|max %.3g", run, it, rel, step,
+                  damping, np.abs(dx).max())
+        x, ev = ev_try.x, ev_try
     raise NotConverged(run, load, f"no convergence in {max_iter} Newton iterations (relative residual {rel:.3g})")
+
+
+def _newton_step(model: Model, ev: Evaluation, data: np.ndarray, damping: float, run: str):
+    """Solve ``(J - damping diag|J|) dx = -(f_int + f_ext)``; constrained rows move to their targets.
+
+    Returns the step and the stiffness scale used for the constraint rows.
+    """
+    d = data[model.block_diagonal]
+    scale = 0.5 * (np.abs(d[:, 0, 0]).mean() + np.abs(d[:, 1, 1]).mean())
+    if damping:
+        for k in range(2):
+            data[model.block_diagonal, k, k] -= damping * np.abs(d[:, k, k])
+    rhs = -(ev.f_int + ev.f_ext)
+    cons = ev.constrained
+    if cons.size:
+        # constrained particles: rows become scale * (x - target) = 0
+        data[model.row_blocks(cons)] = 0.0
+        data[model.block_diagonal[cons]] = scale * np.eye(2)
+        rhs[cons] = scale * (ev.target - ev.x[cons])
+    try:
+        lu = spla.splu(model.block_matrix(data).tocsc(), permc_spec="NATURAL")
+    except RuntimeError as exc:  # exactly singular factor
+        raise NotConverged(run, ev.load, f"singular Jacobian ({exc})") from exc
+    return lu.solve(rhs.ravel()).reshape(-1, 2), scale
+
+
+def _line_search(model: Model, ev: Evaluation, dx: np.ndarray, scale: float, max_halvings: int = 30):
+    """Backtracking (Armijo) on the residual norm along the step bent onto the area-preserving radial map.
+
+    Returns ``(step, evaluation, evaluations used)``; the evaluation is None if no step was accepted.
+    """
+    x = ev.x
+    inner = model.layout.inner_surface
+    rho_in = np.linalg.norm(x[inner], axis=1)
+    r_in = rho_in.mean()
+    dr_in = float(np.mean((dx[inner] * x[inner]).sum(axis=1) / rho_in))
+    merit0 = _merit(ev, scale)
+    step = 1.0
+    for k in range(1, max_halvings + 1):
+        with np.errstate(invalid="ignore", over="ignore"):  # a trial step may be absurd; it is rejected
+            x_try = x + step * dx + _radial_correction(x, r_in, step * dr_in)
+            ev_try = model.evaluate(x_try, ev.load)
+            if ev_try.min_det > 0.0 and ev_try.finite and _merit(ev_try, scale) <= (1.0 - 1e-4 * step) * merit0:
+                return step, ev_try, k
+        step *= 0.5
+    return 0.0, None, max_halvings
 
 
 def _radial_correction(x, r_in, dr):

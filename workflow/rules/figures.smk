@@ -1,6 +1,7 @@
 rule fig3a_mean:
     """Figure 3a for the mean-behaviour model: pressure-outer diameter and mean stress-stretch."""
     input:
+        code=PLOTS,
         states=rules.calibrate_mean.output.states,
         exact=rules.calibrate_mean.output.exact,
     output:
@@ -17,6 +18,7 @@ rule fig3a_mean:
 rule fig3b:
     """Figure 3b: transmural radial and circumferential stress of the mean model at 103, 145, 200 mmHg."""
     input:
+        code=PLOTS,
         profiles=rules.transmural.output[0],
     output:
         pdf="figures/fig3b.pdf",
@@ -32,6 +34,7 @@ rule fig3b:
 rule fig3:
     """Figure 3, complete: mean, passive and active models (pressure-diameter, stress-stretch, transmural)."""
     input:
+        code=PLOTS,
         mean_states=rules.calibrate_mean.output.states,
         mean_exact=rules.calibrate_mean.output.exact,
         bilayer=rules.bilayer_table.output.table,
@@ -52,6 +55,7 @@ rule fig3:
 rule fig1:
     """Figure 1: particle layout of the bi-layered model, the kernel, the layer composition."""
     input:
+        code=PLOTS,
         particles=rules.homeostasis.output.particles,
     output:
         pdf="figures/fig1.pdf",
@@ -71,6 +75,7 @@ rule fig1:
 rule fig4:
     """Figure 4: the pools, and the tip radial and top hoop stress against GAG concentration."""
     input:
+        code=PLOTS,
         tips=rules.tip_stress.output[0],
         particles=rules.homeostasis.output.particles,
     output:
@@ -90,6 +95,7 @@ rule fig4:
 rule claims:
     """The paper's claims (figures 3-4) against our numbers, from the CSV tables alone."""
     input:
+        code=CLAIMS,
         mean=rules.calibrate_mean.output.states,
         bilayer=rules.bilayer_table.output.table,
         activation=rules.bilayer_table.output.activation,
