@@ -25,9 +25,10 @@ config = canonical(config)
 # rule depends on the package's physics sources, so a physics edit reruns what it
 # affects; figure and claims rules depend on their own modules only.
 PRESENTATION = {"plots.py", "claims.py"}
-SPHGAG = sorted(str(p) for p in Path(SRC, "sphgag").glob("*.py") if p.name not in PRESENTATION)
-PLOTS = str(Path(SRC, "sphgag", "plots.py"))
-CLAIMS = str(Path(SRC, "sphgag", "claims.py"))
+# (relative to the working directory, so that moving or re-cloning the checkout reruns nothing)
+SPHGAG = sorted(os.path.relpath(p) for p in Path(SRC, "sphgag").glob("*.py") if p.name not in PRESENTATION)
+PLOTS = os.path.relpath(Path(SRC, "sphgag", "plots.py"))
+CLAIMS = os.path.relpath(Path(SRC, "sphgag", "claims.py"))
 
 
 include: "workflow/rules/calibration.smk"

@@ -7,7 +7,7 @@ from sphgag import artery, materials, protocols, state
 from sphgag.loading import MMHG_TO_KPA, Load
 from sphgag.state import StateMismatch
 
-# Bounds at the CI resolution (dx = 8 um, 786 particles), from measured values:
+# Bounds at the CI resolution (dx = 8 um, 915 particles), from measured values:
 # carried pressure 104.7 mmHg (semi-analytical 104.6, target 103); hoop stress (max - min)/mean
 # 6.0 % in the media and 0.03 % in the adventitia; OD within 0.07 % of the semi-analytical tube over
 # 60-200 mmHg. The full resolution (README) is as good or better.

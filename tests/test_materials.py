@@ -29,7 +29,7 @@ def mixture_props(active=0.0):
 
 
 def gag_props():
-    """GAG: soft neo-Hookean with a Gibbs-Donnan swelling pressure (eq. 2.27)."""
+    """GAG: soft neo-Hookean with a Gibbs-Donnan swelling pressure (eq. 2.27; c* = 150 here, any value will do)."""
     p = mt.empty_props(1)
     p[:, mt.MU] = 0.1
     p[:, mt.PI] = float(mt.swelling_pressure(100.0, 150.0))

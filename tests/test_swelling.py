@@ -103,8 +103,7 @@ def test_refining_changes_the_tip_stress_at_150_mEq_l_by_less_than_the_measured_
     (full-resolution study, dx = 3 -> 2.5 um: 8.0 and 3.4 kPa; README). Bound: 20 kPa."""
     out = {}
     for dx in (8.0, 6.0):
-        cfg = dict(ci_config, bilayer=dict(ci_config["bilayer"], dx_um=dx),
-                   swelling=dict(ci_config["swelling"], concentration_points=4))
+        cfg = dict(ci_config, bilayer=dict(ci_config["bilayer"], dx_um=dx))
         model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=f"refine-{dx}")
         h = protocols.homeostasis(model, cfg["numerics"], cfg["homeostasis"])
         P_h = protocols.measure.carried_pressure(model, h.state.evaluation)

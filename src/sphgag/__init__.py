@@ -8,7 +8,7 @@ after a hash of this package's sources (:data:`CODE_HASH`). Numba only
 invalidates a cached kernel when *its own* file changes, not when a function
 it calls (e.g. a material law) changes; keying the cache directory by the
 whole package's sources makes every physics edit recompile what it affects.
-Set ``NUMBA_CACHE_DIR`` yourself to override.
+A ``NUMBA_CACHE_DIR`` of your own is used as the parent of that directory.
 """
 
 from __future__ import annotations
@@ -33,9 +33,10 @@ def _source_hash() -> str:
 
 CODE_HASH = _source_hash()
 
-if "NUMBA_CACHE_DIR" not in os.environ:
-    _base = Path(os.environ.get("XDG_CACHE_HOME", Path.home() / ".cache"))
-    os.environ["NUMBA_CACHE_DIR"] = str(_base / "sphgag" / f"numba-{CODE_HASH[:16]}")
+_KEY = f"sphgag-numba-{CODE_HASH[:16]}"
+_base = os.environ.get("NUMBA_CACHE_DIR") or str(Path(os.environ.get("XDG_CACHE_HOME", Path.home() / ".cache")))
+if not _base.rstrip("/").endswith(_KEY):
+    os.environ["NUMBA_CACHE_DIR"] = str(Path(_base) / _KEY)
     if "numba" in sys.modules:  # numba read its configuration already
         from numba.core import config as _numba_config
 

@@ -83,11 +83,12 @@ class Mixture:
     lmin: float = 0.6
 
     def active(self, lt):
+        """Active circumferential Cauchy stress T(lt) of eq. (2.24), clipped at zero."""
         u = (self.lmax - lt) / (self.lmax - self.lmin)
         return np.maximum(self.tmax * lt * (1.0 - u * u), 0.0)
 
     def hoop_minus_radial(self, lt, lz):
-        """``sigma_tt - sigma_rr`` at circumferential stretch ``lt`` and axial stretch ``lz``."""
+        """``sigma_tt - sigma_rr`` at circumferential stretch ``lt`` and axial stretch ``lz`` (eqs. 2.21-2.24)."""
         lt = np.asarray(lt, dtype=float)
         lr = 1.0 / (lt * lz)
         out = self.mu * ((self.Gt * lt) ** 2 - (self.Gr * lr) ** 2)
@@ -109,14 +110,6 @@ class ThickWallState:
     radial_stress: np.ndarray
     circ_stress: np.ndarray
     layer: np.ndarray = field(default=None)
-
-    @property
-    def outer_diameter(self):
-        return 2.0 * self.r_out
-
-    @property
-    def inner_diameter(self):
-        return 2.0 * self.r_in
 
 
 class ThickWallTube:

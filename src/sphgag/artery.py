@@ -156,7 +156,7 @@ class BilayerMaterial:
             c = load.material_value("concentration", 0.0)
             pi = float(materials.swelling_pressure(c, g["bath_concentration_mEq_l"], g["temperature_K"]))
             materials.convert_to_gag(out, self.pool, conversion, g["shear_modulus_kPa"], g["hourglass_modulus_kPa"],
-                                     pi, g.get("lame_lambda_kPa", 0.0))
+                                     pi, g["lame_lambda_kPa"])
         return out
 
 

@@ -103,11 +103,10 @@ def validate(config: dict, schema_path) -> dict:
 def _consistency(config: dict) -> list[str]:
     """Relations between keys that a JSON schema cannot express."""
     problems = []
-    for model in ("mean",):
-        m = config.get(model, {})
-        if m.get("outer_radius_um", 0) <= m.get("inner_radius_um", 0):
-            problems.append(f"{model}.outer_radius_um = {m.get('outer_radius_um')} must exceed "
-                            f"{model}.inner_radius_um = {m.get('inner_radius_um')}")
+    m = config.get("mean", {})
+    if m.get("outer_radius_um", 0) <= m.get("inner_radius_um", 0):
+        problems.append(f"mean.outer_radius_um = {m.get('outer_radius_um')} must exceed "
+                        f"mean.inner_radius_um = {m.get('inner_radius_um')}")
     for section, key in (("calibration", "transmural_pressures_mmHg"), ("bilayer_calibration", "state_pressures_mmHg"),
                          ("bilayer_calibration", "activation_pressure_mmHg")):
         cal = config.get(section, {})

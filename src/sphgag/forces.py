@@ -126,8 +126,8 @@ def forces_and_stresses(x, ptr, ext, a, pair_ptr, pair_j, pair_geo, pair_hgc, so
             if extra.shape[0]:
                 for k in range(4):
                     FP[i, 4 + k] += extra[i, k]
-        else:
-            dmin = -np.inf if det != det else min(dmin, det)
+        else:  # inverted (or NaN, which the caller detects from the positions and stresses)
+            dmin = min(dmin, det)
             FP[i, 4] = FP[i, 5] = FP[i, 6] = FP[i, 7] = np.nan
     fe[:, :] = 0.0
     for i in range(n):
@@ -242,7 +242,7 @@ def _pattern_pairs(ptr, nbr, map_ptr, rows, cols):
 
 @njit(cache=True, fastmath=True, error_model="numpy")
 def jacobian_blocks(x, V, ptr, nbr, mir, a, s, R, hgc, F, lz, cth, sth, props, blockmap, map_ptr, data):
-    """Add ``d(f_int + f_hg)/dx`` to the 2 x 2 blocks ``data`` (same pattern as :func:`block_pattern`).
+    """Add ``d(f_int + f_hg)/dx`` (eqs. 2.11, 2.14-2.15) to the 2 x 2 blocks ``data`` (:func:`block_pattern`).
 
     Elastic part: ``-sum_i V_i B_i^T A_i B_i`` with ``F_i = sum_p (M_p x_p) (x) b_p``
     (node 0 = i with b = -s_i, node k = entry k with b = a_ik). Hourglass part:

@@ -211,8 +211,3 @@ class Sector:
         if layer is not None:
             mask &= layout.layer_mask(layer)
         return np.flatnonzero(mask)
-
-    @property
-    def area(self):
-        (r0, r1) = self.r_range
-        return 0.5 * (r1 * r1 - r0 * r0) * np.deg2rad(self.angular_extent_deg)

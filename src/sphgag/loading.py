@@ -112,7 +112,11 @@ def lumen_area_gradient(x, idx, grad):
 
 
 def pressure_forces(x, inner, pressure_kPa, lz):
-    """External nodal forces of the lumen pressure, ``P lz dA/dx`` (all particles, zeros off the surface)."""
+    """External nodal forces of the lumen pressure, ``P lz dA/dx`` (all particles, zeros off the surface).
+
+    No equation of the paper: the paper prescribes the inner radius (section 2.4.1)
+    and reads the pressure back; this is the pressure-control alternative.
+    """
     f = np.zeros_like(x)
     if pressure_kPa:
         g = np.empty((inner.size, 2))
@@ -122,7 +126,7 @@ def pressure_forces(x, inner, pressure_kPa, lz):
 
 
 def add_pressure_stiffness(data, blocks_of, inner, pressure_kPa, lz):
-    """Add d(P lz dA/dx)/dx to Jacobian blocks; ``blocks_of(p, q)`` gives a block index.
+    """Add d(P lz dA/dx)/dx to Jacobian blocks; ``blocks_of(p, q)`` gives a block index (no paper equation).
 
     d(dA/dx_k)/dy_{k+1} = 1/2, d(dA/dx_k)/dy_{k-1} = -1/2, d(dA/dy_k)/dx_{k-1} = 1/2,
     d(dA/dy_k)/dx_{k+1} = -1/2; the mirror closures add d(dA/dx)/dy = 1/2 at the

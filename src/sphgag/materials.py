@@ -53,7 +53,10 @@ def empty_props(n: int) -> np.ndarray:
 
 
 def set_family(props, rows, k, phi, alpha_deg, c1p, c2p, c1m=None, c2m=None, prestretch=1.0):
-    """Fill fibre family ``k`` of the given rows (``c1m, c2m`` default to the tension constants)."""
+    """Fill fibre family ``k`` of the given rows (eqs. 2.19, 2.22; Table 1/2 constants).
+
+    ``c1m, c2m`` (compression, I4 < 1) default to the tension constants.
+    """
     if not 0 <= k < MAX_FAMILIES:
         raise ValueError(f"fibre family index {k} outside 0..{MAX_FAMILIES - 1}")
     base = FAM0 + k * FAM_STRIDE
@@ -132,7 +135,7 @@ def _fibre_terms(I4, c1p, c2p, c1m, c2m):
 
 @njit(cache=True, fastmath=True, error_model="numpy", inline="always")
 def _fibre_slope(I4, c1p, c2p, c1m, c2m):
-    """W'(I4) = c1/2 (I4 - 1) exp[c2 (I4 - 1)^2] alone (the stress needs nothing else)."""
+    """W'(I4) = c1/2 (I4 - 1) exp[c2 (I4 - 1)^2] alone (eqs. 2.20, 2.22; the stress needs nothing else)."""
     E = I4 - 1.0
     if E >= 0.0:
         return 0.5 * c1p * E * np.exp(c2p * E * E)
@@ -189,6 +192,8 @@ def pk2(c_rr, c_tt, c_rt, lz, props, i):
 @njit(cache=True, fastmath=True, error_model="numpy")
 def material_tangent(c_rr, c_tt, c_rt, lz, props, i, C):
     """Material tangent ``2 dS/dC`` of particle ``i`` into ``C`` (3 x 3, Voigt order rr, tt, rt).
+
+    The derivative of the stress of :func:`pk2` (eqs. 2.20-2.24, 2.27).
 
     Elastin + swelling: ``(LAM - PI J) C^-1 (x) C^-1 + 2 beta I_{C^-1}`` with
     ``beta = MU - LAM ln J + PI J`` and ``I_{C^-1}`` the symmetrised identity on C^-1;
@@ -282,7 +287,7 @@ _VOIGT = np.array([[0, 2], [2, 1]])
 def tangent_modulus(f00, f01, f10, f11, lz, cth, sth, props, i, C, A):
     """First elasticity tensor ``A[2a+B, 2c+D] = dP_aB / dF_cD`` of particle ``i``, global x-y.
 
-    ``A_aBcD = delta_ac S_BD + F_aE (2 dS/dC)_EBFD F_cF`` evaluated with the
+    ``A_aBcD = delta_ac S_BD + F_aE (2 dS/dC)_EBFD F_cF`` (eq. 2.10 differentiated) evaluated with the
     reference indices in the local frame, then rotated. ``C``: (3, 3) scratch.
     """
     l00, l01, l10, l11, c_rr, c_tt, c_rt = local_deformation(f00, f01, f10, f11, cth, sth)
@@ -318,9 +323,10 @@ def tangent_modulus(f00, f01, f10, f11, lz, cth, sth, props, i, C, A):
 def convert_to_gag(props, rows, fraction, shear_modulus, hourglass_modulus, swelling_pressure=0.0, lame=0.0):
     """Turn ``rows`` of a property table a ``fraction`` of the way into GAG (eq. 2.27), in place.
 
-    A GAG particle is the modified neo-Hookean solid ``mu_GAG`` (no bulk term,
-    no deposition stretch, no fibres, no active tone) plus the Gibbs-Donnan
-    swelling pressure ``Pi``: Cauchy stress ``mu_GAG (B - I)/J - Pi I``.
+    A GAG particle is the modified neo-Hookean solid ``mu_GAG`` (no deposition
+    stretch, no fibres, no active tone) plus the Gibbs-Donnan swelling pressure
+    ``Pi``: Cauchy stress ``mu_GAG (B - I)/J - Pi I`` (eq. 2.27), plus the bulk
+    term ``lame ln J / J`` if ``lame > 0`` (not in eq. 2.27; docs/physics.md).
     Conversion is a change of the particle's row, nothing else. For
     ``0 < fraction < 1`` the row is a homotopy that the quasi-static solver can
     follow in steps: the original constituents keep a weight ``g`` that falls

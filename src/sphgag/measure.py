@@ -15,7 +15,7 @@ from .model import Evaluation, Model
 
 
 def cauchy_polar(ev: Evaluation):
-    """``(sigma_rr, sigma_tt, sigma_rt, J)`` of every particle in its current polar frame."""
+    """``(sigma_rr, sigma_tt, sigma_rt, J)`` of every particle in its current polar frame (eq. 2.10)."""
     F, P, x = ev.F, ev.P, ev.x
     lz = ev.load.axial_stretch
     det = F[:, 0, 0] * F[:, 1, 1] - F[:, 0, 1] * F[:, 1, 0]

@@ -100,7 +100,7 @@ class Model:
     # -- material -----------------------------------------------------------
     def material(self, load: Load):
         """Property table, hourglass coefficients (eq. 2.14) and packed pair data for ``load``, cached."""
-        key = load.material if callable(self.props) else None
+        key = (load.material if callable(self.props) else None, self.hourglass_alpha)
         if "props" not in self._cache or self._cache["key"] != key:
             props = np.ascontiguousarray(self.props(load) if callable(self.props) else self.props)
             hgc = np.empty(self.nb.n_entries)
@@ -112,8 +112,8 @@ class Model:
         return self._cache["props"], self._cache["hgc"], self._cache["pairs"]
 
     def set_props(self, props) -> None:
-        """Replace the property table (e.g. after converting particles to GAG)."""
-        self.props = props
+        """Replace the property table (a copy is kept: edit tables through this method, not in place)."""
+        self.props = props if callable(props) else np.array(props, dtype=float)
         self._cache.clear()
 
     # -- boundary conditions --------------------------------------------------

@@ -115,9 +115,8 @@ def finite_or_raise(df: pd.DataFrame, columns, what: str):
         raise ValueError(f"{what}: non-finite values in {bad}; refusing to draw a figure from them")
 
 
-MODEL_STYLE = {"mean": dict(color="k", marker="o", ls="-"), "passive": dict(color="k", marker="o", ls="-"),
-               "active": dict(color="0.55", marker="^", ls="--")}
-LAYER_COLOURS = {"media": "#3b6fb6", "adventitia": "#2e9e5b", "wall": "#3b6fb6", "GAG": "#d1352b"}
+MODEL_STYLE = {"passive": dict(color="k", marker="o", ls="-"), "active": dict(color="0.55", marker="^", ls="--")}
+LAYER_COLOURS = {"media": "#3b6fb6", "adventitia": "#2e9e5b", "GAG": "#d1352b"}
 
 
 def bilayer_pressure_diameter_panels(ax_pd, ax_ss, table: pd.DataFrame, exact: dict):
@@ -231,11 +230,10 @@ def fig1(particles: pd.DataFrame, mass_fractions: dict, support_factor: float, d
 
 def pool_geometry_panel(ax, particles: pd.DataFrame, case: dict, probe_length: float, title: str):
     """Figure 4a: the pool (red), the media and adventitia around it, and the probe regions (outlines)."""
-    from .geometry import Sector
+    from .artery import pool_sector
     from .measure import pool_probes
 
-    pool = Sector(case["centre_radius_um"], case["centre_angle_deg"], case["radial_extent_um"],
-                  case["angular_extent_deg"])
+    pool = pool_sector(case)
     th0 = np.deg2rad(pool.centre_angle_deg)
     half = 0.5 * np.deg2rad(max(pool.angular_extent_deg, 3.0)) + 25.0 / pool.centre_radius
     near = particles[np.abs(particles.theta_rad - th0) < half]

@@ -188,11 +188,13 @@ def homeostasis(model: Model, numerics: dict, homeo: dict, x0=None, start: Load 
     run = model.name
     R0 = model.layout.inner_radius
     steps = homeo["prestretch_steps"]
+    if (start is None) != (x0 is None):
+        raise ValueError("give both x0 and start (the passive homeostatic state), or neither")
     if start is None:
         start, x0 = homeostatic_load(R0, 0.0), model.layout.X
         loads = [homeostatic_load(R0, s) for s in np.linspace(0.0, 1.0, steps + 1)[1:]]
     else:
-        loads = [homeostatic_load(R0, 1.0, a) for a in np.linspace(0.0, activation, steps + 1)[1:]]
+        loads = [start.with_material(activation=float(a)) for a in np.linspace(0.0, activation, steps + 1)[1:]]
     log.info("[%s] %d particles; ramping %s in %d steps at inner radius %.1f um", run, model.n,
              "the deposition pre-stretches" if activation == 0.0 else "the active tone", steps, R0)
     state = solver.follow_path(model, x0, start, loads, run=run, on_state=log_state(run),

@@ -85,6 +85,8 @@ def relative_residual(model: Model, ev: Evaluation) -> float:
 
 
 def _check(model: Model, ev: Evaluation, run: str):
+    if not np.isfinite(ev.x).all():
+        raise Diverged(run, ev.load, "non-finite positions")
     if ev.min_det <= 0.0:
         raise Inverted(run, ev.load, f"particle inversion (min det F = {ev.min_det:.3g})")
     if not ev.finite:

@@ -1,5 +1,10 @@
 # Configuration slices that saved states depend on: a later rule refuses a state made with others.
-HOMEOSTATIC_SLICE = {k: config[k] for k in ("bilayer", "numerics", "homeostasis")}
+# (homeostasis.target_pressure_mmHg is only a reference value: it is not part of the slice)
+HOMEOSTATIC_SLICE = {
+    "bilayer": config["bilayer"],
+    "numerics": config["numerics"],
+    "homeostasis": {k: v for k, v in config["homeostasis"].items() if k != "target_pressure_mmHg"},
+}
 PRESSURISED_SLICE = dict(HOMEOSTATIC_SLICE, bilayer_calibration=config["bilayer_calibration"])
 STATE_PRESSURES = [f"{p:g}" for p in config["bilayer_calibration"]["state_pressures_mmHg"]]
 
@@ -21,6 +26,7 @@ rule homeostasis:
         provenance="results/provenance/homeostasis.json",
     params:
         slice=HOMEOSTATIC_SLICE,
+        target_pressure=config["homeostasis"]["target_pressure_mmHg"],
     log:
         "logs/homeostasis.log",
     benchmark:

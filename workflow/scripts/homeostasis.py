@@ -5,7 +5,7 @@ import time
 import numba
 import pandas as pd
 
-from sphgag import artery, protocols, provenance, runlog, state
+from sphgag import artery, measure, protocols, provenance, runlog, state
 from sphgag.loading import MMHG_TO_KPA
 
 sm = snakemake  # noqa: F821
@@ -26,12 +26,12 @@ with runlog.run("homeostasis", sm.log[0]) as log:
         tube = artery.bilayer_tube(p, active=label == "active")
         semi = tube.pressure(model.layout.inner_radius) / MMHG_TO_KPA
         row = dict(model=label, carried_pressure_mmHg=h.pressures_kPa["reactions"] / MMHG_TO_KPA,
-                   inner_radius_um=protocols.measure.surface_radius(model, h.state.x, "inner"),
-                   outer_radius_um=protocols.measure.surface_radius(model, h.state.x, "outer"),
+                   inner_radius_um=measure.surface_radius(model, h.state.x, "inner"),
+                   outer_radius_um=measure.surface_radius(model, h.state.x, "outer"),
                    residual=h.state.convergence.residual,
                    inner_stress_pressure_mmHg=h.pressures_kPa["inner_radial_stress"] / MMHG_TO_KPA,
                    equilibrium_pressure_mmHg=h.pressures_kPa["hoop_equilibrium"] / MMHG_TO_KPA,
-                   semi_analytical_pressure_mmHg=semi, target_pressure_mmHg=homeo["target_pressure_mmHg"])
+                   semi_analytical_pressure_mmHg=semi, target_pressure_mmHg=sm.params.target_pressure)
         for _, ls in h.layers.iterrows():
             row[f"{ls.layer}_circ_stress_kPa"] = ls.circ_stress_mean_kPa
             row[f"{ls.layer}_circ_variation"] = ls.circ_variation
@@ -41,7 +41,7 @@ with runlog.run("homeostasis", sm.log[0]) as log:
         log.info("[homeostasis] %s: carried pressure %.2f mmHg from the reactions, %.2f from global equilibrium, "
                  "%.2f from the inner ring's radial stress; semi-analytical %.2f; target %.0f (%+.1f %%)", label,
                  row["carried_pressure_mmHg"], row["equilibrium_pressure_mmHg"], row["inner_stress_pressure_mmHg"],
-                 semi, homeo["target_pressure_mmHg"], 100 * (row["carried_pressure_mmHg"] / homeo["target_pressure_mmHg"] - 1))
+                 semi, sm.params.target_pressure, 100 * (row["carried_pressure_mmHg"] / sm.params.target_pressure - 1))
         for _, ls in h.layers.iterrows():
             log.info("[homeostasis] %s %s: circumferential stress %.1f kPa, (max - min)/mean over %d rings = %.1f %%",
                      label, ls.layer, ls.circ_stress_mean_kPa, ls.rings, 100 * ls.circ_variation)
@@ -50,7 +50,7 @@ with runlog.run("homeostasis", sm.log[0]) as log:
     pd.concat(profiles).to_csv(sm.output.profile, index=False)
     pd.concat(layers).to_csv(sm.output.layers, index=False)
     lay = model.layout
-    srr, stt, _, J = protocols.measure.cauchy_polar(passive.state.evaluation)
+    srr, stt, _, J = measure.cauchy_polar(passive.state.evaluation)
     pd.DataFrame(dict(x_um=lay.X[:, 0], y_um=lay.X[:, 1], radius_um=lay.radius, theta_rad=lay.theta, ring=lay.ring,
                       layer=[lay.layer_names[k] for k in lay.layer], volume_um2=lay.volume,
                       radial_stress_kPa=srr, circ_stress_kPa=stt, jacobian=J)).to_csv(sm.output.particles, index=False)
