@@ -21,8 +21,7 @@ import pandas as pd
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
-from sphgag import artery, config, protocols, solver  # noqa: E402
-from sphgag.loading import MMHG_TO_KPA, Load  # noqa: E402
+from sphgag import artery, config, protocols  # noqa: E402
 
 
 def main():
@@ -43,11 +42,7 @@ def main():
             pool = artery.pool_sector(sw["cases"][case])
             model = artery.bilayer_model(p, numerics, name=f"dx{dx:g}_{case}", pool=pool, gag=gag)
             h = protocols.homeostasis(model, numerics, cfg["homeostasis"])
-            P_h = protocols.measure.carried_pressure(model, h.state.evaluation)
-            material = h.state.load.material
-            start = solver.follow_path(model, h.state.x, Load(1.0, P_h, material=material),
-                                       [Load(1.0, args.pressure * MMHG_TO_KPA, material=material)],
-                                       **protocols.solver_options(numerics))[-1]
+            start = protocols.pressurise(model, h.state, args.pressure, numerics)
             table = protocols.swell_pool(model, start, pool, numerics, sw, gag)
             conv = table[table.stage == "converted"]
             first, last = conv.iloc[0], conv.iloc[-1]

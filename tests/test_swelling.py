@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from sphgag import artery, geometry, materials, protocols, solver
-from sphgag.loading import MMHG_TO_KPA, Load
+from sphgag.loading import Load
 
 RT = 8.314462618 * 310.0 / 1000.0  # kPa per mEq/l
 
@@ -56,10 +56,7 @@ def pressurised(ci_config):
     numerics = ci_config["numerics"]
     model = artery.bilayer_model(ci_config["bilayer"], numerics, name="test-pressurised")
     h = protocols.homeostasis(model, numerics, ci_config["homeostasis"])
-    P_h = protocols.measure.carried_pressure(model, h.state.evaluation)
-    mat = h.state.load.material
-    return solver.follow_path(model, h.state.x, Load(1.0, P_h, material=mat), [Load(1.0, 103 * MMHG_TO_KPA, material=mat)],
-                              **protocols.solver_options(numerics))[-1]
+    return protocols.pressurise(model, h.state, 103.0, numerics)
 
 
 def swell(cfg, start, sector):
@@ -106,10 +103,7 @@ def test_refining_changes_the_tip_stress_at_150_mEq_l_by_less_than_the_measured_
         cfg = dict(ci_config, bilayer=dict(ci_config["bilayer"], dx_um=dx))
         model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=f"refine-{dx}")
         h = protocols.homeostasis(model, cfg["numerics"], cfg["homeostasis"])
-        P_h = protocols.measure.carried_pressure(model, h.state.evaluation)
-        mat = h.state.load.material
-        start = solver.follow_path(model, h.state.x, Load(1.0, P_h, material=mat),
-                                   [Load(1.0, 103 * MMHG_TO_KPA, material=mat)])[-1]
+        start = protocols.pressurise(model, h.state, 103.0, cfg["numerics"])
         for case in ("I", "IV"):
             _, table = swell(cfg, start, artery.pool_sector(cfg["swelling"]["cases"][case]))
             out[dx, case] = table.tip_radial_stress_kPa.iloc[-1]

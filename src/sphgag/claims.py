@@ -96,6 +96,18 @@ def calibration_claims(mean: pd.DataFrame, bilayer: pd.DataFrame, activation: pd
     return out
 
 
+def _monotone_groups(table: pd.DataFrame, ordered: list, holds) -> tuple[int, int]:
+    """(groups where ``holds(rows ordered by pool size)``, groups with more than one pool) per model and pressure."""
+    hits = groups = 0
+    for _, g in table.groupby(["model", "pressure_mmHg"]):
+        g = g.set_index("case")
+        g = g.loc[[c for c in ordered if c in g.index]]
+        if len(g) > 1:
+            groups += 1
+            hits += bool(holds(g))
+    return hits, groups
+
+
 def swelling_claims(tips: pd.DataFrame, cases: dict) -> list[Claim]:
     """Claims of figure 4 and section 3 from ``tip_stress.csv``; ``cases`` gives each pool's angular extent."""
     out = []
@@ -109,12 +121,8 @@ def swelling_claims(tips: pd.DataFrame, cases: dict) -> list[Claim]:
     d = conv0.set_index(key)[["tip_radial_stress_kPa", "top_circ_stress_kPa"]] - \
         intact.set_index(key)[["tip_radial_stress_kPa", "top_circ_stress_kPa"]]
     signs = (d.tip_radial_stress_kPa < 0) & (d.top_circ_stress_kPa > 0)
-    grow, groups = 0, 0
-    for _, g in d.reset_index().groupby(["model", "pressure_mmHg"]):
-        g = g.set_index("case").loc[[c for c in ordered if c in set(g.case)]]
-        if len(g) > 1:
-            groups += 1
-            grow += bool(np.all(np.diff(-g.tip_radial_stress_kPa) >= 0) and np.all(np.diff(g.top_circ_stress_kPa) >= 0))
+    grow, groups = _monotone_groups(d.reset_index(), ordered, lambda g: np.all(np.diff(-g.tip_radial_stress_kPa) >= 0)
+                                    and np.all(np.diff(g.top_circ_stress_kPa) >= 0))
     out.append(Claim(
         "C6", "Converting the pool (no swelling) makes the tip radial stress compressive and raises the top hoop "
         "(tensile) stress", "figure 4b,c at c = 0",
@@ -141,13 +149,7 @@ def swelling_claims(tips: pd.DataFrame, cases: dict) -> list[Claim]:
         _yes(frac_tensile == 1 and frac_50 >= 0.5), "tensile in every run at the highest concentration and "
         "> 50 kPa in most states above 100 mEq/l"))
 
-    mono, groups = 0, 0
-    for _, g in top.groupby(["model", "pressure_mmHg"]):
-        g = g.set_index("case")
-        g = g.loc[[c for c in ordered if c in g.index]]
-        if len(g) > 1:
-            groups += 1
-            mono += bool(np.all(np.diff(g.tip_radial_stress_kPa) <= 0))
+    mono, groups = _monotone_groups(top, ordered, lambda g: np.all(np.diff(g.tip_radial_stress_kPa) <= 0))
     out.append(Claim(
         "C9", "Smaller pools give higher tip stress", "figure 4, section 3",
         f"tip radial stress at {c_max:g} mEq/l decreases with pool size in {mono}/{groups} model-pressure groups",

@@ -209,6 +209,15 @@ def homeostasis(model: Model, numerics: dict, homeo: dict, x0=None, start: Load 
     return Homeostasis(state, pressures, profile, measure.layer_stats(profile))
 
 
+def pressurise(model: Model, homeostatic: solver.State, pressure_mmHg: float, numerics: dict) -> solver.State:
+    """The passive homeostatic state (held radius) moved to ``pressure_mmHg`` under pressure control."""
+    P_h = measure.carried_pressure(model, homeostatic.evaluation)
+    material = homeostatic.load.material
+    return solver.follow_path(model, homeostatic.x, Load(1.0, P_h, material=material),
+                              [Load(1.0, pressure_mmHg * MMHG_TO_KPA, material=material)],
+                              run=model.name, **solver_options(numerics))[-1]
+
+
 def bilayer_pressure_diameter(model: Model, tube: analytic.ThickWallTube, homeostatic: solver.State,
                               numerics: dict, cal: dict, active: bool, label: str) -> PressureDiameter:
     """Pressure-diameter sweep of the passive or active bi-layered model under pressure control.
