@@ -64,7 +64,7 @@ def main():
     x = states[-1].x
     props, _, pairs = model.material(load)
     n = model.n
-    FP, f = np.empty((n, 8)), np.empty((n, 2))
+    FP, f = np.empty((n, 12)), np.empty((n, 2))
 
     def kernel_call():
         forces.evaluate_forces(x, model.layout.volume, model.nb, pairs, lz, model.cth, model.sth, props,

@@ -36,7 +36,15 @@ def gag_props():
     return p
 
 
-MATERIALS = {"mean": mean_props, "mixture": mixture_props, "gag": gag_props}
+def diluting_gag_props():
+    """GAG whose fixed charge is conserved: Donnan pressure at the current concentration c0 / J (eq. 2.26)."""
+    p = mt.empty_props(1)
+    p[:, mt.MU], p[:, mt.LAM] = 0.1, 10.0
+    mt.convert_to_gag(p, [0], 1.0, 0.1, 89.71, lame=10.0, fixed_charge=(150.0, 300.0, 310.0))
+    return p
+
+
+MATERIALS = {"mean": mean_props, "mixture": mixture_props, "gag": gag_props, "diluting_gag": diluting_gag_props}
 
 
 def energy(F, lz, p):
@@ -140,6 +148,17 @@ def test_gag_cauchy_stress_is_eq_2_27():
     J = np.linalg.det(F)
     expected = 0.1 * (F @ F.T - np.eye(2)) / J - p[0, mt.PI] * np.eye(2)
     assert np.allclose(sigma, expected, atol=1e-12)
+
+
+def test_diluting_gag_pressure_is_eq_2_26_at_the_current_concentration():
+    """sigma = -PI(c0 / J) I (+ the small neo-Hookean and bulk terms, removed here): J = 1 gives PI(c0), J = 2 PI(c0/2)."""
+    p = diluting_gag_props()
+    p[:, mt.MU] = p[:, mt.LAM] = 0.0
+    for J, c in ((1.0, 150.0), (2.0, 75.0), (0.8, 187.5)):
+        F = np.sqrt(J) * np.eye(2)
+        P = piola(F, 1.0, p).reshape(2, 2)
+        sigma = P @ F.T / J
+        assert np.allclose(sigma, -float(mt.swelling_pressure(c, 300.0, 310.0)) * np.eye(2), rtol=1e-12, atol=1e-12)
 
 
 def test_swelling_pressure_hand_values():

@@ -71,30 +71,35 @@ class PairData:
 NO_EXTRA_STRESS = np.empty((0, 4))
 
 
-def evaluate_forces(x, V, nb, pd: PairData, lz, cth, sth, props, xe, fe, FP, f, extra=NO_EXTRA_STRESS):
-    """One force evaluation (see :func:`forces_and_stresses`); fills FP = (F, P) and f.
+def evaluate_forces(x, V, nb, pd: PairData, lz, cth, sth, props, xe, fe, FP, f, extra=NO_EXTRA_STRESS, hg=None):
+    """One force evaluation (see :func:`forces_and_stresses`); fills FP = (F, P, F~) and f.
 
     ``extra`` (N, 4), if given, is added to every particle's P before the forces
     are formed (the viscous stress of section 2.3 in :mod:`sphgag.dynamics`).
+    ``hg`` = ``(ah, split)`` of :func:`sphgag.kernel.hourglass_gradients` (default:
+    the hourglass penalty uses the full stencil).
     """
-    return forces_and_stresses(x, nb.ptr, nb.ext, nb.a, pd.pair_ptr, pd.pair_j, pd.pair_geo, pd.pair_hgc,
+    ah, split = (nb.a, False) if hg is None else hg
+    return forces_and_stresses(x, nb.ptr, nb.ext, nb.a, ah, split, pd.pair_ptr, pd.pair_j, pd.pair_geo, pd.pair_hgc,
                                pd.solo_ptr, pd.solo_j, pd.solo_geo, pd.solo_hgc, nb.ghost_owner, nb.ghost_mirror,
                                lz, cth, sth, props, extra, xe, fe, FP, f)
 
 
 @njit(cache=True, fastmath=True, error_model="numpy")
-def forces_and_stresses(x, ptr, ext, a, pair_ptr, pair_j, pair_geo, pair_hgc, solo_ptr, solo_j, solo_geo,
+def forces_and_stresses(x, ptr, ext, a, ah, split, pair_ptr, pair_j, pair_geo, pair_hgc, solo_ptr, solo_j, solo_geo,
                         solo_hgc, ghost_owner, ghost_mirror, lz, cth, sth, props, extra, xe, fe, FP, f):
     """One force evaluation: F (eq. 2.9), P (eq. 2.10) and the forces of eqs. (2.11), (2.14).
 
     Pass 1, per particle: ``F_i = sum_j (x_j - x_i) (x) a_ij`` over its stencil,
-    then ``P_i`` from its material row; ``FP[i] = (F_i, P_i)`` (row-major).
+    then ``P_i`` from its material row, and the hourglass deformation gradient
+    ``F~_i`` from the weighted stencil ``ah`` (equal to ``F_i`` unless ``split``;
+    :func:`sphgag.kernel.hourglass_gradients`); ``FP[i] = (F_i, P_i, F~_i)`` (row-major).
     Pass 2, over the half list of real pairs: the two directed pair vectors
     ``t_ij = V_i P_i a_ij - c_ij delta_ij n_ij`` (``f_i += t_ij``, ``f_j -= t_ij``)
     and ``t_ji`` share the separation and the division, so each pair is
     visited once; ghost entries (mirror images at the end of ``xe``/``fe``)
     are visited from their real side and folded back through the mirror.
-    The hourglass term uses ``delta n = ((F_i R - r) . r) r / |r|^2``
+    The hourglass term uses ``delta n = ((F~_i R - r) . r) r / |r|^2``
     (eq. 2.15 with ``n = r/|r|``). Returns the smallest det(F_2D); a particle
     with det <= 0 gets NaN stress.
     """
@@ -119,6 +124,19 @@ def forces_and_stresses(x, ptr, ext, a, pair_ptr, pair_j, pair_geo, pair_hgc, so
             f10 += d1 * a[e, 0]
             f11 += d1 * a[e, 1]
         FP[i, 0], FP[i, 1], FP[i, 2], FP[i, 3] = f00, f01, f10, f11
+        if split:
+            h00 = h01 = h10 = h11 = 0.0
+            for e in range(ptr[i], ptr[i + 1]):
+                j = ext[e]
+                d0 = xe[j, 0] - xi0
+                d1 = xe[j, 1] - xi1
+                h00 += d0 * ah[e, 0]
+                h01 += d0 * ah[e, 1]
+                h10 += d1 * ah[e, 0]
+                h11 += d1 * ah[e, 1]
+            FP[i, 8], FP[i, 9], FP[i, 10], FP[i, 11] = h00, h01, h10, h11
+        else:
+            FP[i, 8], FP[i, 9], FP[i, 10], FP[i, 11] = f00, f01, f10, f11
         det = f00 * f11 - f01 * f10
         if det > 0.0:
             dmin = min(dmin, det)
@@ -132,7 +150,7 @@ def forces_and_stresses(x, ptr, ext, a, pair_ptr, pair_j, pair_geo, pair_hgc, so
     fe[:, :] = 0.0
     for i in range(n):
         xi0, xi1 = xe[i, 0], xe[i, 1]
-        g00, g01, g10, g11 = FP[i, 0], FP[i, 1], FP[i, 2], FP[i, 3]
+        g00, g01, g10, g11 = FP[i, 8], FP[i, 9], FP[i, 10], FP[i, 11]
         p00, p01, p10, p11 = FP[i, 4], FP[i, 5], FP[i, 6], FP[i, 7]
         fi0 = fi1 = 0.0
         for p in range(pair_ptr[i], pair_ptr[i + 1]):
@@ -143,7 +161,7 @@ def forces_and_stresses(x, ptr, ext, a, pair_ptr, pair_j, pair_geo, pair_hgc, so
             R0, R1 = pair_geo[p, 4], pair_geo[p, 5]
             # delta_ij + delta_ji: t_ji carries r_ji = -r and R_ji = -R, so both
             # directions add ((F_i + F_j) R) . r - 2 |r|^2
-            s00, s01, s10, s11 = g00 + FP[j, 0], g01 + FP[j, 1], g10 + FP[j, 2], g11 + FP[j, 3]
+            s00, s01, s10, s11 = g00 + FP[j, 8], g01 + FP[j, 9], g10 + FP[j, 10], g11 + FP[j, 11]
             q = (s00 * R0 + s01 * R1) * r0 + (s10 * R0 + s11 * R1) * r1
             h = pair_hgc[p] * (q - 2.0 * rr) / rr
             a0, a1, b0, b1 = pair_geo[p, 0], pair_geo[p, 1], pair_geo[p, 2], pair_geo[p, 3]
@@ -241,12 +259,14 @@ def _pattern_pairs(ptr, nbr, map_ptr, rows, cols):
 
 
 @njit(cache=True, fastmath=True, error_model="numpy")
-def jacobian_blocks(x, V, ptr, nbr, mir, a, s, R, hgc, F, lz, cth, sth, props, blockmap, map_ptr, data):
+def jacobian_blocks(x, V, ptr, nbr, mir, a, s, ah, sh, R, hgc, F, Fh, lz, cth, sth, props, blockmap, map_ptr,
+                    data):
     """Add ``d(f_int + f_hg)/dx`` (eqs. 2.11, 2.14-2.15) to the 2 x 2 blocks ``data`` (:func:`block_pattern`).
 
     Elastic part: ``-sum_i V_i B_i^T A_i B_i`` with ``F_i = sum_p (M_p x_p) (x) b_p``
     (node 0 = i with b = -s_i, node k = entry k with b = a_ik). Hourglass part:
-    derivative of the pair vectors ``c delta n`` through ``F_i``, ``r`` and ``n``.
+    derivative of the pair vectors ``c delta n`` through the hourglass gradient
+    ``F~_i`` (node vectors ``-sh_i``, ``ah_ik``), ``r`` and ``n``.
     """
     n = x.shape[0]
     C = np.empty((3, 3))
@@ -281,10 +301,16 @@ def jacobian_blocks(x, V, ptr, nbr, mir, a, s, R, hgc, F, lz, cth, sth, props, b
                         v = b[p, 0] * T[q, c, d, 0] + b[p, 1] * T[q, c, d, 1]
                         data[blk, c, d] -= Vi * M[p, c] * M[q, d] * v
 
-        # hourglass pairs
-        F00, F01, F10, F11 = F[i, 0, 0], F[i, 0, 1], F[i, 1, 0], F[i, 1, 1]
+        # hourglass pairs: node vectors of F~_i
+        b[0, 0], b[0, 1] = -sh[i, 0], -sh[i, 1]
+        for k in range(1, m):
+            b[k, 0], b[k, 1] = ah[e0 + k - 1, 0], ah[e0 + k - 1, 1]
+        F00, F01, F10, F11 = Fh[i, 0, 0], Fh[i, 0, 1], Fh[i, 1, 0], Fh[i, 1, 1]
         for k in range(1, m):
             e = e0 + k - 1
+            c = hgc[e]
+            if c == 0.0:  # no penalty across a GAG/tissue interface
+                continue
             j = nbr[e]
             sx, sy = M[k, 0], M[k, 1]
             r0 = sx * x[j, 0] - x[i, 0]
@@ -295,7 +321,6 @@ def jacobian_blocks(x, V, ptr, nbr, mir, a, s, R, hgc, F, lz, cth, sth, props, b
             q1 = F10 * R[e, 0] + F11 * R[e, 1]
             qn = q0 * n0 + q1 * n1
             delta = qn - d
-            c = hgc[e]
             # d delta / d r = (q - (n.q) n)/d - n
             u0 = (q0 - qn * n0) / d - n0
             u1 = (q1 - qn * n1) / d - n1

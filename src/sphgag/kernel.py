@@ -120,6 +120,81 @@ def _corrected_gradients(X, V, h, ptr, nbr, mir, R, w, a, s, A_out):
         s[i, 1] = s1
 
 
+@njit(cache=True)
+def _hourglass_gradients(V, h, ptr, nbr, R, a, s, beta, ah, sh):
+    """``beta_ij V_j A~_i^-1 grad xi_ij`` with ``A~_i = sum_j beta_ij V_j grad xi_ij (x) R_ij`` (eq. 2.8 on a weighted stencil).
+
+    A particle whose weighted stencil is (nearly) rank deficient keeps its full
+    stencil (``a``, ``s``): returns how many did.
+    """
+    n = ptr.shape[0] - 1
+    fallback = 0
+    for i in range(n):
+        a00 = a01 = a10 = a11 = 0.0
+        full = 0.0
+        for e in range(ptr[i], ptr[i + 1]):
+            r0, r1 = R[e, 0], R[e, 1]
+            d = np.sqrt(r0 * r0 + r1 * r1)
+            g = V[nbr[e]] * spiky_derivative(d, h) / d
+            full += abs(g) * d * d
+            g *= beta[e]
+            a00 += g * r0 * r0
+            a01 += g * r0 * r1
+            a10 += g * r1 * r0
+            a11 += g * r1 * r1
+        det = a00 * a11 - a01 * a10
+        tr = a00 + a11
+        if det <= 1e-6 * tr * tr or abs(tr) < 1e-6 * full:
+            fallback += 1
+            for e in range(ptr[i], ptr[i + 1]):
+                ah[e, 0], ah[e, 1] = a[e, 0], a[e, 1]
+            sh[i, 0], sh[i, 1] = s[i, 0], s[i, 1]
+            continue
+        i00, i01, i10, i11 = a11 / det, -a01 / det, -a10 / det, a00 / det
+        s0 = s1 = 0.0
+        for e in range(ptr[i], ptr[i + 1]):
+            r0, r1 = R[e, 0], R[e, 1]
+            d = np.sqrt(r0 * r0 + r1 * r1)
+            g = beta[e] * V[nbr[e]] * spiky_derivative(d, h) / d
+            g0, g1 = g * r0, g * r1
+            ah[e, 0] = i00 * g0 + i01 * g1
+            ah[e, 1] = i10 * g0 + i11 * g1
+            s0 += ah[e, 0]
+            s1 += ah[e, 1]
+        sh[i, 0], sh[i, 1] = s0, s1
+    return fallback
+
+
+def hourglass_gradients(nb: "Neighbours", V, tissue):
+    """Stencil weights and corrected gradients of the hourglass penalty (eqs. 2.8, 2.14-2.15) at a GAG/tissue interface.
+
+    The hourglass penalty (eq. 2.14) punishes the part of a pair's separation
+    that the particle's deformation gradient does not predict. Across the
+    boundary of a soft GAG pool the real displacement field has a kink, which
+    an F averaged over both materials cannot predict, so a penalty measured
+    with it resists the kink itself (a stiff spurious interface layer, the
+    ringing of issue 7). The penalty is therefore measured within each
+    material: pair ``(i, j)`` has weight ``beta_ij = 1 - |tissue_i - tissue_j|``
+    (1 within tissue or within GAG, 0 across, continuous while a particle is
+    converted), and its hourglass deformation gradient ``F~_i`` comes from the
+    same weighted stencil with its own correction matrix, so it is exact for
+    any deformation that is affine on each side. The elastic ``F`` (eq. 2.9)
+    keeps the full stencil: the two materials stay coupled through it.
+
+    Returns ``(beta, ah, sh, split)``: per-entry weights, weighted corrected
+    gradients ``ah`` (like ``nb.a``) and their sums ``sh``, and whether any
+    weight differs from 1 (if not, ``ah`` is ``nb.a``).
+    """
+    owner = np.repeat(np.arange(V.size), np.diff(nb.ptr))
+    beta = 1.0 - np.abs(tissue[owner] - tissue[nb.nbr])
+    if np.all(beta == 1.0):
+        return beta, nb.a, nb.s, False
+    ah = np.empty_like(nb.a)
+    sh = np.empty_like(nb.s)
+    _hourglass_gradients(V, nb.h, nb.ptr, nb.nbr, nb.R, nb.a, nb.s, beta, ah, sh)
+    return beta, ah, sh, True
+
+
 @dataclass(frozen=True)
 class Neighbours:
     """Reference neighbour lists and corrected kernel gradients (flat CSR arrays).

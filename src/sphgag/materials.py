@@ -18,7 +18,14 @@ particle type. A row describes a constrained mixture:
   ``T(l) = TACT l (1 - ((LMAX - l)/(LMAX - LMIN))^2)`` (clipped at zero),
   ``l`` the circumferential stretch from the reference;
 * **Gibbs-Donnan swelling** (eqs. 2.25-2.27): ``sigma -= PI I``, i.e.
-  ``W -= PI (J - 1)``.
+  ``W -= PI (J - 1)`` (a prescribed swelling pressure), plus, if ``FCD > 0``,
+  the Donnan pressure of a conserved fixed charge: ``FCD`` is the fixed-charge
+  density per *reference* volume, the current one is ``FCD / J``, and
+  ``sigma -= PI_D(J) I`` with ``PI_D = RT (sqrt((FCD/J)^2 + CBATH^2) - CBATH)``
+  (eq. 2.26 at the current concentration; :func:`donnan`);
+* ``TISSUE``: how much of the particle is tissue (1) rather than GAG (0). It
+  does not enter the stress; it decides which neighbours a particle's
+  hourglass penalty measures against (:func:`sphgag.kernel.hourglass_gradients`).
 
 Plane strain at a prescribed axial stretch ``lz``: ``C = diag(C_2D, lz^2)``
 and ``J = det(F_2D) lz`` (section 2.4.1).
@@ -41,7 +48,11 @@ FAM0 = 11
 MAX_FAMILIES = 4
 FAM_STRIDE = 7
 PHI, SIN2, C1P, C2P, C1M, C2M, GF = range(FAM_STRIDE)
-NPROP = FAM0 + MAX_FAMILIES * FAM_STRIDE
+FAM_END = FAM0 + MAX_FAMILIES * FAM_STRIDE
+TISSUE = FAM_END
+FCD, CBATH, RT = FAM_END + 1, FAM_END + 2, FAM_END + 3
+NPROP = RT + 1
+GAS_CONSTANT = 8.314462618  # J / (mol K)
 
 
 def empty_props(n: int) -> np.ndarray:
@@ -49,6 +60,7 @@ def empty_props(n: int) -> np.ndarray:
     p = np.zeros((n, NPROP))
     p[:, GR] = p[:, GT] = p[:, GZ] = 1.0
     p[:, LMAX], p[:, LMIN] = 1.1, 0.6
+    p[:, TISSUE] = 1.0
     return p
 
 
@@ -95,8 +107,8 @@ def merge_identical_families(props):
     exact and halves the exponentials per particle.
     """
     out = props.copy()
-    for row in np.unique(props[:, FAM0:], axis=0, return_index=True)[1]:
-        rows = np.flatnonzero((props[:, FAM0:] == props[row, FAM0:]).all(axis=1))
+    for row in np.unique(props[:, FAM0:FAM_END], axis=0, return_index=True)[1]:
+        rows = np.flatnonzero((props[:, FAM0:FAM_END] == props[row, FAM0:FAM_END]).all(axis=1))
         fams = []
         for k in range(int(props[row, NFAM])):
             f = props[row, FAM0 + k * FAM_STRIDE: FAM0 + (k + 1) * FAM_STRIDE].copy()
@@ -106,7 +118,7 @@ def merge_identical_families(props):
                     break
             else:
                 fams.append(f)
-        out[np.ix_(rows, np.arange(FAM0, NPROP))] = 0.0
+        out[np.ix_(rows, np.arange(FAM0, FAM_END))] = 0.0
         for k, f in enumerate(fams):
             out[np.ix_(rows, np.arange(FAM0 + k * FAM_STRIDE, FAM0 + (k + 1) * FAM_STRIDE))] = f
         out[rows, NFAM] = len(fams)
@@ -161,17 +173,41 @@ def _fibre_I4(props, i, base, c_tt, lz):
 
 
 @njit(cache=True, fastmath=True, error_model="numpy", inline="always")
+def donnan(J, c0, cb, rt):
+    """Donnan pressure of a conserved fixed charge: ``(PI_D, dPI_D/dJ, W_D)`` at volume ratio ``J`` (eq. 2.26).
+
+    ``c0`` is the fixed-charge density per reference volume [mEq/l], ``c0/J``
+    the current one, ``cb`` the bath's mobile-ion concentration, ``rt`` = R T
+    in kPa per mEq/l. ``W_D = -int_1^J PI_D dj`` is the energy whose
+    derivative ``dW_D/dJ = -PI_D`` gives the stress ``-PI_D I``.
+    """
+    if c0 == 0.0:
+        return 0.0, 0.0, 0.0
+    c = c0 / J
+    root = np.sqrt(c * c + cb * cb)
+    pi = rt * (root - cb)
+    dpi = -rt * c * c / (J * root)
+
+    def prim(j):  # an antiderivative of sqrt((c0/j)^2 + cb^2)
+        return np.sqrt(c0 * c0 + cb * cb * j * j) - c0 * np.arcsinh(c0 / (cb * j))
+
+    w = -rt * (prim(J) - prim(1.0) - cb * (J - 1.0))
+    return pi, dpi, w
+
+
+@njit(cache=True, fastmath=True, error_model="numpy", inline="always")
 def pk2(c_rr, c_tt, c_rt, lz, props, i):
     """Second Piola-Kirchhoff stress ``(S_rr, S_tt, S_rt)`` of particle ``i``.
 
     Elastin (2.18/2.21): ``MU (G^2 - C^-1) + LAM ln J C^-1``; swelling (2.27):
-    ``-PI J C^-1``; fibres (2.20/2.22): ``2 phi W'(I4) G^2 sin^2 a e_t e_t``;
+    ``-(PI + PI_D(J)) J C^-1``; fibres (2.20/2.22): ``2 phi W'(I4) G^2 sin^2 a e_t e_t``;
     active tone (2.24): ``J T(l) / l^2 e_t e_t`` with ``l^2 = C_tt``.
     """
     det2 = c_rr * c_tt - c_rt * c_rt
     J = lz * np.sqrt(det2)
     mu = props[i, MU]
-    beta = (mu - props[i, LAM] * np.log(J) + props[i, PI] * J) / det2  # coefficient of -C^-1 det C
+    pi = props[i, PI] + donnan(J, props[i, FCD], props[i, CBATH], props[i, RT])[0]
+    beta = (mu - props[i, LAM] * np.log(J) + pi * J) / det2  # coefficient of -C^-1 det C
     s_rr = mu * props[i, GR] ** 2 - beta * c_tt
     s_tt = mu * props[i, GT] ** 2 - beta * c_rr
     s_rt = beta * c_rt
@@ -195,16 +231,18 @@ def material_tangent(c_rr, c_tt, c_rt, lz, props, i, C):
 
     The derivative of the stress of :func:`pk2` (eqs. 2.20-2.24, 2.27).
 
-    Elastin + swelling: ``(LAM - PI J) C^-1 (x) C^-1 + 2 beta I_{C^-1}`` with
-    ``beta = MU - LAM ln J + PI J`` and ``I_{C^-1}`` the symmetrised identity on C^-1;
+    Elastin + swelling: ``(LAM - PI J - PI_D' J^2) C^-1 (x) C^-1 + 2 beta I_{C^-1}`` with
+    ``beta = MU - LAM ln J + PI J`` (``PI`` including the Donnan ``PI_D(J)``) and ``I_{C^-1}`` the symmetrised identity on C^-1;
     fibres: ``4 phi W''(I4) G^4 sin^4 a`` on (tt, tt); active tone (no major
     symmetry): ``S_tt^act C^-1`` on row tt plus ``J (T'/l^2 - 2 T/l^3)/l`` on (tt, tt).
     """
     det2 = c_rr * c_tt - c_rt * c_rt
     J = lz * np.sqrt(det2)
     i_rr, i_tt, i_rt = c_tt / det2, c_rr / det2, -c_rt / det2
-    beta = props[i, MU] - props[i, LAM] * np.log(J) + props[i, PI] * J
-    a = props[i, LAM] - props[i, PI] * J
+    pd, dpd, _ = donnan(J, props[i, FCD], props[i, CBATH], props[i, RT])
+    pi = props[i, PI] + pd
+    beta = props[i, MU] - props[i, LAM] * np.log(J) + pi * J
+    a = props[i, LAM] - pi * J - dpd * J * J
     b = 2.0 * beta
     C[0, 0] = (a + b) * i_rr * i_rr
     C[1, 1] = (a + b) * i_tt * i_tt
@@ -233,13 +271,14 @@ def material_tangent(c_rr, c_tt, c_rt, lz, props, i, C):
 def strain_energy(c_rr, c_tt, c_rt, lz, props, i):
     """Strain energy density W of particle ``i`` (eqs. 2.18, 2.21-2.23, 2.27; active tone has none).
 
-    ``MU/2 (tr(G C G) - 3) - MU ln J + LAM/2 (ln J)^2 - PI (J - 1) + sum_k phi_k W_k(I4_k)``.
+    ``MU/2 (tr(G C G) - 3) - MU ln J + LAM/2 (ln J)^2 - PI (J - 1) + W_D(J) + sum_k phi_k W_k(I4_k)``.
     """
     J = lz * np.sqrt(c_rr * c_tt - c_rt * c_rt)
     lnJ = np.log(J)
     mu = props[i, MU]
     I1 = props[i, GR] ** 2 * c_rr + props[i, GT] ** 2 * c_tt + props[i, GZ] ** 2 * lz * lz
     W = 0.5 * mu * (I1 - 3.0) - mu * lnJ + 0.5 * props[i, LAM] * lnJ * lnJ - props[i, PI] * (J - 1.0)
+    W += donnan(J, props[i, FCD], props[i, CBATH], props[i, RT])[2]
     for k in range(int(props[i, NFAM])):
         base = FAM0 + k * FAM_STRIDE
         I4 = _fibre_I4(props, i, base, c_tt, lz)
@@ -320,7 +359,8 @@ def tangent_modulus(f00, f01, f10, f11, lz, cth, sth, props, i, C, A):
                     A[2 * a_ + B, 2 * c + D] = v
 
 
-def convert_to_gag(props, rows, fraction, shear_modulus, hourglass_modulus, swelling_pressure=0.0, lame=0.0):
+def convert_to_gag(props, rows, fraction, shear_modulus, hourglass_modulus, swelling_pressure=0.0, lame=0.0,
+                   fixed_charge=None):
     """Turn ``rows`` of a property table a ``fraction`` of the way into GAG (eq. 2.27), in place.
 
     A GAG particle is the modified neo-Hookean solid ``mu_GAG`` (no deposition
@@ -346,8 +386,13 @@ def convert_to_gag(props, rows, fraction, shear_modulus, hourglass_modulus, swel
     for k in range(MAX_FAMILIES):
         p[:, FAM0 + k * FAM_STRIDE + PHI] *= g
     p[:, TACT] *= g
+    p[:, TISSUE] *= g
     p[:, HG_E] = g * p[:, HG_E] + (1.0 - g) * hourglass_modulus
     p[:, PI] = swelling_pressure
+    if fixed_charge is not None:
+        c0, cb, temperature = fixed_charge
+        p[:, PI] = 0.0
+        p[:, FCD], p[:, CBATH], p[:, RT] = c0, cb, GAS_CONSTANT * temperature / 1000.0
     props[rows] = p
     return props
 
@@ -358,6 +403,13 @@ def swelling_pressure(c_fc, c_bath, temperature_K=310.0):
     Concentrations in mEq/l (= mol/m^3 for monovalent ions); R T in J/mol, so
     the product is in Pa; divided by 1000 for kPa.
     """
-    R = 8.314462618
     c = np.asarray(c_fc, dtype=float)
-    return R * temperature_K * (np.sqrt(c * c + c_bath * c_bath) - c_bath) / 1000.0
+    return GAS_CONSTANT * temperature_K * (np.sqrt(c * c + c_bath * c_bath) - c_bath) / 1000.0
+
+
+@njit(cache=True, fastmath=True, error_model="numpy")
+def first_piola_all(F, lz, cth, sth, props, P):
+    """``P_i = P(F_i)`` (eq. 2.10) of every particle for given deformation gradients ``F`` (N, 2, 2)."""
+    for i in range(F.shape[0]):
+        P[i, 0, 0], P[i, 0, 1], P[i, 1, 0], P[i, 1, 1] = first_piola(F[i, 0, 0], F[i, 0, 1], F[i, 1, 0], F[i, 1, 1],
+                                                                     lz, cth[i], sth[i], props, i)

@@ -14,7 +14,7 @@ from typing import Callable
 import numpy as np
 import scipy.sparse as sp
 
-from . import forces
+from . import forces, kernel, materials
 from .geometry import Layout
 from .kernel import Neighbours
 from .loading import Load, add_pressure_stiffness, pressure_forces, prescribed_inner_positions
@@ -33,6 +33,7 @@ class Evaluation:
     min_det: float
     constrained: np.ndarray  # particle indices with prescribed positions
     target: np.ndarray  # their prescribed positions
+    F_hourglass: np.ndarray | None = None  # F~ of the hourglass penalty (kernel.hourglass_gradients)
 
     @property
     def residual_vector(self) -> np.ndarray:
@@ -74,6 +75,9 @@ class Model:
     props : (N, NPROP) property table (:mod:`sphgag.materials`), or a callable
         ``props(load) -> table`` for materials that change along a path.
     hourglass_alpha : alpha of eq. (2.14); E comes from the property table.
+    boundary : optional ``boundary(load) -> (indices, positions)`` of particles with
+        prescribed positions; by default the inner surface is held at
+        ``load.inner_radius`` when the load prescribes one.
     """
 
     name: str
@@ -81,6 +85,7 @@ class Model:
     nb: Neighbours
     props: np.ndarray | Callable[[Load], np.ndarray]
     hourglass_alpha: float
+    boundary: Callable[[Load], tuple] | None = None
     _cache: dict = field(default_factory=dict, repr=False)
 
     def __post_init__(self):
@@ -99,17 +104,28 @@ class Model:
 
     # -- material -----------------------------------------------------------
     def material(self, load: Load):
-        """Property table, hourglass coefficients (eq. 2.14) and packed pair data for ``load``, cached."""
+        """Property table, hourglass coefficients (eq. 2.14) and packed pair data for ``load``, cached.
+
+        The hourglass coefficient of a pair is scaled by its stencil weight
+        (zero across a GAG/tissue interface, :func:`kernel.hourglass_gradients`).
+        """
         key = (load.material if callable(self.props) else None, self.hourglass_alpha)
         if "props" not in self._cache or self._cache["key"] != key:
             props = np.ascontiguousarray(self.props(load) if callable(self.props) else self.props)
+            V = self.layout.volume
             hgc = np.empty(self.nb.n_entries)
-            forces.hourglass_coefficients(
-                self.layout.volume, self.nb.ptr, self.nb.nbr, self.nb.R, self.nb.w, props, self.hourglass_alpha, hgc
-            )
-            pairs = forces.PairData.pack(self.nb, self.layout.volume, hgc)
-            self._cache.update(key=key, props=props, hgc=hgc, pairs=pairs)
+            forces.hourglass_coefficients(V, self.nb.ptr, self.nb.nbr, self.nb.R, self.nb.w, props,
+                                          self.hourglass_alpha, hgc)
+            beta, ah, sh, split = kernel.hourglass_gradients(self.nb, V, props[:, materials.TISSUE])
+            hgc *= beta
+            pairs = forces.PairData.pack(self.nb, V, hgc)
+            self._cache.update(key=key, props=props, hgc=hgc, pairs=pairs, hg=(ah, sh, split))
         return self._cache["props"], self._cache["hgc"], self._cache["pairs"]
+
+    def hourglass_stencil(self, load: Load):
+        """``(ah, sh, split)``: the hourglass stencil's corrected gradients for ``load`` (see :meth:`material`)."""
+        self.material(load)
+        return self._cache["hg"]
 
     def set_props(self, props) -> None:
         """Replace the property table (a copy is kept: edit tables through this method, not in place)."""
@@ -118,6 +134,8 @@ class Model:
 
     # -- boundary conditions --------------------------------------------------
     def constraints(self, load: Load):
+        if self.boundary is not None:
+            return self.boundary(load)
         inner = self.layout.inner_surface
         if load.inner_radius is None:
             return np.empty(0, dtype=np.int64), np.empty((0, 2))
@@ -128,26 +146,29 @@ class Model:
         """Forces and stresses at positions ``x`` under ``load`` (``extra_stress``: (N, 4) added to P)."""
         nb, lay = self.nb, self.layout
         n = self.n
-        FP = np.empty((n, 8))
+        FP = np.empty((n, 12))
         f = np.empty((n, 2))
         props, hgc, pairs = self.material(load)
+        ah, _, split = self.hourglass_stencil(load)
         extra = forces.NO_EXTRA_STRESS if extra_stress is None else extra_stress
         min_det = forces.evaluate_forces(x, lay.volume, nb, pairs, load.axial_stretch, self.cth, self.sth, props,
-                                         self._xe, self._fe, FP, f, extra)
-        F, P = FP[:, :4].reshape(n, 2, 2), FP[:, 4:].reshape(n, 2, 2)
+                                         self._xe, self._fe, FP, f, extra, (ah, split))
+        F, P = FP[:, :4].reshape(n, 2, 2), FP[:, 4:8].reshape(n, 2, 2)
+        Fh = FP[:, 8:].reshape(n, 2, 2)
         p = load.pressure_kPa or 0.0
         f_ext = pressure_forces(x, lay.inner_surface, p, load.axial_stretch)
         cons, target = self.constraints(load)
         return Evaluation(x=x, load=load, F=F, P=P, f_int=f, f_ext=f_ext, min_det=float(min_det),
-                          constrained=cons, target=target)
+                          constrained=cons, target=target, F_hourglass=Fh)
 
     def jacobian(self, ev: Evaluation) -> np.ndarray:
         """``d(f_int + f_ext)/dx`` (exact) as the 2 x 2 blocks of the pattern :meth:`block_matrix` uses."""
         nb, lay, load = self.nb, self.layout, ev.load
         props, hgc, _ = self.material(load)
+        ah, sh, _ = self.hourglass_stencil(load)
         data = np.zeros((self.block_indices.size, 2, 2))
         forces.jacobian_blocks(
-            ev.x, lay.volume, nb.ptr, nb.nbr, nb.mirror, nb.a, nb.s, nb.R, hgc, ev.F,
+            ev.x, lay.volume, nb.ptr, nb.nbr, nb.mirror, nb.a, nb.s, ah, sh, nb.R, hgc, ev.F, ev.F_hourglass,
             load.axial_stretch, self.cth, self.sth, props, self.blockmap, self.map_ptr, data,
         )
         add_pressure_stiffness(data, self.block_index, lay.inner_surface, load.pressure_kPa or 0.0, load.axial_stretch)

@@ -167,14 +167,17 @@ def _line_search(model: Model, ev: Evaluation, dx: np.ndarray, scale: float, max
     """
     x = ev.x
     inner = model.layout.inner_surface
-    rho_in = np.linalg.norm(x[inner], axis=1)
-    r_in = rho_in.mean()
-    dr_in = float(np.mean((dx[inner] * x[inner]).sum(axis=1) / rho_in))
+    if inner.size:
+        rho_in = np.linalg.norm(x[inner], axis=1)
+        r_in = rho_in.mean()
+        dr_in = float(np.mean((dx[inner] * x[inner]).sum(axis=1) / rho_in))
+    else:  # no lumen: no radial expansion to correct
+        r_in = dr_in = 0.0
     merit0 = _merit(ev, scale)
     step = 1.0
     for k in range(1, max_halvings + 1):
         with np.errstate(invalid="ignore", over="ignore"):  # a trial step may be absurd; it is rejected
-            x_try = x + step * dx + _radial_correction(x, r_in, step * dr_in)
+            x_try = x + step * dx + (_radial_correction(x, r_in, step * dr_in) if dr_in else 0.0)
             ev_try = model.evaluate(x_try, ev.load)
             if ev_try.min_det > 0.0 and ev_try.finite and _merit(ev_try, scale) <= (1.0 - 1e-4 * step) * merit0:
                 return step, ev_try, k
