@@ -34,6 +34,7 @@ CLAIMS = os.path.relpath(Path(SRC, "sphgag", "claims.py"))
 include: "workflow/rules/calibration.smk"
 include: "workflow/rules/homeostasis.smk"
 include: "workflow/rules/swelling.smk"
+include: "workflow/rules/verification.smk"
 include: "workflow/rules/figures.smk"
 
 
@@ -51,4 +52,6 @@ rule all:
         rules.tip_stress.output,
         rules.fig4.output,
         rules.claims.output,
+        rules.verification_pool_figure.output,
+        rules.swelling_convergence_figure.output,
     default_target: True

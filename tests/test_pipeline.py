@@ -130,7 +130,7 @@ def test_a_later_rule_refuses_a_state_from_another_configuration(workdir, ci_con
                     "--rerun-triggers", "mtime", configfile=edited)
     assert run.returncode != 0
     log = (copy_dir / "logs/bilayer_pressure_diameter_passive.log").read_text()
-    assert "StateMismatch" in log and "bilayer.dx_um: expected 7.0, file has 8.0" in log
+    assert "StateMismatch" in log and "bilayer.dx_um: expected 7.0, file has 6.0" in log
 
 
 def test_lint_is_clean():

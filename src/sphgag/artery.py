@@ -154,9 +154,12 @@ class BilayerMaterial:
         if self.pool.size and conversion > 0.0:
             g = self.gag
             c = load.material_value("concentration", 0.0)
-            pi = float(materials.swelling_pressure(c, g["bath_concentration_mEq_l"], g["temperature_K"]))
+            if g.get("fixed_charge_dilution", False):
+                pi, fixed = 0.0, (c, g["bath_concentration_mEq_l"], g["temperature_K"])
+            else:
+                pi, fixed = float(materials.swelling_pressure(c, g["bath_concentration_mEq_l"], g["temperature_K"])), None
             materials.convert_to_gag(out, self.pool, conversion, g["shear_modulus_kPa"], g["hourglass_modulus_kPa"],
-                                     pi, g["lame_lambda_kPa"])
+                                     pi, g["lame_lambda_kPa"], fixed)
         return out
 
 

@@ -130,6 +130,10 @@ def _consistency(config: dict) -> list[str]:
         if p not in saved:
             problems.append(f"swelling.pressures_mmHg[{k}] = {p} has no saved state: it must be one of "
                             f"bilayer_calibration.state_pressures_mmHg = {saved}")
+    for k, name in enumerate(config.get("swelling_convergence", {}).get("cases", [])):
+        if name not in sw.get("cases", {}):
+            problems.append(f"swelling_convergence.cases[{k}] = {name!r} is not a pool of swelling.cases "
+                            f"({', '.join(sw.get('cases', {}))})")
     if bil:
         r_in = bil.get("inner_radius_um", 0)
         border = r_in + bil.get("media_thickness_um", 0)

@@ -257,6 +257,8 @@ def swelling_panels(ax_tip, ax_top, runs: pd.DataFrame):
         intact = g[g.stage == "intact"]
         ax_tip.plot(conv.concentration_mEq_l, conv.tip_radial_stress_kPa, "-o", color=c, ms=2.5, lw=1.0,
                     label=f"{P:g} mmHg")
+        if "tip_peak_radial_stress_kPa" in conv:
+            ax_tip.plot(conv.concentration_mEq_l, conv.tip_peak_radial_stress_kPa, ":", color=c, lw=0.9)
         ax_top.plot(conv.concentration_mEq_l, conv.top_circ_stress_kPa, "-o", color=c, ms=2.5, lw=1.0)
         ax_tip.plot(np.zeros(len(intact)), intact.tip_radial_stress_kPa, "o", color=c, ms=6, clip_on=False)
         ax_top.plot(np.zeros(len(intact)), intact.top_circ_stress_kPa, "o", color=c, ms=6, clip_on=False)
@@ -291,5 +293,97 @@ def fig4(tips: pd.DataFrame, particles: pd.DataFrame, cases: dict, probe_length:
         for ax in row:
             ax.set_ylim(lo, hi)
     axes[1, -1].legend(frameon=False, fontsize=7)
+    axes[1, 0].text(0.02, 0.02, "solid: mean over the tip region\ndotted: particle peak", transform=axes[1, 0].transAxes,
+                    fontsize=6.5, va="bottom")
+    fig.tight_layout()
+    return fig
+
+
+RATIO_COLOURS = {1.0: "#1b9e77", 2.0: "#d95f02", 3.0: "#7570b3"}
+
+
+def verification_pool(table: pd.DataFrame, profiles: pd.DataFrame):
+    """The pool verification: (a) Lamé field of the circle, (b) hoop stress ahead of the tip against Inglis,
+    (c) tip error and (d) traction jump and field error against resolution (log-log, observed order)."""
+    from .inclusion import observed_order, tip_fit, TIP_PARTICLES
+
+    _style()
+    fig, axes = plt.subplots(1, 4, figsize=(13.5, 3.1))
+    Pi = float(table.pressure_kPa.iloc[0])
+    colour = lambda r: RATIO_COLOURS.get(float(r), "k")  # noqa: E731
+    ax = axes[0]
+    rings = profiles[profiles.profile == "rings"]
+    if len(rings):
+        b = float(table[table.aspect_ratio == 1.0].semi_axis_b_um.iloc[0])
+        for k, (res, g) in enumerate(sorted(rings.groupby("b_over_dx"), key=lambda t: t[0])[-2:]):
+            mk = "os"[k]
+            ax.plot(g.radius_um / b, g.radial_sph_kPa / Pi, mk, ms=3, mfc="none", color="C0",
+                    label=f"SPH b/dx = {res:g}")
+            ax.plot(g.radius_um / b, g.circ_sph_kPa / Pi, mk, ms=3, mfc="none", color="C3")
+        g = rings[rings.b_over_dx == rings.b_over_dx.max()].sort_values("radius_um")
+        ax.plot(g.radius_um / b, g.radial_exact_kPa / Pi, "-", color="C0", lw=1, label=r"Lamé $\sigma_{rr}$")
+        ax.plot(g.radius_um / b, g.circ_exact_kPa / Pi, "-", color="C3", lw=1, label=r"Lamé $\sigma_{\theta\theta}$")
+        ax.axvline(1.0, color="0.7", lw=0.6)
+    ax.set(xlabel="r / R", ylabel="stress / Pi", title="(a) circular inclusion: ring means")
+    ax.legend(frameon=False, fontsize=6.5)
+    ax = axes[1]
+    for ratio, g in table.groupby("aspect_ratio"):
+        finest = g.b_over_dx.max()
+        p = profiles[(profiles.profile == "axis") & (profiles.aspect_ratio == ratio) & (profiles.b_over_dx == finest)]
+        b = float(g.semi_axis_b_um.iloc[0])
+        ax.plot(p.s_um / b, p.hoop_exact_kPa / Pi, "-", color=colour(ratio), lw=1)
+        ax.plot(p.s_um / b, p.hoop_sph_kPa / Pi, "o", ms=2.5, mfc="none", color=colour(ratio),
+                label=f"a/b = {ratio:g} (b/dx = {finest:g})")
+        row = g[g.b_over_dx == finest].iloc[0]
+        ax.plot([0], [row.tip_stress_kPa / Pi], "*", ms=8, color=colour(ratio))
+        ax.plot([0], [row.reference_kPa / Pi], "_", ms=14, mew=1.5, color="k")
+    ax.set(xlim=(0, None), xlabel="distance ahead of the tip / b", ylabel="hoop stress / Pi",
+           title="(b) ahead of the tip: SPH (o), Inglis (-)")
+    ax.text(0.98, 0.97, f"* fit of the first {TIP_PARTICLES} particles\n- Inglis Pi (2a/b - 1)",
+            transform=ax.transAxes, ha="right", va="top", fontsize=6.5)
+    ax.legend(frameon=False, fontsize=6.5, loc="center right")
+    ax = axes[2]
+    for ratio, g in table.groupby("aspect_ratio"):
+        h = g.dx_um / g.semi_axis_b_um
+        ax.loglog(h, g.rel_error.abs(), "o-", color=colour(ratio), ms=3,
+                  label=f"a/b = {ratio:g}: order {observed_order(g.dx_um, g.rel_error):.2f}")
+        ax.loglog(h, g.first_particle_rel_error.abs(), "x:", color=colour(ratio), ms=3, lw=0.7)
+    ax.axhline(0.05, color="0.6", lw=0.6, ls="--")
+    ax.set(xlabel="dx / b", ylabel="|relative error|", title="(c) tip stress (o) and first particle (x)")
+    ax.legend(frameon=False, fontsize=6.5)
+    ax = axes[3]
+    for ratio, g in table.groupby("aspect_ratio"):
+        h = g.dx_um / g.semi_axis_b_um
+        ax.loglog(h, g.field_rms_error_kPa / Pi, "o-", color=colour(ratio), ms=3, label=f"a/b = {ratio:g}")
+        ax.loglog(h, np.maximum(g.traction_jump_kPa / Pi, 1e-4), "s--", color=colour(ratio), ms=3, mfc="none", lw=0.7)
+    ax.set(xlabel="dx / b", ylabel="/ Pi", title="(d) field rms error (o), traction jump (s)")
+    ax.legend(frameon=False, fontsize=6.5)
+    fig.tight_layout()
+    return fig
+
+
+def swelling_convergence(table: pd.DataFrame):
+    """Resolution study: tip radial stress (mean over the probe, and particle peak), top hoop stress and pool
+    volume change against concentration, one line per particle spacing, one column per pool."""
+    _style()
+    cases = list(dict.fromkeys(table.case))
+    fig, axes = plt.subplots(3, len(cases), figsize=(3.4 * len(cases), 7.0), squeeze=False)
+    spacings = sorted(table.dx_um.unique(), reverse=True)
+    shades = plt.cm.viridis(np.linspace(0.1, 0.85, len(spacings)))
+    for j, case in enumerate(cases):
+        for dx, colour in zip(spacings, shades):
+            g = table[(table.case == case) & (table.dx_um == dx)].sort_values("concentration_mEq_l")
+            c = g.concentration_mEq_l
+            axes[0, j].plot(c, g.tip_radial_stress_kPa, "-o", ms=2.5, color=colour, label=f"dx = {dx:g} um")
+            axes[0, j].plot(c, g.tip_peak_radial_stress_kPa, ":", color=colour, lw=0.9)
+            axes[1, j].plot(c, g.top_circ_stress_kPa, "-o", ms=2.5, color=colour)
+            axes[2, j].plot(c, g.pool_volume_change, "-o", ms=2.5, color=colour)
+        axes[0, j].set_title(f"case {case}")
+        axes[0, j].axhline(0.0, color="0.7", lw=0.6)
+        axes[2, j].set_xlabel("GAG concentration (mEq/l)")
+    axes[0, 0].set_ylabel("tip radial stress (kPa)\n(solid: probe mean, dotted: peak)")
+    axes[1, 0].set_ylabel("top hoop stress (kPa)")
+    axes[2, 0].set_ylabel("pool volume change")
+    axes[0, -1].legend(frameon=False, fontsize=7)
     fig.tight_layout()
     return fig

@@ -280,22 +280,31 @@ def swelling_load(base: Load, conversion: float, concentration: float) -> Load:
 def pool_measurements(model: Model, ev, pool, members: np.ndarray, probe_length: float) -> dict:
     """Tip radial and top/bottom circumferential Cauchy stress around a pool (current polar frame).
 
-    Each value is the volume-weighted mean over a region of fixed physical size
-    (:func:`measure.pool_probes`): the medial material just beyond each angular
-    end of the pool across its radial extent (tips) and just outside it at its
-    mid-angle (top = outer side, bottom = inner side).
+    Each stress is the volume-weighted mean over a region of fixed physical size
+    (:func:`measure.pool_probes`): the medial material ``probe_length`` beyond
+    each angular end of the pool across its radial extent (tips) and just
+    outside it at its mid-angle (top = outer side, bottom = inner side). Beside
+    the tip mean, ``tip_peak_radial_stress_kPa`` is the largest particle value
+    in the tip regions (a kernel average next to the pool's corners, which does
+    not converge with refinement). ``pool_volume_change`` is the pool's
+    ``sum V J / sum V - 1``.
     """
     lay = model.layout
     probes = measure.pool_probes(pool, probe_length)
     tips = [measure.sector_average(ev, lay, probes[k], "rr") for k in ("tip_low", "tip_high")]
-    J = measure.cauchy_polar(ev)[3][members] if members.size else np.array([np.nan])
+    srr, _, _, J_all = measure.cauchy_polar(ev)
+    tip_particles = np.concatenate([probes[k].members(lay, layer="media") for k in ("tip_low", "tip_high")])
+    J = J_all[members] if members.size else np.array([np.nan])
+    V = lay.volume[members] if members.size else np.array([1.0])
     return dict(
         tip_radial_stress_kPa=0.5 * (tips[0] + tips[1]),
         tip_low_radial_stress_kPa=tips[0],
         tip_high_radial_stress_kPa=tips[1],
+        tip_peak_radial_stress_kPa=float(srr[tip_particles].max()),
         top_circ_stress_kPa=measure.sector_average(ev, lay, probes["top"], "tt"),
         bottom_circ_stress_kPa=measure.sector_average(ev, lay, probes["bottom"], "tt"),
         pool_particles=int(members.size),
+        pool_volume_change=float(np.sum(V * J) / np.sum(V) - 1.0),
         pool_mean_jacobian=float(np.mean(J)),
         pool_max_jacobian=float(np.max(J)),
     )

@@ -113,3 +113,19 @@ rule claims:
         "../envs/sphgag.yaml"
     script:
         "../scripts/claims.py"
+
+
+rule swelling_convergence_figure:
+    """Resolution study of the pool stresses: tip, top and pool volume change against concentration per dx."""
+    input:
+        code=PLOTS,
+        table=rules.swelling_convergence.output[0],
+    output:
+        pdf="figures/swelling_convergence.pdf",
+        png="figures/swelling_convergence.png",
+    log:
+        "logs/swelling_convergence_figure.log",
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/swelling_convergence_figure.py"

@@ -49,3 +49,51 @@ rule tip_stress:
         "../envs/sphgag.yaml"
     script:
         "../scripts/concat_tables.py"
+
+
+SC = config["swelling_convergence"]
+CONVERGENCE_DX = [f"{dx:g}" for dx in SC["dx_um"]]
+
+
+wildcard_constraints:
+    dx="|".join(re.escape(dx) for dx in CONVERGENCE_DX),
+
+
+rule swelling_convergence_dx:
+    """Resolution study, one particle spacing (dx = {dx} um): passive wall, every study pool swollen."""
+    input:
+        code=SPHGAG,
+    output:
+        table="results/swelling/convergence/dx{dx}.csv",
+        provenance="results/provenance/swelling_convergence_dx{dx}.json",
+    params:
+        bilayer=config["bilayer"],
+        numerics=config["numerics"],
+        homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
+        settings=SWELL_SETTINGS,
+        gag=config["gag"],
+        cases={c: SW["cases"][c] for c in SC["cases"]},
+        pressure=SC["pressure_mmHg"],
+    log:
+        "logs/swelling_convergence/dx{dx}.log",
+    benchmark:
+        "results/benchmarks/swelling_convergence_dx{dx}.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    script:
+        "../scripts/swelling_convergence.py"
+
+
+rule swelling_convergence:
+    """The resolution study of the pool stresses in one tidy table."""
+    input:
+        expand(rules.swelling_convergence_dx.output.table, dx=CONVERGENCE_DX),
+    output:
+        "results/swelling/convergence.csv",
+    log:
+        "logs/swelling_convergence.log",
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/concat_tables.py"

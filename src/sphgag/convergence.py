@@ -1,0 +1,51 @@
+"""Resolution study of the GAG-pool stresses (figure 4 protocol at several particle spacings).
+
+For one particle spacing: the passive homeostatic state (figure 2b), pressurised
+to the study's lumen pressure under pressure control, then every chosen pool
+converted and swollen (:func:`sphgag.protocols.swell_pool`). The rows carry the
+quantities whose convergence the study measures: the tip radial stress averaged
+over ``swelling.probe_length_um`` and its particle peak, the top hoop stress and
+the pool's volume change, with the residual of each converged state.
+"""
+
+from __future__ import annotations
+
+import pandas as pd
+
+from . import artery, protocols, solver
+
+COLUMNS = ["dx_um", "particles", "case", "concentration_mEq_l", "tip_radial_stress_kPa", "tip_peak_radial_stress_kPa",
+           "top_circ_stress_kPa", "pool_volume_change", "residual"]
+
+
+def study(dx: float, bilayer: dict, numerics: dict, homeostasis: dict, swelling: dict, gag: dict, cases: dict,
+          pressure_mmHg: float, name: str = "convergence") -> pd.DataFrame:
+    """Rows of ``results/swelling/convergence.csv`` for one particle spacing ``dx`` [um] (converted stage only)."""
+    p = dict(bilayer, dx_um=float(dx))
+    wall = artery.bilayer_model(p, numerics, name=name)
+    h = protocols.homeostasis(wall, numerics, homeostasis)
+    start = protocols.pressurise(wall, h.state, pressure_mmHg, numerics)
+    tables = []
+    for case, entry in cases.items():
+        pool = artery.pool_sector(entry)
+        model = artery.bilayer_model(p, numerics, name=f"{name}_{case}", pool=pool, gag=gag)
+        table = protocols.swell_pool(model, solver.State(start.load, start.x, None, None), pool, numerics, swelling,
+                                     gag)
+        table = table[table.stage == "converted"].assign(dx_um=float(dx), particles=model.n, case=case)
+        tables.append(table)
+    out = pd.concat(tables, ignore_index=True)
+    return out[COLUMNS + [c for c in out.columns if c not in COLUMNS]]
+
+
+def bar(table: pd.DataFrame, concentration: float, columns=("tip_radial_stress_kPa", "pool_volume_change")):
+    """Relative change of ``columns`` at ``concentration`` between the two finest spacings, per case."""
+    rows = []
+    fine = sorted(table.dx_um.unique())[:2]
+    for case, g in table.groupby("case", sort=False):
+        at = g[(g.concentration_mEq_l - concentration).abs() < 1e-9].set_index("dx_um")
+        row = dict(case=case, dx_fine_um=fine[0], dx_coarse_um=fine[1])
+        for col in columns:
+            a, b = at.loc[fine[0], col], at.loc[fine[1], col]
+            row[f"{col}_change"] = float(abs(a - b) / max(abs(a), 1e-12))
+        rows.append(row)
+    return pd.DataFrame(rows)

@@ -1,0 +1,81 @@
+VP = config["verification"]["pool"]
+ASPECT_RATIOS = [f"{r:g}" for r in VP["aspect_ratios"]]
+# the matrix of the verification is the elastin law of the bi-layered model (unweighted); GAG as in the study
+POOL_MATRIX = {
+    "shear_modulus_kPa": config["bilayer"]["elastin_shear_modulus_kPa"],
+    "lame_lambda_kPa": config["bilayer"]["lame_lambda_kPa"],
+    "hourglass_modulus_kPa": config["bilayer"]["hourglass_modulus_kPa"],
+}
+
+
+wildcard_constraints:
+    ratio="|".join(re.escape(r) for r in ASPECT_RATIOS),
+
+
+rule verify_pool_ratio:
+    """Pressurised elliptical inclusion (a/b = {ratio}) at every resolution, against Inglis (and Lame)."""
+    input:
+        code=SPHGAG,
+    output:
+        table="results/verification/runs/elliptic_pool_ab{ratio}.csv",
+        profiles="results/verification/runs/elliptic_pool_profiles_ab{ratio}.csv",
+        provenance="results/provenance/verify_pool_ab{ratio}.json",
+    params:
+        pool={k: v for k, v in VP.items() if k != "aspect_ratios"},
+        matrix=POOL_MATRIX,
+        gag={k: config["gag"][k] for k in ("shear_modulus_kPa", "hourglass_modulus_kPa")},
+        numerics=config["numerics"],
+    log:
+        "logs/verify_pool/ab{ratio}.log",
+    benchmark:
+        "results/benchmarks/verify_pool_ab{ratio}.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    script:
+        "../scripts/verify_pool.py"
+
+
+rule verify_pool:
+    """The pool verification of every aspect ratio in one table."""
+    input:
+        expand(rules.verify_pool_ratio.output.table, ratio=ASPECT_RATIOS),
+    output:
+        "results/verification/elliptic_pool.csv",
+    log:
+        "logs/verify_pool.log",
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/concat_tables.py"
+
+
+rule verify_pool_profiles:
+    """The stress profiles of the pool verification (axis and, for a circle, rings) in one table."""
+    input:
+        expand(rules.verify_pool_ratio.output.profiles, ratio=ASPECT_RATIOS),
+    output:
+        "results/verification/elliptic_pool_profiles.csv",
+    log:
+        "logs/verify_pool_profiles.log",
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/concat_tables.py"
+
+
+rule verification_pool_figure:
+    """SPH around a swelling inclusion against Inglis and Lame; errors against resolution with the observed order."""
+    input:
+        code=PLOTS,
+        table=rules.verify_pool.output[0],
+        profiles=rules.verify_pool_profiles.output[0],
+    output:
+        pdf="figures/verification_pool.pdf",
+        png="figures/verification_pool.png",
+    log:
+        "logs/verification_pool_figure.log",
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/verification_pool_figure.py"

@@ -1,0 +1,12 @@
+"""Rule swelling_convergence_figure: the pool stresses and volume change at every particle spacing."""
+
+import pandas as pd
+
+from sphgag import plots, runlog
+
+sm = snakemake  # noqa: F821
+with runlog.run("swelling_convergence_figure", sm.log[0]):
+    table = pd.read_csv(sm.input.table)
+    plots.finite_or_raise(table, ["tip_radial_stress_kPa", "pool_volume_change"], "swelling_convergence")
+    plots.save(plots.swelling_convergence(table), [sm.output.pdf, sm.output.png],
+               "Resolution study of the GAG-pool stresses, sphgag")

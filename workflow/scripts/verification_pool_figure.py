@@ -1,0 +1,12 @@
+"""Rule verification_pool_figure: SPH against Inglis and Lame, and the errors against resolution."""
+
+import pandas as pd
+
+from sphgag import plots, runlog
+
+sm = snakemake  # noqa: F821
+with runlog.run("verification_pool_figure", sm.log[0]):
+    table = pd.read_csv(sm.input.table)
+    plots.finite_or_raise(table, ["tip_stress_kPa", "rel_error", "traction_jump_kPa"], "verification_pool")
+    fig = plots.verification_pool(table, pd.read_csv(sm.input.profiles))
+    plots.save(fig, [sm.output.pdf, sm.output.png], "Verification of the pool stress field, sphgag")
