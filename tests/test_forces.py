@@ -6,6 +6,8 @@ import pytest
 from sphgag import forces, kernel, loading
 from sphgag.loading import Load, lumen_area_gradient
 
+from .conftest import assert_jacobian_matches_fd, direct_pair_sum
+
 rng = np.random.default_rng(2018)
 
 
@@ -153,36 +155,13 @@ def test_jacobian_matches_finite_differences(coarse_mean_model):
     m = coarse_mean_model
     load = Load(1.5, 60 * loading.MMHG_TO_KPA)
     x = m.layout.X * 1.3 + 0.4 * rng.standard_normal(m.layout.X.shape)
-    ev = m.evaluate(x, load)
-    J = m.block_matrix(m.jacobian(ev)).toarray()
-    eps = 1e-6
     cols = np.concatenate([rng.choice(2 * m.n, 10, replace=False), 2 * m.layout.inner_surface[:2]])
-    for k in cols:
-        xp, xm = x.copy().ravel(), x.copy().ravel()
-        xp[k] += eps
-        xm[k] -= eps
-        ep, em = m.evaluate(xp.reshape(-1, 2), load), m.evaluate(xm.reshape(-1, 2), load)
-        fd = ((ep.f_int + ep.f_ext) - (em.f_int + em.f_ext)).ravel() / (2 * eps)
-        assert np.abs(fd - J[:, k]).max() <= 1e-6 * np.abs(fd).max()
+    assert_jacobian_matches_fd(m, load, x, cols)
 
 
 def test_mirror_ghosts_and_half_list_match_a_direct_sum(coarse_mean_model):
     """The fused half-list kernel equals the directed per-entry formula of eqs. (2.11), (2.14)."""
     m = coarse_mean_model
-    nb = m.nb
-    load = Load(1.2, 0.0)
     x = m.layout.X * 1.1 + 0.3 * rng.standard_normal(m.layout.X.shape)
-    ev = m.evaluate(x, load)
-    _, hgc, _ = m.material(load)
-    V = m.layout.volume
-    f = np.zeros_like(x)
-    owner = np.repeat(np.arange(m.n), nb.counts())
-    for e in range(nb.n_entries):
-        i, j, M = owner[e], nb.nbr[e], nb.mirror[e]
-        r = M * x[j] - x[i]
-        n = r / np.linalg.norm(r)
-        delta = (ev.F[i] @ nb.R[e] - r) @ n
-        t = V[i] * ev.P[i] @ nb.a[e] - hgc[e] * delta * n
-        f[i] += t
-        f[j] -= M * t
-    assert np.abs(f - ev.f_int).max() <= 1e-10 * np.abs(f).max()
+    f, f_kernel = direct_pair_sum(m, x, Load(1.2, 0.0))
+    assert np.abs(f - f_kernel).max() <= 1e-10 * np.abs(f).max()

@@ -71,29 +71,29 @@ class PairData:
 NO_EXTRA_STRESS = np.empty((0, 4))
 
 
-def evaluate_forces(x, V, nb, pd: PairData, lz, cth, sth, props, xe, fe, FP, f, extra=NO_EXTRA_STRESS, hg=None):
+def evaluate_forces(x, V, nb, pd: PairData, lz, cth, sth, props, xe, fe, FP, f, extra=NO_EXTRA_STRESS, ah=None):
     """One force evaluation (see :func:`forces_and_stresses`); fills FP = (F, P, F~) and f.
 
     ``extra`` (N, 4), if given, is added to every particle's P before the forces
     are formed (the viscous stress of section 2.3 in :mod:`sphgag.dynamics`).
-    ``hg`` = ``(ah, split)`` of :func:`sphgag.kernel.hourglass_gradients` (default:
-    the hourglass penalty uses the full stencil).
+    ``ah``: the hourglass stencil's gradients of :func:`sphgag.kernel.hourglass_gradients`
+    (default: the full stencil).
     """
-    ah, split = (nb.a, False) if hg is None else hg
-    return forces_and_stresses(x, nb.ptr, nb.ext, nb.a, ah, split, pd.pair_ptr, pd.pair_j, pd.pair_geo, pd.pair_hgc,
+    ah = nb.a if ah is None else ah
+    return forces_and_stresses(x, nb.ptr, nb.ext, nb.a, ah, pd.pair_ptr, pd.pair_j, pd.pair_geo, pd.pair_hgc,
                                pd.solo_ptr, pd.solo_j, pd.solo_geo, pd.solo_hgc, nb.ghost_owner, nb.ghost_mirror,
                                lz, cth, sth, props, extra, xe, fe, FP, f)
 
 
 @njit(cache=True, fastmath=True, error_model="numpy")
-def forces_and_stresses(x, ptr, ext, a, ah, split, pair_ptr, pair_j, pair_geo, pair_hgc, solo_ptr, solo_j, solo_geo,
+def forces_and_stresses(x, ptr, ext, a, ah, pair_ptr, pair_j, pair_geo, pair_hgc, solo_ptr, solo_j, solo_geo,
                         solo_hgc, ghost_owner, ghost_mirror, lz, cth, sth, props, extra, xe, fe, FP, f):
     """One force evaluation: F (eq. 2.9), P (eq. 2.10) and the forces of eqs. (2.11), (2.14).
 
     Pass 1, per particle: ``F_i = sum_j (x_j - x_i) (x) a_ij`` over its stencil,
     then ``P_i`` from its material row, and the hourglass deformation gradient
-    ``F~_i`` from the weighted stencil ``ah`` (equal to ``F_i`` unless ``split``;
-    :func:`sphgag.kernel.hourglass_gradients`); ``FP[i] = (F_i, P_i, F~_i)`` (row-major).
+    ``F~_i`` from the weighted stencil ``ah`` (:func:`sphgag.kernel.hourglass_gradients`;
+    ``ah = a`` without a GAG/tissue interface); ``FP[i] = (F_i, P_i, F~_i)`` (row-major).
     Pass 2, over the half list of real pairs: the two directed pair vectors
     ``t_ij = V_i P_i a_ij - c_ij delta_ij n_ij`` (``f_i += t_ij``, ``f_j -= t_ij``)
     and ``t_ji`` share the separation and the division, so each pair is
@@ -115,6 +115,7 @@ def forces_and_stresses(x, ptr, ext, a, ah, split, pair_ptr, pair_j, pair_geo, p
     for i in range(n):
         xi0, xi1 = xe[i, 0], xe[i, 1]
         f00 = f01 = f10 = f11 = 0.0
+        h00 = h01 = h10 = h11 = 0.0
         for e in range(ptr[i], ptr[i + 1]):
             j = ext[e]
             d0 = xe[j, 0] - xi0
@@ -123,20 +124,12 @@ def forces_and_stresses(x, ptr, ext, a, ah, split, pair_ptr, pair_j, pair_geo, p
             f01 += d0 * a[e, 1]
             f10 += d1 * a[e, 0]
             f11 += d1 * a[e, 1]
+            h00 += d0 * ah[e, 0]
+            h01 += d0 * ah[e, 1]
+            h10 += d1 * ah[e, 0]
+            h11 += d1 * ah[e, 1]
         FP[i, 0], FP[i, 1], FP[i, 2], FP[i, 3] = f00, f01, f10, f11
-        if split:
-            h00 = h01 = h10 = h11 = 0.0
-            for e in range(ptr[i], ptr[i + 1]):
-                j = ext[e]
-                d0 = xe[j, 0] - xi0
-                d1 = xe[j, 1] - xi1
-                h00 += d0 * ah[e, 0]
-                h01 += d0 * ah[e, 1]
-                h10 += d1 * ah[e, 0]
-                h11 += d1 * ah[e, 1]
-            FP[i, 8], FP[i, 9], FP[i, 10], FP[i, 11] = h00, h01, h10, h11
-        else:
-            FP[i, 8], FP[i, 9], FP[i, 10], FP[i, 11] = f00, f01, f10, f11
+        FP[i, 8], FP[i, 9], FP[i, 10], FP[i, 11] = h00, h01, h10, h11
         det = f00 * f11 - f01 * f10
         if det > 0.0:
             dmin = min(dmin, det)

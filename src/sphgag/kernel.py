@@ -181,18 +181,18 @@ def hourglass_gradients(nb: "Neighbours", V, tissue):
     any deformation that is affine on each side. The elastic ``F`` (eq. 2.9)
     keeps the full stencil: the two materials stay coupled through it.
 
-    Returns ``(beta, ah, sh, split)``: per-entry weights, weighted corrected
-    gradients ``ah`` (like ``nb.a``) and their sums ``sh``, and whether any
-    weight differs from 1 (if not, ``ah`` is ``nb.a``).
+    Returns ``(beta, ah, sh)``: per-entry weights, weighted corrected gradients
+    ``ah`` (like ``nb.a``) and their sums ``sh``; if every weight is 1, ``ah``
+    and ``sh`` are ``nb.a`` and ``nb.s`` themselves.
     """
     owner = np.repeat(np.arange(V.size), np.diff(nb.ptr))
     beta = 1.0 - np.abs(tissue[owner] - tissue[nb.nbr])
     if np.all(beta == 1.0):
-        return beta, nb.a, nb.s, False
+        return beta, nb.a, nb.s
     ah = np.empty_like(nb.a)
     sh = np.empty_like(nb.s)
     _hourglass_gradients(V, nb.h, nb.ptr, nb.nbr, nb.R, nb.a, nb.s, beta, ah, sh)
-    return beta, ah, sh, True
+    return beta, ah, sh
 
 
 @dataclass(frozen=True)

@@ -116,14 +116,14 @@ class Model:
             hgc = np.empty(self.nb.n_entries)
             forces.hourglass_coefficients(V, self.nb.ptr, self.nb.nbr, self.nb.R, self.nb.w, props,
                                           self.hourglass_alpha, hgc)
-            beta, ah, sh, split = kernel.hourglass_gradients(self.nb, V, props[:, materials.TISSUE])
+            beta, ah, sh = kernel.hourglass_gradients(self.nb, V, props[:, materials.TISSUE])
             hgc *= beta
             pairs = forces.PairData.pack(self.nb, V, hgc)
-            self._cache.update(key=key, props=props, hgc=hgc, pairs=pairs, hg=(ah, sh, split))
+            self._cache.update(key=key, props=props, hgc=hgc, pairs=pairs, hg=(ah, sh))
         return self._cache["props"], self._cache["hgc"], self._cache["pairs"]
 
     def hourglass_stencil(self, load: Load):
-        """``(ah, sh, split)``: the hourglass stencil's corrected gradients for ``load`` (see :meth:`material`)."""
+        """``(ah, sh)``: the hourglass stencil's corrected gradients for ``load`` (see :meth:`material`)."""
         self.material(load)
         return self._cache["hg"]
 
@@ -149,10 +149,10 @@ class Model:
         FP = np.empty((n, 12))
         f = np.empty((n, 2))
         props, hgc, pairs = self.material(load)
-        ah, _, split = self.hourglass_stencil(load)
+        ah = self.hourglass_stencil(load)[0]
         extra = forces.NO_EXTRA_STRESS if extra_stress is None else extra_stress
         min_det = forces.evaluate_forces(x, lay.volume, nb, pairs, load.axial_stretch, self.cth, self.sth, props,
-                                         self._xe, self._fe, FP, f, extra, (ah, split))
+                                         self._xe, self._fe, FP, f, extra, ah)
         F, P = FP[:, :4].reshape(n, 2, 2), FP[:, 4:8].reshape(n, 2, 2)
         Fh = FP[:, 8:].reshape(n, 2, 2)
         p = load.pressure_kPa or 0.0
@@ -165,7 +165,7 @@ class Model:
         """``d(f_int + f_ext)/dx`` (exact) as the 2 x 2 blocks of the pattern :meth:`block_matrix` uses."""
         nb, lay, load = self.nb, self.layout, ev.load
         props, hgc, _ = self.material(load)
-        ah, sh, _ = self.hourglass_stencil(load)
+        ah, sh = self.hourglass_stencil(load)
         data = np.zeros((self.block_indices.size, 2, 2))
         forces.jacobian_blocks(
             ev.x, lay.volume, nb.ptr, nb.nbr, nb.mirror, nb.a, nb.s, ah, sh, nb.R, hgc, ev.F, ev.F_hourglass,
