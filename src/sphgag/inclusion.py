@@ -42,7 +42,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from . import inglis, kernel, materials, measure, solver
+from . import inglis, kernel, materials, measure, protocols, solver
 from .loading import Load
 from .model import Model
 
@@ -201,9 +201,8 @@ def swell(model: Model, pressure_kPa: float, numerics: dict) -> solver.State:
     """The converged state with the inclusion at swelling pressure ``pressure_kPa`` (one load step from rest)."""
     load = Load(1.0, 0.0, material=(("swelling_pressure", float(pressure_kPa)),))
     rest = Load(1.0, 0.0, material=(("swelling_pressure", 0.0),))
-    return solver.follow_path(model, model.layout.X, rest, [load], tol=numerics["tolerance"],
-                              max_iter=numerics["max_newton_iterations"],
-                              max_bisections=numerics["max_bisections"], run=model.name)[-1]
+    return solver.follow_path(model, model.layout.X, rest, [load], run=model.name,
+                              **protocols.solver_options(numerics))[-1]
 
 
 def normal_stress(lay: EllipseLayout, ev) -> tuple[np.ndarray, np.ndarray]:

@@ -87,6 +87,7 @@ class Model:
     hourglass_alpha: float
     boundary: Callable[[Load], tuple] | None = None
     _cache: dict = field(default_factory=dict, repr=False)
+    factorisation: object = field(default=None, repr=False)  # the solver's last LU, for reuse (solver.newton)
 
     def __post_init__(self):
         self.cth = np.cos(self.layout.theta)

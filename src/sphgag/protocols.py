@@ -28,7 +28,7 @@ log = logging.getLogger("sphgag")
 
 def solver_options(numerics: dict) -> dict:
     return dict(tol=numerics["tolerance"], max_iter=numerics["max_newton_iterations"],
-                max_bisections=numerics["max_bisections"])
+                max_bisections=numerics["max_bisections"], reuse=numerics["reuse_factorisation"])
 
 
 def pressure_points(calibration: dict) -> np.ndarray:

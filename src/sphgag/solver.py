@@ -93,8 +93,42 @@ def _check(model: Model, ev: Evaluation, run: str):
         raise Diverged(run, ev.load, "non-finite forces")
 
 
+@dataclass
+class Factorisation:
+    """A sparse LU of the (possibly damped) Jacobian with its constraint rows, kept for reuse.
+
+    ``constrained`` are the particles whose rows were replaced by ``scale (x - target)``;
+    the factorisation can only serve evaluations with the same constrained set.
+    """
+
+    lu: object
+    scale: float
+    constrained: np.ndarray
+    damping: float
+
+    def serves(self, ev: Evaluation) -> bool:
+        return self.damping == 0.0 and np.array_equal(self.constrained, ev.constrained)
+
+    def step(self, ev: Evaluation) -> np.ndarray:
+        """``dx = -K^-1 (f_int + f_ext)`` (constrained particles move to their targets)."""
+        rhs = -(ev.f_int + ev.f_ext)
+        cons = ev.constrained
+        if cons.size:
+            rhs[cons] = self.scale * (ev.target - ev.x[cons])
+        return self.lu.solve(rhs.ravel()).reshape(-1, 2)
+
+
+# Chord steps (stale factorisation) must cut the relative residual by CHORD_CONTRACTION per step on average: the
+# k-th chord step (k = 0, 1, ...) since the last fresh Jacobian is kept if the residual is below
+# 2 CHORD_CONTRACTION^k times the residual the sequence started from (the first step may even rise a little: chord
+# residuals are not monotone, and the next steps usually contract fast). At most CHORD_STEPS per state
+# (a chord step costs one force evaluation and one LU solve, a fresh Newton step 20-30 times more).
+CHORD_CONTRACTION = 0.5
+CHORD_STEPS = 12
+
+
 def newton(model: Model, x0: np.ndarray, load: Load, *, tol: float = 1e-4, max_iter: int = 30,
-           run: str | None = None) -> tuple[np.ndarray, Evaluation, Convergence]:
+           run: str | None = None, reuse: bool = False) -> tuple[np.ndarray, Evaluation, Convergence]:
     """Equilibrium at ``load`` starting from ``x0``.
 
     Newton's method with the exact Jacobian, a backtracking line search on
@@ -103,29 +137,51 @@ def newton(model: Model, x0: np.ndarray, load: Load, *, tol: float = 1e-4, max_i
     damping of the linear system (``J - m diag|J|``), relaxed again as soon as
     full steps succeed. Damping only shapes the steps; a state is accepted on
     the undamped residual alone.
+
+    With ``reuse``, the last undamped factorisation of the model (from this
+    or an earlier state) is tried first: a chord step ``dx = -K_old^-1 r`` on the
+    exact residual, kept while the chord steps cut the relative residual by
+    ``CHORD_CONTRACTION`` per step on average (at most ``CHORD_STEPS`` per
+    state). Otherwise (and whenever no factorisation fits)
+    the iteration is an ordinary Newton step with a fresh Jacobian, whose
+    factorisation is then kept. The acceptance test is the same in both cases.
     """
     run = run or model.name
     t0 = time.perf_counter()
     x = x0.copy()
     ev = model.evaluate(x, load)
     _check(model, ev, run)
-    n_eval, n_jac, damping = 1, 0, 0.0
-    for it in range(max_iter + 1):
+    n_eval, n_jac, damping, chords = 1, 0, 0.0, 0
+    run_start, run_length = relative_residual(model, ev), 0  # the current sequence of chord steps
+    for it in range(max_iter + CHORD_STEPS + 1):
         rel = relative_residual(model, ev)
         if rel < tol and ev.constraint_error < 1e-9 * model.layout.outer_radius:
             return x, ev, Convergence(rel, it, n_eval, n_jac, time.perf_counter() - t0)
-        if it == max_iter:
+        if it - chords == max_iter:
             break
+        fac = model.factorisation
+        if reuse and fac is not None and fac.serves(ev) and chords < CHORD_STEPS:
+            dx = fac.step(ev)
+            ev_try = _trial(model, ev, dx, 1.0, _bending(model, ev.x, dx))
+            n_eval += 1
+            rel_try = relative_residual(model, ev_try) if ev_try is not None else np.inf
+            if rel_try < 2.0 * CHORD_CONTRACTION ** run_length * run_start:
+                log.debug("[%s] chord %d: residual %.3e", run, it, rel)
+                x, ev, chords, run_length = ev_try.x, ev_try, chords + 1, run_length + 1
+                continue
+            log.debug("[%s] chord %d rejected: residual %.3e -> %.3e", run, it, rel, rel_try)
         data = model.jacobian(ev)
         n_jac += 1
         while True:
-            dx, scale = _newton_step(model, ev, data.copy(), damping, run)
-            step, ev_try, evals = _line_search(model, ev, dx, scale)
+            fac = _factorise(model, ev, data.copy(), damping, run)
+            dx = fac.step(ev)
+            step, ev_try, evals = _line_search(model, ev, dx, fac.scale)
             n_eval += evals
             if step >= 0.125 or damping >= 1e4:
                 break
             damping = max(10.0 * damping, 1e-4)  # steps cut hard: damp the soft modes and solve again
             log.debug("[%s] newton %d: step %.3g, damping raised to %.0e", run, it, step, damping)
+        model.factorisation = fac if fac.damping == 0.0 else None
         if ev_try is None:
             raise NotConverged(run, load, f"line search failed at Newton iteration {it} (relative residual {rel:.3g})")
         if step == 1.0:
@@ -133,31 +189,28 @@ def newton(model: Model, x0: np.ndarray, load: Load, *, tol: float = 1e-4, max_i
         log.debug("[%s] newton %d: residual %.3e, step %.3g, damping %.0e, |dx|max %.3g", run, it, rel, step,
                   damping, np.abs(dx).max())
         x, ev = ev_try.x, ev_try
-    raise NotConverged(run, load, f"no convergence in {max_iter} Newton iterations (relative residual {rel:.3g})")
+        run_start, run_length = relative_residual(model, ev), 0
+    raise NotConverged(run, load, f"no convergence in {max_iter} Newton iterations (and {chords} chord steps; "
+                                  f"relative residual {rel:.3g})")
 
 
-def _newton_step(model: Model, ev: Evaluation, data: np.ndarray, damping: float, run: str):
-    """Solve ``(J - damping diag|J|) dx = -(f_int + f_ext)``; constrained rows move to their targets.
-
-    Returns the step and the stiffness scale used for the constraint rows.
-    """
+def _factorise(model: Model, ev: Evaluation, data: np.ndarray, damping: float, run: str) -> Factorisation:
+    """LU of ``J - damping diag|J|`` with the constrained rows replaced by ``scale (x - target)``."""
     d = data[model.block_diagonal]
     scale = 0.5 * (np.abs(d[:, 0, 0]).mean() + np.abs(d[:, 1, 1]).mean())
     if damping:
         for k in range(2):
             data[model.block_diagonal, k, k] -= damping * np.abs(d[:, k, k])
-    rhs = -(ev.f_int + ev.f_ext)
     cons = ev.constrained
     if cons.size:
         # constrained particles: rows become scale * (x - target) = 0
         data[model.row_blocks(cons)] = 0.0
         data[model.block_diagonal[cons]] = scale * np.eye(2)
-        rhs[cons] = scale * (ev.target - ev.x[cons])
     try:
         lu = spla.splu(model.block_matrix(data).tocsc(), permc_spec="NATURAL")
     except RuntimeError as exc:  # exactly singular factor
         raise NotConverged(run, ev.load, f"singular Jacobian ({exc})") from exc
-    return lu.solve(rhs.ravel()).reshape(-1, 2), scale
+    return Factorisation(lu, scale, cons.copy(), damping)
 
 
 def _line_search(model: Model, ev: Evaluation, dx: np.ndarray, scale: float, max_halvings: int = 30):
@@ -165,24 +218,34 @@ def _line_search(model: Model, ev: Evaluation, dx: np.ndarray, scale: float, max
 
     Returns ``(step, evaluation, evaluations used)``; the evaluation is None if no step was accepted.
     """
-    x = ev.x
-    inner = model.layout.inner_surface
-    if inner.size:
-        rho_in = np.linalg.norm(x[inner], axis=1)
-        r_in = rho_in.mean()
-        dr_in = float(np.mean((dx[inner] * x[inner]).sum(axis=1) / rho_in))
-    else:  # no lumen: no radial expansion to correct
-        r_in = dr_in = 0.0
+    bend = _bending(model, ev.x, dx)
     merit0 = _merit(ev, scale)
     step = 1.0
     for k in range(1, max_halvings + 1):
-        with np.errstate(invalid="ignore", over="ignore"):  # a trial step may be absurd; it is rejected
-            x_try = x + step * dx + (_radial_correction(x, r_in, step * dr_in) if dr_in else 0.0)
-            ev_try = model.evaluate(x_try, ev.load)
-            if ev_try.min_det > 0.0 and ev_try.finite and _merit(ev_try, scale) <= (1.0 - 1e-4 * step) * merit0:
-                return step, ev_try, k
+        ev_try = _trial(model, ev, dx, step, bend)
+        if ev_try is not None and _merit(ev_try, scale) <= (1.0 - 1e-4 * step) * merit0:
+            return step, ev_try, k
         step *= 0.5
     return 0.0, None, max_halvings
+
+
+def _bending(model: Model, x: np.ndarray, dx: np.ndarray):
+    """``(r_in, dr_in)``: mean inner radius and the step's mean radial expansion there (see :func:`_radial_correction`)."""
+    inner = model.layout.inner_surface
+    if not inner.size:  # no lumen: no radial expansion to correct
+        return 0.0, 0.0
+    rho_in = np.linalg.norm(x[inner], axis=1)
+    return rho_in.mean(), float(np.mean((dx[inner] * x[inner]).sum(axis=1) / rho_in))
+
+
+def _trial(model: Model, ev: Evaluation, dx: np.ndarray, step: float, bend) -> Evaluation | None:
+    """The evaluation at ``x + step dx`` (bent onto the area-preserving radial map), or None if it is
+    inadmissible (non-finite, or an inverted particle)."""
+    r_in, dr_in = bend
+    with np.errstate(invalid="ignore", over="ignore"):  # a trial step may be absurd; it is rejected
+        x_try = ev.x + step * dx + (_radial_correction(ev.x, r_in, step * dr_in) if dr_in else 0.0)
+        ev_try = model.evaluate(x_try, ev.load)
+    return ev_try if ev_try.min_det > 0.0 and ev_try.finite else None
 
 
 def _radial_correction(x, r_in, dr):
@@ -221,18 +284,18 @@ class State:
 
 def follow_path(model: Model, x0: np.ndarray, start: Load, targets: Sequence[Load], *, tol: float = 1e-4,
                 max_iter: int = 30, max_bisections: int = 10, run: str | None = None,
-                on_state: Callable[[State], None] | None = None) -> list[State]:
+                on_state: Callable[[State], None] | None = None, reuse: bool = False) -> list[State]:
     """Converged states at every load of ``targets``, moving from ``start`` (state ``x0``).
 
     Each increment is solved with :func:`newton`; an increment that fails is
     split in two (recursively, up to ``max_bisections`` levels). Only the
-    requested loads are returned (and passed to ``on_state``).
+    requested loads are returned (and passed to ``on_state``). ``reuse``: see :func:`newton`.
     """
     run = run or model.name
     x, current = x0.copy(), start
     states = []
     for target in targets:
-        x, ev, conv = _reach(model, x, current, target, tol, max_iter, max_bisections, run)
+        x, ev, conv = _reach(model, x, current, target, tol, max_iter, max_bisections, run, reuse)
         current = target
         state = State(target, x.copy(), ev, conv)
         states.append(state)
@@ -241,16 +304,16 @@ def follow_path(model: Model, x0: np.ndarray, start: Load, targets: Sequence[Loa
     return states
 
 
-def _reach(model, x, current, target, tol, max_iter, depth, run):
+def _reach(model, x, current, target, tol, max_iter, depth, run, reuse):
     try:
-        return newton(model, x, target, tol=tol, max_iter=max_iter, run=run)
+        return newton(model, x, target, tol=tol, max_iter=max_iter, run=run, reuse=reuse)
     except (NotConverged, Inverted, Diverged) as exc:
         if depth == 0:
             raise NotConverged(run, target, f"no convergence after bisecting the load increment ({exc.reason})") from exc
         log.debug("[%s] bisecting increment to %s (%s)", run, describe(target), exc.reason)
     middle = current.lerp(target, 0.5)
-    xm, evm, cm = _reach(model, x, current, middle, tol, max_iter, depth - 1, run)
-    x2, ev2, c2 = _reach(model, xm, middle, target, tol, max_iter, depth - 1, run)
+    xm, evm, cm = _reach(model, x, current, middle, tol, max_iter, depth - 1, run, reuse)
+    x2, ev2, c2 = _reach(model, xm, middle, target, tol, max_iter, depth - 1, run, reuse)
     total = Convergence(c2.residual, cm.iterations + c2.iterations, cm.force_evaluations + c2.force_evaluations,
                         cm.jacobians + c2.jacobians, cm.seconds + c2.seconds)
     return x2, ev2, total
