@@ -31,6 +31,7 @@ from dataclasses import dataclass
 from typing import Callable, Sequence
 
 import numpy as np
+import scipy.linalg.lapack as lapack
 import scipy.sparse.linalg as spla
 
 from .loading import Load
@@ -95,13 +96,14 @@ def _check(model: Model, ev: Evaluation, run: str):
 
 @dataclass
 class Factorisation:
-    """A sparse LU of the (possibly damped) Jacobian with its constraint rows, kept for reuse.
+    """An LU factorisation of the (possibly damped) Jacobian with its constraint rows, kept for reuse.
 
-    ``constrained`` are the particles whose rows were replaced by ``scale (x - target)``;
-    the factorisation can only serve evaluations with the same constrained set.
+    ``solve(rhs)`` applies the inverse; ``constrained`` are the particles whose rows
+    were replaced by ``scale (x - target)``, so the factorisation can only serve
+    evaluations with the same constrained set.
     """
 
-    lu: object
+    solve: Callable[[np.ndarray], np.ndarray]
     scale: float
     constrained: np.ndarray
     damping: float
@@ -115,7 +117,33 @@ class Factorisation:
         cons = ev.constrained
         if cons.size:
             rhs[cons] = self.scale * (ev.target - ev.x[cons])
-        return self.lu.solve(rhs.ravel()).reshape(-1, 2)
+        return self.solve(rhs.ravel()).reshape(-1, 2)
+
+
+# The Jacobian is factorised as a band matrix (LAPACK gbtrf, partial pivoting) when the band is well filled and its
+# storage stays below BAND_BYTES: the artery's particles are numbered by angle, so its band is narrow and ~40 %
+# full, and the banded LU 2-3 times faster than SuperLU's; sparser bands (the inclusion's rings) use SuperLU.
+BAND_BYTES = 512 * 2**20
+BAND_FILL = 0.2
+
+
+def _lu(model: Model, data: np.ndarray):
+    """A solver for the block matrix ``data``: banded LAPACK LU if the band is narrow, SuperLU otherwise.
+    Raises ``RuntimeError`` for an exactly singular matrix."""
+    kl, ku, index = model.band
+    n2 = 2 * model.n
+    if (2 * kl + ku + 1) * n2 * 8 <= BAND_BYTES and index.size >= BAND_FILL * n2 * (kl + ku + 1):
+        ab = np.zeros((2 * kl + ku + 1, n2))
+        ab.flat[index] = data.ravel()
+        lub, piv, info = lapack.dgbtrf(ab, kl, ku, overwrite_ab=True)
+        if info > 0:
+            raise RuntimeError(f"U({info},{info}) is exactly zero")
+
+        def solve(rhs):
+            return lapack.dgbtrs(lub, kl, ku, rhs, piv)[0]
+
+        return solve
+    return spla.splu(model.block_matrix(data).tocsc(), permc_spec="NATURAL").solve
 
 
 # Chord steps (stale factorisation) must cut the relative residual by CHORD_CONTRACTION per step on average: the
@@ -207,10 +235,10 @@ def _factorise(model: Model, ev: Evaluation, data: np.ndarray, damping: float, r
         data[model.row_blocks(cons)] = 0.0
         data[model.block_diagonal[cons]] = scale * np.eye(2)
     try:
-        lu = spla.splu(model.block_matrix(data).tocsc(), permc_spec="NATURAL")
+        solve = _lu(model, data)
     except RuntimeError as exc:  # exactly singular factor
         raise NotConverged(run, ev.load, f"singular Jacobian ({exc})") from exc
-    return Factorisation(lu, scale, cons.copy(), damping)
+    return Factorisation(solve, scale, cons.copy(), damping)
 
 
 def _line_search(model: Model, ev: Evaluation, dx: np.ndarray, scale: float, max_halvings: int = 30):
