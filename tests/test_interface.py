@@ -95,6 +95,20 @@ def test_split_stencils_keep_the_patch_test_and_conservation():
 
 # --- the pool stress field against closed forms (CI resolution b/dx = 8) ------------------------------------
 
+
+@pytest.mark.parametrize("ratio", [1.0, 3.0])
+def test_ellipse_layout_volumes_and_interface(ratio):
+    """Cell volumes sum to the exact quarter ellipse; the inclusion's particles fill exactly its area (its
+    boundary is a cell boundary), and the spacing along the rings is about dx."""
+    a, b, dx, extent = 15.0 * ratio, 15.0, 15.0 / 8, 45.0
+    lay = inclusion.ellipse_layout(a, b, dx, extent)
+    assert lay.volume.sum() == pytest.approx(inclusion.quarter_ellipse_area(a, b, extent), rel=1e-12)
+    assert lay.volume[lay.inclusion].sum() == pytest.approx(0.25 * np.pi * a * b, rel=1e-12)
+    assert np.all(lay.s[lay.inclusion] < 0) and np.all(lay.s[~lay.inclusion] > 0)
+    ring = lay.ring_members(lay.first_matrix_ring)
+    gaps = np.linalg.norm(np.diff(lay.X[ring], axis=0), axis=1)
+    assert np.all((gaps > 0.8 * dx) & (gaps < 1.25 * dx))
+
 MATRIX = dict(shear_modulus_kPa=89.71, lame_lambda_kPa=10000.0, hourglass_modulus_kPa=89.71)
 GAG = dict(shear_modulus_kPa=0.1, hourglass_modulus_kPa=89.71)
 

@@ -30,8 +30,15 @@ CONTRACT = {
         "model", "case", "pressure_mmHg", "stage", "concentration_mEq_l", "swelling_pressure_kPa",
         "tip_radial_stress_kPa", "top_circ_stress_kPa", "residual"],
     "results/claims.csv": ["claim_id", "statement", "paper_value", "our_value", "holds"],
+    "results/verification/elliptic_pool.csv": [
+        "dx_um", "semi_axis_a_um", "semi_axis_b_um", "pressure_kPa", "tip_stress_kPa", "reference_kPa", "rel_error",
+        "traction_jump_kPa", "residual"],
+    "results/swelling/convergence.csv": [
+        "dx_um", "particles", "case", "concentration_mEq_l", "tip_radial_stress_kPa", "tip_peak_radial_stress_kPa",
+        "top_circ_stress_kPa", "pool_volume_change", "residual"],
 }
-FIGURES = [f"figures/{name}.{ext}" for name in ("fig1", "fig3a_mean", "fig3b", "fig3", "fig4") for ext in ("pdf", "png")]
+FIGURES = [f"figures/{name}.{ext}" for name in ("fig1", "fig3a_mean", "fig3b", "fig3", "fig4", "verification_pool",
+                                               "swelling_convergence") for ext in ("pdf", "png")]
 
 
 def snakemake(workdir, *args, configfile=ROOT / "config" / "ci.yaml"):
@@ -64,7 +71,8 @@ def test_outputs_follow_the_data_contracts(workdir, ci_config):
         assert set(columns) <= set(table.columns), path
         assert len(table) > 0
     for table in ("calibration/mean_pressure_diameter.csv", "calibration/bilayer_pressure_diameter.csv",
-                  "homeostasis/summary.csv", "swelling/tip_stress.csv"):
+                  "homeostasis/summary.csv", "swelling/tip_stress.csv", "swelling/convergence.csv",
+                  "verification/elliptic_pool.csv"):
         states = pd.read_csv(workdir / "results" / table)
         assert (states.residual < ci_config["numerics"]["tolerance"]).all(), table
     transmural = pd.read_csv(workdir / "results/calibration/transmural.csv")

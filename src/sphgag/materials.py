@@ -406,10 +406,3 @@ def swelling_pressure(c_fc, c_bath, temperature_K=310.0):
     c = np.asarray(c_fc, dtype=float)
     return GAS_CONSTANT * temperature_K * (np.sqrt(c * c + c_bath * c_bath) - c_bath) / 1000.0
 
-
-@njit(cache=True, fastmath=True, error_model="numpy")
-def first_piola_all(F, lz, cth, sth, props, P):
-    """``P_i = P(F_i)`` (eq. 2.10) of every particle for given deformation gradients ``F`` (N, 2, 2)."""
-    for i in range(F.shape[0]):
-        P[i, 0, 0], P[i, 0, 1], P[i, 1, 0], P[i, 1, 1] = first_piola(F[i, 0, 0], F[i, 0, 1], F[i, 1, 0], F[i, 1, 1],
-                                                                     lz, cth[i], sth[i], props, i)
