@@ -24,7 +24,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
+from numba import njit, prange
 
 from .materials import HG_E, first_piola, local_deformation, strain_energy, tangent_modulus
 
@@ -85,6 +85,44 @@ def evaluate_forces(x, V, nb, pd: PairData, lz, cth, sth, props, xe, fe, FP, f, 
                                lz, cth, sth, props, extra, xe, fe, FP, f)
 
 
+@njit(cache=True, fastmath=True, error_model="numpy", parallel=True)
+def _deformation_and_stress(xe, ptr, ext, a, ah, lz, cth, sth, props, extra, FP, n):
+    """Pass 1 of :func:`forces_and_stresses`, one particle at a time (parallel over particles, Numba threads):
+    ``FP[i] = (F_i, P_i, F~_i)``; returns the smallest det(F_2D) (NaN stress where det <= 0)."""
+    dets = np.empty(n)
+    for i in prange(n):
+        xi0, xi1 = xe[i, 0], xe[i, 1]
+        f00 = f01 = f10 = f11 = 0.0
+        h00 = h01 = h10 = h11 = 0.0
+        for e in range(ptr[i], ptr[i + 1]):
+            j = ext[e]
+            d0 = xe[j, 0] - xi0
+            d1 = xe[j, 1] - xi1
+            f00 += d0 * a[e, 0]
+            f01 += d0 * a[e, 1]
+            f10 += d1 * a[e, 0]
+            f11 += d1 * a[e, 1]
+            h00 += d0 * ah[e, 0]
+            h01 += d0 * ah[e, 1]
+            h10 += d1 * ah[e, 0]
+            h11 += d1 * ah[e, 1]
+        FP[i, 0], FP[i, 1], FP[i, 2], FP[i, 3] = f00, f01, f10, f11
+        FP[i, 8], FP[i, 9], FP[i, 10], FP[i, 11] = h00, h01, h10, h11
+        det = f00 * f11 - f01 * f10
+        dets[i] = det
+        if det > 0.0:
+            FP[i, 4], FP[i, 5], FP[i, 6], FP[i, 7] = first_piola(f00, f01, f10, f11, lz, cth[i], sth[i], props, i)
+            if extra.shape[0]:
+                for k in range(4):
+                    FP[i, 4 + k] += extra[i, k]
+        else:  # inverted (or NaN, which the caller detects from the positions and stresses)
+            FP[i, 4] = FP[i, 5] = FP[i, 6] = FP[i, 7] = np.nan
+    dmin = np.inf
+    for i in range(n):
+        dmin = min(dmin, dets[i])
+    return dmin
+
+
 @njit(cache=True, fastmath=True, error_model="numpy")
 def forces_and_stresses(x, ptr, ext, a, ah, pair_ptr, pair_j, pair_geo, pair_hgc, solo_ptr, solo_j, solo_geo,
                         solo_hgc, ghost_owner, ghost_mirror, lz, cth, sth, props, extra, xe, fe, FP, f):
@@ -111,35 +149,7 @@ def forces_and_stresses(x, ptr, ext, a, ah, pair_ptr, pair_j, pair_geo, pair_hgc
         o = ghost_owner[g]
         xe[n + g, 0] = ghost_mirror[g, 0] * x[o, 0]
         xe[n + g, 1] = ghost_mirror[g, 1] * x[o, 1]
-    dmin = np.inf
-    for i in range(n):
-        xi0, xi1 = xe[i, 0], xe[i, 1]
-        f00 = f01 = f10 = f11 = 0.0
-        h00 = h01 = h10 = h11 = 0.0
-        for e in range(ptr[i], ptr[i + 1]):
-            j = ext[e]
-            d0 = xe[j, 0] - xi0
-            d1 = xe[j, 1] - xi1
-            f00 += d0 * a[e, 0]
-            f01 += d0 * a[e, 1]
-            f10 += d1 * a[e, 0]
-            f11 += d1 * a[e, 1]
-            h00 += d0 * ah[e, 0]
-            h01 += d0 * ah[e, 1]
-            h10 += d1 * ah[e, 0]
-            h11 += d1 * ah[e, 1]
-        FP[i, 0], FP[i, 1], FP[i, 2], FP[i, 3] = f00, f01, f10, f11
-        FP[i, 8], FP[i, 9], FP[i, 10], FP[i, 11] = h00, h01, h10, h11
-        det = f00 * f11 - f01 * f10
-        if det > 0.0:
-            dmin = min(dmin, det)
-            FP[i, 4], FP[i, 5], FP[i, 6], FP[i, 7] = first_piola(f00, f01, f10, f11, lz, cth[i], sth[i], props, i)
-            if extra.shape[0]:
-                for k in range(4):
-                    FP[i, 4 + k] += extra[i, k]
-        else:  # inverted (or NaN, which the caller detects from the positions and stresses)
-            dmin = min(dmin, det)
-            FP[i, 4] = FP[i, 5] = FP[i, 6] = FP[i, 7] = np.nan
+    dmin = _deformation_and_stress(xe, ptr, ext, a, ah, lz, cth, sth, props, extra, FP, n)
     fe[:, :] = 0.0
     for i in range(n):
         xi0, xi1 = xe[i, 0], xe[i, 1]
