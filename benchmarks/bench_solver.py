@@ -10,7 +10,9 @@ under pressure control and measures, on one core:
   steps) and after converting one medial particle to GAG (conversion 0 -> 1 at
   c = 0, one increment, median of three), each starting as a run would, with the
   factorisation of the previous state, and solved as configured
-  (``numerics.reuse_factorisation``) and with fresh Newton steps only;
+  (``numerics.reuse_factorisation``) and with fresh Newton steps only; and after a
+  particle whose damage has reached D = 1 ((1 - D) W = 0, section 2.7) becomes GAG,
+  the conversion of delamination;
 * the process's peak memory.
 
 Prints a table and writes benchmarks/out/solver.json (a list of rows).
@@ -48,7 +50,8 @@ def measure(dx: float, config_path: str) -> dict:
     import numba
     import scipy.sparse.linalg as spla
 
-    from sphgag import artery, config, geometry, protocols, solver
+    from sphgag import artery, config, damage, geometry, materials, protocols, solver
+    from sphgag.model import Model
     from sphgag.loading import MMHG_TO_KPA, Load
 
     numba.set_num_threads(1)
@@ -102,6 +105,24 @@ def measure(dx: float, config_path: str) -> dict:
             solver.newton(model, x, converted, **opts)
             times.append(time.perf_counter() - t)
         row[f"state_after_conversion_ms{label}"] = 1e3 * float(np.median(times))
+        # the conversion of delamination: a particle whose damage has reached D = 1 ((1 - D) W = 0) becomes GAG
+        intact = model.props(load)
+        ruptured = damage.weaken(intact, np.isin(np.arange(model.n), model.props.pool).astype(float))
+        gag = ruptured.copy()
+        g = cfg["gag"]
+        materials.convert_to_gag(gag, model.props.pool, 1.0, g["shear_modulus_kPa"], g["hourglass_modulus_kPa"],
+                                 lame=g["lame_lambda_kPa"])
+        fixed = Model(model.name, model.layout, model.nb, ruptured, model.hourglass_alpha)
+        xd, evd, _ = solver.newton(fixed, x, load, **opts)
+        times = []
+        for _ in range(3):
+            fixed.set_props(ruptured)
+            fixed.factorisation = solver._factorise(fixed, evd, fixed.jacobian(evd), 0.0, model.name)
+            fixed.set_props(gag)
+            t = time.perf_counter()
+            solver.newton(fixed, xd, load, **opts)
+            times.append(time.perf_counter() - t)
+        row[f"state_after_ruptured_conversion_ms{label}"] = 1e3 * float(np.median(times))
     row["peak_memory_mb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
     return row
 
@@ -126,6 +147,8 @@ def main():
               f"state after +1 mmHg {r['state_after_load_step_ms']:.0f} ms "
               f"(fresh Newton {r['state_after_load_step_ms_fresh_newton']:.0f}), after one conversion "
               f"{r['state_after_conversion_ms']:.0f} ms (fresh {r['state_after_conversion_ms_fresh_newton']:.0f}), "
+              f"after a ruptured particle becomes GAG {r['state_after_ruptured_conversion_ms']:.0f} ms "
+              f"(fresh {r['state_after_ruptured_conversion_ms_fresh_newton']:.0f}), "
               f"peak {r['peak_memory_mb']:.0f} MB", flush=True)
     dest = ROOT / "benchmarks" / "out"
     dest.mkdir(exist_ok=True)
