@@ -180,9 +180,9 @@ def newton(model: Model, x0: np.ndarray, load: Load, *, tol: float = 1e-4, max_i
     ev = model.evaluate(x, load)
     _check(model, ev, run)
     n_eval, n_jac, damping, chords = 1, 0, 0.0, 0
-    run_start, run_length = relative_residual(model, ev), 0  # the current sequence of chord steps
+    rel = relative_residual(model, ev)
+    run_start, run_length = rel, 0  # the current sequence of chord steps
     for it in range(max_iter + CHORD_STEPS + 1):
-        rel = relative_residual(model, ev)
         if rel < tol and ev.constraint_error < 1e-9 * model.layout.outer_radius:
             return x, ev, Convergence(rel, it, n_eval, n_jac, time.perf_counter() - t0)
         if it - chords == max_iter:
@@ -195,7 +195,7 @@ def newton(model: Model, x0: np.ndarray, load: Load, *, tol: float = 1e-4, max_i
             rel_try = relative_residual(model, ev_try) if ev_try is not None else np.inf
             if rel_try < 2.0 * CHORD_CONTRACTION ** run_length * run_start:
                 log.debug("[%s] chord %d: residual %.3e", run, it, rel)
-                x, ev, chords, run_length = ev_try.x, ev_try, chords + 1, run_length + 1
+                x, ev, rel, chords, run_length = ev_try.x, ev_try, rel_try, chords + 1, run_length + 1
                 continue
             log.debug("[%s] chord %d rejected: residual %.3e -> %.3e", run, it, rel, rel_try)
         data = model.jacobian(ev)
@@ -217,7 +217,8 @@ def newton(model: Model, x0: np.ndarray, load: Load, *, tol: float = 1e-4, max_i
         log.debug("[%s] newton %d: residual %.3e, step %.3g, damping %.0e, |dx|max %.3g", run, it, rel, step,
                   damping, np.abs(dx).max())
         x, ev = ev_try.x, ev_try
-        run_start, run_length = relative_residual(model, ev), 0
+        rel = relative_residual(model, ev)
+        run_start, run_length = rel, 0
     raise NotConverged(run, load, f"no convergence in {max_iter} Newton iterations (and {chords} chord steps; "
                                   f"relative residual {rel:.3g})")
 
