@@ -154,6 +154,9 @@ def averaging_matrix(layout, length: float, members: np.ndarray | None = None):
     import scipy.sparse as sp
     from scipy.spatial import cKDTree
 
+    if length < layout.dx:
+        raise ValueError(f"the averaging length ({length:g} um) must be at least the particle spacing "
+                         f"({layout.dx:g} um): below it the average is a single particle's value")
     X = layout.X
     pool = np.arange(layout.n) if members is None else np.asarray(members)
     pairs = cKDTree(X).query_ball_tree(cKDTree(X[pool]), 0.5 * length)
@@ -162,6 +165,5 @@ def averaging_matrix(layout, length: float, members: np.ndarray | None = None):
     W = sp.csr_matrix((layout.volume[cols], (rows, cols)), shape=(layout.n, layout.n))
     total = np.asarray(W.sum(axis=1)).ravel()
     if np.any(total == 0.0):
-        raise ValueError(f"no particle within {0.5 * length:g} um of some particles: the averaging length must "
-                         f"exceed the particle spacing ({layout.dx:g} um)")
+        raise ValueError(f"no member particle within {0.5 * length:g} um of some particles")
     return sp.diags(1.0 / total) @ W
