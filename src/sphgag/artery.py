@@ -154,7 +154,7 @@ class BilayerMaterial:
         if self.pool.size and conversion > 0.0:
             g = self.gag
             c = load.material_value("concentration", 0.0)
-            if g.get("fixed_charge_dilution", False):
+            if g["fixed_charge_dilution"]:
                 pi, fixed = 0.0, (c, g["bath_concentration_mEq_l"], g["temperature_K"])
             else:
                 pi, fixed = float(materials.swelling_pressure(c, g["bath_concentration_mEq_l"], g["temperature_K"])), None

@@ -85,32 +85,47 @@ def _corrected_gradients(X, V, h, ptr, nbr, mir, R, w, a, s, A_out):
     """Per-entry reference separation R_ij, kernel value, and V_j A_i^-1 grad xi (eqs. 2.3, 2.7, 2.8)."""
     n = X.shape[0]
     for i in range(n):
-        a00 = a01 = a10 = a11 = 0.0
         for e in range(ptr[i], ptr[i + 1]):
             j = nbr[e]
             r0 = mir[e, 0] * X[j, 0] - X[i, 0]
             r1 = mir[e, 1] * X[j, 1] - X[i, 1]
-            d = np.sqrt(r0 * r0 + r1 * r1)
             R[e, 0] = r0
             R[e, 1] = r1
-            w[e] = spiky(d, h)
+            w[e] = spiky(np.sqrt(r0 * r0 + r1 * r1), h)
+    _stencil_gradients(V, h, ptr, nbr, R, np.ones(nbr.shape[0]), a, s, A_out)
+
+
+@njit(cache=True)
+def _stencil_gradients(V, h, ptr, nbr, R, beta, a, s, A_out):
+    """``a_ij = beta_ij V_j A_i^-1 grad xi_ij`` with ``A_i = sum_j beta_ij V_j grad xi_ij (x) R_ij`` (eqs. 2.7-2.8),
+    their sums ``s_i`` and ``A_i``; ``beta`` weights the stencil (1: the full stencil). A particle whose ``A_i`` is
+    singular gets zero gradients."""
+    n = ptr.shape[0] - 1
+    for i in range(n):
+        a00 = a01 = a10 = a11 = 0.0
+        for e in range(ptr[i], ptr[i + 1]):
+            r0, r1 = R[e, 0], R[e, 1]
+            d = np.sqrt(r0 * r0 + r1 * r1)
             g = spiky_derivative(d, h) / d
+            wv = beta[e] * V[nbr[e]]
             # A_i = sum_j V_j grad xi (x) R_j  (eq. 2.8)
-            a00 += V[j] * g * r0 * r0
-            a01 += V[j] * g * r0 * r1
-            a10 += V[j] * g * r1 * r0
-            a11 += V[j] * g * r1 * r1
+            a00 += wv * g * r0 * r0
+            a01 += wv * g * r0 * r1
+            a10 += wv * g * r1 * r0
+            a11 += wv * g * r1 * r1
         det = a00 * a11 - a01 * a10
         A_out[i, 0, 0] = a00
         A_out[i, 0, 1] = a01
         A_out[i, 1, 0] = a10
         A_out[i, 1, 1] = a11
-        i00, i01, i10, i11 = a11 / det, -a01 / det, -a10 / det, a00 / det
+        if det == 0.0:
+            i00 = i01 = i10 = i11 = 0.0
+        else:
+            i00, i01, i10, i11 = a11 / det, -a01 / det, -a10 / det, a00 / det
         s0 = s1 = 0.0
         for e in range(ptr[i], ptr[i + 1]):
-            j = nbr[e]
             d = np.sqrt(R[e, 0] ** 2 + R[e, 1] ** 2)
-            g = V[j] * spiky_derivative(d, h) / d
+            g = beta[e] * V[nbr[e]] * spiky_derivative(d, h) / d
             g0, g1 = g * R[e, 0], g * R[e, 1]
             a[e, 0] = i00 * g0 + i01 * g1
             a[e, 1] = i10 * g0 + i11 * g1
@@ -118,51 +133,6 @@ def _corrected_gradients(X, V, h, ptr, nbr, mir, R, w, a, s, A_out):
             s1 += a[e, 1]
         s[i, 0] = s0
         s[i, 1] = s1
-
-
-@njit(cache=True)
-def _hourglass_gradients(V, h, ptr, nbr, R, a, s, beta, ah, sh):
-    """``beta_ij V_j A~_i^-1 grad xi_ij`` with ``A~_i = sum_j beta_ij V_j grad xi_ij (x) R_ij`` (eq. 2.8 on a weighted stencil).
-
-    A particle whose weighted stencil is (nearly) rank deficient keeps its full
-    stencil (``a``, ``s``): returns how many did.
-    """
-    n = ptr.shape[0] - 1
-    fallback = 0
-    for i in range(n):
-        a00 = a01 = a10 = a11 = 0.0
-        full = 0.0
-        for e in range(ptr[i], ptr[i + 1]):
-            r0, r1 = R[e, 0], R[e, 1]
-            d = np.sqrt(r0 * r0 + r1 * r1)
-            g = V[nbr[e]] * spiky_derivative(d, h) / d
-            full += abs(g) * d * d
-            g *= beta[e]
-            a00 += g * r0 * r0
-            a01 += g * r0 * r1
-            a10 += g * r1 * r0
-            a11 += g * r1 * r1
-        det = a00 * a11 - a01 * a10
-        tr = a00 + a11
-        if det <= 1e-6 * tr * tr or abs(tr) < 1e-6 * full:
-            fallback += 1
-            for e in range(ptr[i], ptr[i + 1]):
-                ah[e, 0], ah[e, 1] = a[e, 0], a[e, 1]
-            sh[i, 0], sh[i, 1] = s[i, 0], s[i, 1]
-            continue
-        i00, i01, i10, i11 = a11 / det, -a01 / det, -a10 / det, a00 / det
-        s0 = s1 = 0.0
-        for e in range(ptr[i], ptr[i + 1]):
-            r0, r1 = R[e, 0], R[e, 1]
-            d = np.sqrt(r0 * r0 + r1 * r1)
-            g = beta[e] * V[nbr[e]] * spiky_derivative(d, h) / d
-            g0, g1 = g * r0, g * r1
-            ah[e, 0] = i00 * g0 + i01 * g1
-            ah[e, 1] = i10 * g0 + i11 * g1
-            s0 += ah[e, 0]
-            s1 += ah[e, 1]
-        sh[i, 0], sh[i, 1] = s0, s1
-    return fallback
 
 
 def hourglass_gradients(nb: "Neighbours", V, tissue):
@@ -189,9 +159,15 @@ def hourglass_gradients(nb: "Neighbours", V, tissue):
     beta = 1.0 - np.abs(tissue[owner] - tissue[nb.nbr])
     if np.all(beta == 1.0):
         return beta, nb.a, nb.s
-    ah = np.empty_like(nb.a)
-    sh = np.empty_like(nb.s)
-    _hourglass_gradients(V, nb.h, nb.ptr, nb.nbr, nb.R, nb.a, nb.s, beta, ah, sh)
+    ah, sh, A = np.empty_like(nb.a), np.empty_like(nb.s), np.empty_like(nb.A)
+    _stencil_gradients(V, nb.h, nb.ptr, nb.nbr, nb.R, beta, ah, sh, A)
+    # a (nearly) rank-deficient own-material stencil (an isolated GAG particle) keeps the full stencil
+    det = A[:, 0, 0] * A[:, 1, 1] - A[:, 0, 1] * A[:, 1, 0]
+    tr = A[:, 0, 0] + A[:, 1, 1]
+    full = np.abs(nb.A[:, 0, 0] + nb.A[:, 1, 1])
+    fallback = (det <= 1e-6 * tr * tr) | (np.abs(tr) < 1e-6 * full)
+    entries = np.repeat(fallback, np.diff(nb.ptr))
+    ah[entries], sh[fallback] = nb.a[entries], nb.s[fallback]
     return beta, ah, sh
 
 

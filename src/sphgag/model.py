@@ -9,6 +9,7 @@ measurements need (:class:`Evaluation`).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Callable
 
 import numpy as np
@@ -190,16 +191,13 @@ class Model:
         n2 = 2 * self.n
         return sp.bsr_matrix((data, self.block_indices, self.block_indptr), shape=(n2, n2))
 
-    @property
+    @cached_property
     def band(self) -> tuple[int, int, np.ndarray]:
         """``(kl, ku, index)``: lower and upper bandwidth of the Jacobian (in dofs, fixed by the neighbour lists)
         and the flat position of every block entry ``data[b, c, d]`` in LAPACK's band storage
         ``ab[kl + ku + row - col, col]`` (shape ``(2 kl + ku + 1, 2 N)``); computed once."""
-        if "band" not in self.__dict__:
-            rows = np.repeat(np.arange(self.n), np.diff(self.block_indptr))
-            r = (2 * rows[:, None, None] + np.arange(2)[None, :, None]) + 0 * np.arange(2)[None, None, :]
-            c = (2 * self.block_indices[:, None, None] + np.arange(2)[None, None, :]) + 0 * np.arange(2)[None, :, None]
-            kl, ku = int((r - c).max()), int((c - r).max())
-            index = ((kl + ku + r - c) * (2 * self.n) + c).ravel()
-            self.__dict__["band"] = (kl, ku, index)
-        return self.__dict__["band"]
+        rows = np.repeat(np.arange(self.n), np.diff(self.block_indptr))
+        r = 2 * rows[:, None, None] + np.arange(2)[None, :, None] + np.zeros(2, dtype=np.int64)[None, None, :]
+        c = 2 * self.block_indices[:, None, None] + np.arange(2)[None, None, :] + np.zeros(2, dtype=np.int64)[None, :, None]
+        kl, ku = int((r - c).max()), int((c - r).max())
+        return kl, ku, ((kl + ku + r - c) * (2 * self.n) + c).ravel()
