@@ -35,6 +35,7 @@ include: "workflow/rules/calibration.smk"
 include: "workflow/rules/homeostasis.smk"
 include: "workflow/rules/swelling.smk"
 include: "workflow/rules/verification.smk"
+include: "workflow/rules/delamination.smk"
 include: "workflow/rules/figures.smk"
 
 
@@ -54,4 +55,7 @@ rule all:
         rules.claims.output,
         rules.verification_pool_figure.output,
         rules.swelling_convergence_figure.output,
+        rules.delamination_growth.output,
+        rules.delamination_summary.output,
+        rules.delamination_convergence.output,
     default_target: True

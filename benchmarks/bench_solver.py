@@ -63,7 +63,7 @@ def measure(dx: float, config_path: str) -> dict:
     k = int(np.argmin(np.hypot(lay.radius - 663.0, np.deg2rad(51.5) - lay.theta)))
     one = geometry.Sector(lay.radius[k], np.rad2deg(lay.theta[k]), 0.1 * dx, 0.1 * np.rad2deg(dx / lay.radius[k]))
     model = artery.bilayer_model(p, numerics, name=f"bench_dx{dx:g}", pool=one, gag=cfg["gag"])
-    assert model.props.pool.size == 1
+    assert model.props.converting.size == 1
     h = protocols.homeostasis(model, numerics, cfg["homeostasis"])
     start = protocols.pressurise(model, h.state, 103.0, numerics)
     load, x = start.load, start.x
@@ -107,10 +107,10 @@ def measure(dx: float, config_path: str) -> dict:
         row[f"state_after_conversion_ms{label}"] = 1e3 * float(np.median(times))
         # the conversion of delamination: a particle whose damage has reached D = 1 ((1 - D) W = 0) becomes GAG
         intact = model.props(load)
-        ruptured = damage.weaken(intact, np.isin(np.arange(model.n), model.props.pool).astype(float))
+        ruptured = damage.weaken(intact, np.isin(np.arange(model.n), model.props.converting).astype(float))
         gag = ruptured.copy()
         g = cfg["gag"]
-        materials.convert_to_gag(gag, model.props.pool, 1.0, g["shear_modulus_kPa"], g["hourglass_modulus_kPa"],
+        materials.convert_to_gag(gag, model.props.converting, 1.0, g["shear_modulus_kPa"], g["hourglass_modulus_kPa"],
                                  lame=g["lame_lambda_kPa"])
         fixed = Model(model.name, model.layout, model.nb, ruptured, model.hourglass_alpha)
         xd, evd, _ = solver.newton(fixed, x, load, **opts)

@@ -43,8 +43,8 @@ def test_converted_unswollen_pool_in_an_unloaded_wall_is_in_equilibrium(ci_confi
     """Without pre-stretch and pressure the wall is stress free; a GAG pool at c = 0 keeps it so."""
     sector = artery.pool_sector(ci_config["swelling"]["cases"]["IV"])
     model = pool_model(ci_config, sector)
-    assert model.props.pool.size > 0
-    load = Load(1.0, 0.0, material=(("activation", 0.0), ("concentration", 0.0), ("conversion", 1.0),
+    assert model.props.converting.size > 0
+    load = Load(1.0, 0.0, material=(("activation", 0.0), ("concentration", 0.0), ("transition", 1.0),
                                     ("prestretch", 0.0)))
     x, ev, conv = solver.newton(model, model.layout.X, load, tol=1e-6)
     assert conv.iterations == 0
@@ -70,7 +70,7 @@ def swell(cfg, start, sector):
 def test_a_pool_of_zero_size_changes_nothing(ci_config, pressurised):
     sector = geometry.Sector(663.0, 51.5, 15.0, 0.0)
     model, table = swell(ci_config, pressurised, sector)
-    assert model.props.pool.size == 0
+    assert model.props.converting.size == 0
     for col in ("tip_radial_stress_kPa", "top_circ_stress_kPa"):
         assert np.allclose(table[col], table[col].iloc[0], rtol=1e-6, atol=1e-6)
 

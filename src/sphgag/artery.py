@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import analytic, geometry, kernel, materials
+from . import analytic, geometry, history, kernel, materials
 from .loading import Load
 from .model import Model
 
@@ -116,14 +116,13 @@ class BilayerMaterial:
     """Property table of the bi-layered model as a function of the load's material parameters.
 
     ``prestretch`` in [0, 1] scales every deposition stretch from 1 to its Table 2 value
-    (figure 2b); ``activation`` in [0, 1] scales the active tone T_max of the media (eq. 2.24);
-    ``conversion`` in [0, 1] turns the ``pool`` particles into GAG and ``concentration``
-    [mEq/l] sets their fixed-charge density, hence the swelling pressure (eqs. 2.25-2.27).
+    (figure 2b); ``activation`` in [0, 1] scales the active tone T_max of the media (eq. 2.24).
+    GAG pools and damage are the particles' history, layered on top by
+    :class:`sphgag.history.HistoryMaterial`.
     """
 
-    def __init__(self, p: dict, layout: geometry.Layout, pool=None, gag: dict | None = None):
-        self.p, self.gag = p, gag
-        self.pool = np.empty(0, dtype=np.int64) if pool is None else np.asarray(pool, dtype=np.int64)
+    def __init__(self, p: dict, layout: geometry.Layout):
+        self.p = p
         n = layout.n
         table = materials.empty_props(n)
         self.media = layout.layer_mask("media")
@@ -150,16 +149,6 @@ class BilayerMaterial:
         for col in self._fibre_g:
             out[:, col] = 1.0 + s * (self.target[:, col] - 1.0)
         out[self.media, materials.TACT] = a * self.p["active"]["max_stress_kPa"]
-        conversion = load.material_value("conversion", 0.0)
-        if self.pool.size and conversion > 0.0:
-            g = self.gag
-            c = load.material_value("concentration", 0.0)
-            if g["fixed_charge_dilution"]:
-                pi, fixed = 0.0, (c, g["bath_concentration_mEq_l"], g["temperature_K"])
-            else:
-                pi, fixed = float(materials.swelling_pressure(c, g["bath_concentration_mEq_l"], g["temperature_K"])), None
-            materials.convert_to_gag(out, self.pool, conversion, g["shear_modulus_kPa"], g["hourglass_modulus_kPa"],
-                                     pi, g["lame_lambda_kPa"], fixed)
         return out
 
 
@@ -169,22 +158,27 @@ def pool_sector(case: dict) -> geometry.Sector:
                            case["angular_extent_deg"])
 
 
-def bilayer_model(p: dict, numerics: dict, name: str = "bilayer", pool: geometry.Sector | None = None,
-                  gag: dict | None = None) -> Model:
+def bilayer_model(p: dict, numerics: dict, name: str = "bilayer", pool=None, gag: dict | None = None) -> Model:
     """Bi-layered model (section 2.4.2, Table 2) in its in vivo reference configuration.
 
     The radii ``aligned_radii_um`` inside the media are cell boundaries of the
     particle layout (sub-layers of the media), so that a pool whose radial
     edges are among them has exactly its thickness at every resolution.
 
-    With ``pool`` (and the ``gag`` parameters), the medial particles inside that
-    sector can be converted to GAG through the load's ``conversion`` and
-    ``concentration``.
+    With ``pool`` (a :class:`geometry.Sector`, or a list of them) and the ``gag``
+    parameters, the material is a :class:`history.HistoryMaterial` on the path from
+    the intact wall to the wall with those medial sectors seeded as GAG pools: the
+    load's ``transition`` converts them and its ``concentration`` swells them.
     """
     r0, border, r1 = bilayer_interfaces(p)
     aligned = sorted(r for r in p["aligned_radii_um"] if r0 < r < border)
     layout = geometry.quarter_annulus([r0, *aligned, border, r1], p["dx_um"],
                                       layer_names=["media"] * (len(aligned) + 1) + ["adventitia"])
     nb = kernel.for_layout(layout, numerics["kernel_support_factor"])
-    members = None if pool is None else pool.members(layout, layer="media")
-    return Model(name, layout, nb, BilayerMaterial(p, layout, members, gag), numerics["hourglass_alpha"])
+    material = BilayerMaterial(p, layout)
+    if pool is not None:
+        sectors = [pool] if isinstance(pool, geometry.Sector) else list(pool)
+        intact = history.ParticleHistory.intact(layout.n)
+        seeded = intact.seed([s.members(layout, layer="media") for s in sectors])
+        material = history.HistoryMaterial(material, intact, gag, after=seeded)
+    return Model(name, layout, nb, material, numerics["hourglass_alpha"])

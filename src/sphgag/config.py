@@ -134,20 +134,32 @@ def _consistency(config: dict) -> list[str]:
         if name not in sw.get("cases", {}):
             problems.append(f"swelling_convergence.cases[{k}] = {name!r} is not a pool of swelling.cases "
                             f"({', '.join(sw.get('cases', {}))})")
+    de = config.get("delamination", {})
+    if de:
+        if de["pressure_mmHg"] not in saved:
+            problems.append(f"delamination.pressure_mmHg = {de['pressure_mmHg']} has no saved state: it must be one "
+                            f"of bilayer_calibration.state_pressures_mmHg = {saved}")
+        coarsest = max([bil.get("dx_um", 0)] + de["convergence"]["dx_um"])
+        if "averaged" in de["criteria"] and de["averaging_length_um"] < coarsest:
+            problems.append(f"delamination.averaging_length_um = {de['averaging_length_um']} is below the coarsest "
+                            f"particle spacing ({coarsest:g} um): the average would be a single particle's value")
+    pools = {f"swelling.cases.{name}": pool for name, pool in sw.get("cases", {}).items()}
+    for name, members in de.get("pool_sets", {}).items():
+        pools.update({f"delamination.pool_sets.{name}[{k}]": pool for k, pool in enumerate(members)})
     if bil:
         r_in = bil.get("inner_radius_um", 0)
         border = r_in + bil.get("media_thickness_um", 0)
         for k, r in enumerate(bil.get("aligned_radii_um", [])):
             if not r_in < r < border:
                 problems.append(f"bilayer.aligned_radii_um[{k}] = {r} is not inside the media ({r_in:g}-{border:g} um)")
-        for name, pool in sw.get("cases", {}).items():
+        for name, pool in pools.items():
             lo = pool["centre_radius_um"] - pool["radial_extent_um"] / 2
             hi = pool["centre_radius_um"] + pool["radial_extent_um"] / 2
             if lo < r_in or hi > border:
-                problems.append(f"swelling.cases.{name}: radii {lo:g}-{hi:g} um leave the media ({r_in:g}-{border:g} um)")
+                problems.append(f"{name}: radii {lo:g}-{hi:g} um leave the media ({r_in:g}-{border:g} um)")
             half = pool["angular_extent_deg"] / 2
             if pool["centre_angle_deg"] - half <= 0 or pool["centre_angle_deg"] + half >= 90:
-                problems.append(f"swelling.cases.{name}: angles {pool['centre_angle_deg'] - half:g}-"
+                problems.append(f"{name}: angles {pool['centre_angle_deg'] - half:g}-"
                                 f"{pool['centre_angle_deg'] + half:g} deg reach a symmetry edge (0 or 90 deg)")
     act = bil.get("active", {})
     if act and act.get("stretch_min", 0) >= act.get("stretch_max", 1):

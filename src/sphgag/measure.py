@@ -143,13 +143,14 @@ def pool_probes(pool, length: float) -> dict:
     }
 
 
-def averaging_matrix(layout, length: float, members: np.ndarray | None = None):
+def averaging_matrix(layout, length: float, members: np.ndarray | None = None, rows: np.ndarray | None = None):
     """Sparse row-stochastic matrix ``W``: ``(W v)_i`` is the volume-weighted mean of ``v`` over the particles
     whose reference positions lie within ``length / 2`` of particle ``i`` (a disc of diameter ``length``).
 
     ``members`` restricts the particles averaged over (e.g. the media); rows of other particles average over
     the members near them. The averaging region has a fixed physical size, so an averaged stress means the
-    same at every resolution (the "averaged" onset measure of section 2.7's damage law).
+    same at every resolution (the "averaged" onset measure of section 2.7's damage law). ``rows``: compute only
+    these particles' rows (the matrix is then ``len(rows) x N``).
     """
     import scipy.sparse as sp
     from scipy.spatial import cKDTree
@@ -159,10 +160,11 @@ def averaging_matrix(layout, length: float, members: np.ndarray | None = None):
                          f"({layout.dx:g} um): below it the average is a single particle's value")
     X = layout.X
     pool = np.arange(layout.n) if members is None else np.asarray(members)
-    pairs = cKDTree(X).query_ball_tree(cKDTree(X[pool]), 0.5 * length)
-    rows = np.repeat(np.arange(layout.n), [len(p) for p in pairs])
-    cols = pool[np.concatenate([np.asarray(p, dtype=np.int64) for p in pairs])] if rows.size else rows
-    W = sp.csr_matrix((layout.volume[cols], (rows, cols)), shape=(layout.n, layout.n))
+    at = np.arange(layout.n) if rows is None else np.asarray(rows, dtype=np.int64)
+    pairs = cKDTree(X[at]).query_ball_tree(cKDTree(X[pool]), 0.5 * length)
+    r = np.repeat(np.arange(at.size), [len(p) for p in pairs])
+    cols = pool[np.concatenate([np.asarray(p, dtype=np.int64) for p in pairs])] if r.size else r
+    W = sp.csr_matrix((layout.volume[cols], (r, cols)), shape=(at.size, layout.n))
     total = np.asarray(W.sum(axis=1)).ravel()
     if np.any(total == 0.0):
         raise ValueError(f"no member particle within {0.5 * length:g} um of some particles")

@@ -273,8 +273,9 @@ def bilayer_pressure_diameter(model: Model, tube: analytic.ThickWallTube, homeos
 
 
 def swelling_load(base: Load, conversion: float, concentration: float) -> Load:
-    """``base`` (a pressure-controlled state) with the pool's conversion fraction and GAG concentration."""
-    return base.with_material(conversion=float(conversion), concentration=float(concentration))
+    """``base`` (a pressure-controlled state) with the pool's conversion fraction (the ``transition`` of
+    :class:`sphgag.history.HistoryMaterial`) and GAG concentration."""
+    return base.with_material(transition=float(conversion), concentration=float(concentration))
 
 
 def pool_measurements(model: Model, ev, pool, members: np.ndarray, probe_length: float) -> dict:
@@ -327,7 +328,7 @@ def swell_pool(model: Model, start: solver.State, pool, numerics: dict, sw: dict
     run = model.name
     opts = dict(run=run, on_state=log_state(run), **solver_options(numerics))
     base = swelling_load(start.load, 0.0, 0.0)
-    members = model.props.pool  # the particles artery.BilayerMaterial converts
+    members = model.props.converting  # the seeded pool (history.HistoryMaterial)
     rows = []
 
     def record(state, stage, c):

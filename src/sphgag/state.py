@@ -11,12 +11,14 @@ other parameters.
 from __future__ import annotations
 
 import json
+from contextlib import nullcontext
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from . import provenance
+from .history import ParticleHistory
 from .loading import Load
 
 
@@ -36,11 +38,12 @@ class SavedState:
     params: dict
     code: dict
     info: dict
+    history: ParticleHistory | None = None  # the particles' history (damage, GAG pools), if the state has one
 
 
-def save(path, x: np.ndarray, load: Load, params: dict, info: dict | None = None) -> None:
-    """Write a state file with its load, configuration slice, code version and extra info."""
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
+def save(path, x: np.ndarray, load: Load, params: dict, info: dict | None = None,
+         history: ParticleHistory | None = None) -> None:
+    """Write a state file with its load, configuration slice, code version, extra info and particle history."""
     meta = {
         "load": {"axial_stretch": load.axial_stretch, "pressure_kPa": load.pressure_kPa,
                  "inner_radius": load.inner_radius, "material": list(map(list, load.material))},
@@ -48,8 +51,11 @@ def save(path, x: np.ndarray, load: Load, params: dict, info: dict | None = None
         "code": provenance.code_version(),
         "info": info or {},
     }
-    with open(path, "wb") as fh:
-        np.savez(fh, x=np.asarray(x, dtype=float), meta=np.array(json.dumps(meta)))
+    arrays = {} if history is None else history.arrays()
+    if not hasattr(path, "write"):  # a path; file objects (e.g. io.BytesIO) are written as they are
+        Path(path).parent.mkdir(parents=True, exist_ok=True)
+    with nullcontext(path) if hasattr(path, "write") else open(path, "wb") as fh:
+        np.savez(fh, x=np.asarray(x, dtype=float), meta=np.array(json.dumps(meta)), **arrays)
 
 
 def load(path, expected_params: dict | None = None) -> SavedState:
@@ -57,13 +63,14 @@ def load(path, expected_params: dict | None = None) -> SavedState:
     with np.load(path, allow_pickle=False) as data:
         x = data["x"].copy()
         meta = json.loads(str(data["meta"]))
+        history = ParticleHistory.from_arrays(data) if "history_origin" in data.files else None
     if expected_params is not None and canonical(expected_params) != canonical(meta["params"]):
         diff = _differences(json.loads(canonical(expected_params)), meta["params"])
         raise StateMismatch(f"{path} was made with different parameters: {'; '.join(diff)}")
     ld = meta["load"]
     load_ = Load(axial_stretch=ld["axial_stretch"], pressure_kPa=ld["pressure_kPa"], inner_radius=ld["inner_radius"],
                  material=tuple(tuple(kv) for kv in ld["material"]))
-    return SavedState(x=x, load=load_, params=meta["params"], code=meta["code"], info=meta["info"])
+    return SavedState(x=x, load=load_, params=meta["params"], code=meta["code"], info=meta["info"], history=history)
 
 
 def _differences(expected, stored, prefix=""):

@@ -1,0 +1,24 @@
+"""Rule delamination_convergence_dx: the single pool grown at one particle spacing, every onset criterion."""
+
+import time
+
+import numba
+
+from sphgag import delamination, provenance, runlog
+
+sm = snakemake  # noqa: F821
+numba.set_num_threads(sm.threads)
+started = time.time()
+run = f"delamination_convergence_dx{sm.wildcards.dedx}"
+with runlog.run(run, sm.log[0]) as log:
+    p = sm.params
+    table = delamination.convergence_study(float(sm.wildcards.dedx), p.bilayer, p.numerics, p.homeostasis,
+                                           p.delamination, p.gag, name=run)
+    table.to_csv(sm.output.table, index=False)
+    for row in table.itertuples():
+        log.info("[%s] %s onset: at %s mEq/l, delaminated %.1f um at %g mEq/l", run, row.criterion,
+                 row.onset_concentration_mEq_l, row.final_length_um, p.delamination["max_concentration_mEq_l"])
+    provenance.write_record(sm.output.provenance, rule="delamination_convergence", params=dict(
+                            dx=sm.wildcards.dedx, bilayer=p.bilayer, numerics=p.numerics, homeostasis=p.homeostasis,
+                            delamination=p.delamination, gag=p.gag), outputs=list(sm.output),
+                            summary=dict(max_residual=float(table.max_residual.max())), started=started)
