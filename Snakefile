@@ -58,4 +58,7 @@ rule all:
         rules.delamination_growth.output,
         rules.delamination_summary.output,
         rules.delamination_convergence.output,
+        rules.fig5.output,
+        rules.fig6.output,
+        rules.fig7.output,
     default_target: True

@@ -36,9 +36,19 @@ CONTRACT = {
     "results/swelling/convergence.csv": [
         "dx_um", "particles", "case", "concentration_mEq_l", "tip_radial_stress_kPa", "tip_peak_radial_stress_kPa",
         "top_circ_stress_kPa", "pool_volume_change", "residual"],
+    "results/delamination/growth.csv": [
+        "case", "sigma_cr_kPa", "criterion", "dx_um", "step", "pseudo_time", "concentration_mEq_l",
+        "converted_particles", "converted_interior", "converted_exterior", "delaminated_length_um",
+        "tip_radial_stress_kPa", "residual"],
+    "results/delamination/summary.csv": [
+        "case", "sigma_cr_kPa", "criterion", "dx_um", "onset_concentration_mEq_l", "final_length_um",
+        "growth_rate_um_per_pseudo_time", "growth_rate_um_per_mEq_l", "merged", "merge_step",
+        "dissipated_energy_J_m2", "max_residual", "wall_s"],
+    "results/delamination/convergence.csv": [
+        "case", "sigma_cr_kPa", "criterion", "dx_um", "onset_concentration_mEq_l", "final_length_um", "max_residual"],
 }
 FIGURES = [f"figures/{name}.{ext}" for name in ("fig1", "fig3a_mean", "fig3b", "fig3", "fig4", "verification_pool",
-                                               "swelling_convergence") for ext in ("pdf", "png")]
+                                               "swelling_convergence", "fig5", "fig6", "fig7") for ext in ("pdf", "png")]
 
 
 def snakemake(workdir, *args, configfile=ROOT / "config" / "ci.yaml"):
@@ -75,6 +85,12 @@ def test_outputs_follow_the_data_contracts(workdir, ci_config):
                   "verification/elliptic_pool.csv"):
         states = pd.read_csv(workdir / "results" / table)
         assert (states.residual < ci_config["numerics"]["tolerance"]).all(), table
+    for table in ("delamination/summary.csv", "delamination/convergence.csv"):
+        assert (pd.read_csv(workdir / "results" / table).max_residual < ci_config["numerics"]["tolerance"]).all()
+    assert (pd.read_csv(workdir / "results/delamination/growth.csv").residual < ci_config["numerics"]["tolerance"]).all()
+    de = ci_config["delamination"]
+    summary = pd.read_csv(workdir / "results/delamination/summary.csv")
+    assert set(summary.case) == set(de["pool_sets"]) and set(summary.criterion) == set(de["criteria"])
     transmural = pd.read_csv(workdir / "results/calibration/transmural.csv")
     assert set(transmural.model) == {"mean", "passive", "active"}
     assert set(pd.read_csv(workdir / "results/calibration/bilayer_pressure_diameter.csv").model) == {"passive", "active"}

@@ -309,9 +309,13 @@ def grow(model: Model, start: solver.State, sectors: list[Sector], settings: Set
                 onset_c = c
             if change <= settings.damage_tolerance and ruptured.size == 0:
                 dmg.D = D_old  # changes below the tolerance are not applied: D stays that of the solved state
+                if not np.array_equal(dmg.onset_stretch, hist.onset_stretch, equal_nan=True):
+                    hist = hist.with_damage(D_old, dmg.onset_stretch)  # new onsets are history (D unchanged)
+                    material = HistoryMaterial(material.base, hist, material.gag)
+                    model.set_props(material)
                 return state, "arrested"
             W0 = intact_energy(model, ev, material.base(ev.load))
-            dissipated += float(np.sum((dmg.D - D_old) * W0 * lay.volume))
+            released = float(np.sum((dmg.D - D_old) * W0 * lay.volume))
             step += 1
             new = hist.with_damage(dmg.D, dmg.onset_stretch)
             if ruptured.size:
@@ -321,8 +325,19 @@ def grow(model: Model, start: solver.State, sectors: list[Sector], settings: Set
             path = material.towards(new)
             model.set_props(path)
             load = ev.load
-            state = solver.follow_path(model, state.x, load.with_material(transition=0.0),
-                                       [load.with_material(transition=1.0)], **opts)[-1]
+            try:
+                state = solver.follow_path(model, state.x, load.with_material(transition=0.0),
+                                           [load.with_material(transition=1.0)], **opts)[-1]
+            except solver.NotConverged as exc:
+                # no equilibrium along the path to the new history: the growth is unstable (a snap) at this
+                # concentration; the run ends at the last converged state, with the reason in the summary
+                log.warning("[%s] pass %d, c = %g mEq/l: %s; growth is unstable here, the run stops at the last "
+                            "converged state", run, step, c, exc.reason)
+                step -= 1
+                dmg.D = D_old
+                model.set_props(material)
+                return state, "unstable"
+            dissipated += released
             material, hist = path.settled(), new
             model.set_props(material)
             state = solver.State(ev.load, state.x, model.evaluate(state.x, ev.load), state.convergence)

@@ -387,3 +387,254 @@ def swelling_convergence(table: pd.DataFrame):
     axes[0, -1].legend(frameon=False, fontsize=7)
     fig.tight_layout()
     return fig
+
+
+# --- delamination (figures 5-7) ---------------------------------------------------------------------------------------
+
+SEEDED, CONVERTED = 1, 2  # history origin codes (sphgag.history): a seeded GAG pool, tissue converted by damage
+MATERIAL_COLOURS = {"media": "0.84", "adventitia": "0.62", SEEDED: LAYER_COLOURS["GAG"], CONVERTED: "#2166ac"}
+DAMAGE_CMAP = matplotlib.colors.LinearSegmentedColormap.from_list("damage", ["#fee391", "#fe9929", "#8c2d04"])
+SIDE_COLOURS = {"interior": "#1b9e77", "exterior": "#7570b3"}
+CRITERION_LS = ("-", "--")  # the default onset criterion, the other one
+CRITERION_COLOURS = ("k", "#d95f02")
+PSEUDO_TIME = "pseudo-time (concentration levels + damage passes)"
+
+
+def read_snapshots(path) -> dict:
+    """Every array of a ``*_snapshots.npz`` of rule delaminate, read into memory."""
+    with np.load(path, allow_pickle=False) as data:
+        return {name: data[name] for name in data.files}
+
+
+def snapshot_indices(snap: dict, n: int) -> list:
+    """``n`` snapshots spread evenly over a run, the first and the last included (fewer if the run has fewer)."""
+    return sorted(set(np.linspace(0, len(snap["steps"]) - 1, n).round().astype(int).tolist()))
+
+
+def snapshot_window(shown, margin_deg=6.0, min_width_deg=20.0):
+    """``(lo, hi)`` reference angles [deg] holding every GAG particle of the ``(snapshot, k)`` pairs with a margin."""
+    th = np.concatenate([np.rad2deg(snap["theta"][snap[f"s{k}_history_origin"] > 0]) for snap, k in shown])
+    lo, hi = th.min() - margin_deg, th.max() + margin_deg
+    if hi - lo < min_width_deg:
+        lo, hi = 0.5 * (lo + hi - min_width_deg), 0.5 * (lo + hi + min_width_deg)
+    return max(lo, 0.0), min(hi, 90.0)
+
+
+def snapshot_status(snap: dict, k: int) -> str:
+    """What damage has done by snapshot ``k``, in words."""
+    origin, D = snap[f"s{k}_history_origin"], snap[f"s{k}_history_D"]
+    converted = int(np.sum(origin == CONVERTED))
+    d_max = float(D[origin == 0].max(initial=0.0))
+    if converted:
+        return f"{converted} converted to GAG"
+    return f"damage (max D {d_max:.2f}), none ruptured" if d_max > 0 else "no damage onset"
+
+
+def snapshot_panel(ax, snap: dict, k: int, window, media_outer_um: float, label: str):
+    """Snapshot ``k`` of a run: the particles of the angular ``window`` at their current angle and radius, true to
+    scale at the pools' radius; intact tissue grey (media light, adventitia dark), damaged tissue by D, seeded GAG
+    red, GAG converted by damage blue. Marker sizes are set by :func:`fit_particle_sizes` after the layout."""
+    x = snap[f"s{k}_x"]
+    near = (np.rad2deg(snap["theta"]) >= window[0]) & (np.rad2deg(snap["theta"]) <= window[1])
+    origin, D = snap[f"s{k}_history_origin"][near], snap[f"s{k}_history_D"][near]
+    th, r = np.rad2deg(np.arctan2(x[near, 1], x[near, 0])), np.hypot(x[near, 0], x[near, 1])
+    media = np.hypot(*snap["X"][near].T) <= media_outer_um
+    colours = matplotlib.colors.to_rgba_array(np.where(media, MATERIAL_COLOURS["media"],
+                                                       MATERIAL_COLOURS["adventitia"]))
+    damaged = (origin == 0) & (D > 0)
+    colours[damaged] = DAMAGE_CMAP(D[damaged])
+    for code in (SEEDED, CONVERTED):
+        colours[origin == code] = matplotlib.colors.to_rgba(MATERIAL_COLOURS[code])
+    ax.scatter(th, r, s=4, c=colours, linewidths=0)
+    dx = float(np.sqrt(np.median(snap["volume"])))
+    radius = float(np.median(r))
+    ax._particle_spacing = (dx, radius)
+    ax.set_aspect(180.0 / (np.pi * radius))  # 1 um of arc at the pools' radius as long as 1 um of radius
+    ax.set_xlim(*window)
+    ax.set_ylim(r.min() - dx, r.max() + dx)
+    ax.set_title(f"{label}c = {snap['concentrations'][k]:g} mEq/l, pass {int(snap['steps'][k])}: "
+                 f"{snapshot_status(snap, k)}", fontsize=8, loc="left")
+
+
+def fit_particle_sizes(fig):
+    """Draw the snapshot panels' particles one particle spacing wide, now that the layout is fixed."""
+    fig.draw_without_rendering()
+    for ax in fig.axes:
+        if not hasattr(ax, "_particle_spacing"):
+            continue
+        dx, radius = ax._particle_spacing
+        lo, hi = ax.get_xlim()
+        points_per_um = ax.get_window_extent().width * 72.0 / fig.dpi / (np.deg2rad(hi - lo) * radius)
+        for coll in ax.collections:
+            coll.set_sizes([(0.95 * dx * points_per_um) ** 2])
+
+
+def material_key(fig, cax):
+    """The legend of the snapshot panels' colours (above the figure) and the colour bar of the damage in ``cax``."""
+    key = {"media": "intact media", "adventitia": "intact adventitia", SEEDED: "seeded GAG pool",
+           CONVERTED: "GAG converted by damage"}
+    handles = [plt.Line2D([], [], marker="s", ls="none", ms=7, color=MATERIAL_COLOURS[m], label=text)
+               for m, text in key.items()]
+    fig.legend(handles=handles, loc="outside upper center", ncols=4, frameon=False)
+    bar = fig.colorbar(matplotlib.cm.ScalarMappable(matplotlib.colors.Normalize(0.0, 1.0), DAMAGE_CMAP), cax=cax)
+    bar.set_label("damage D of tissue (eq. 2.28)")
+
+
+def run_note(summary: pd.DataFrame, **labels) -> str:
+    """Onset, growth, merging and an early stop of the run with these labels (summary.csv), in a few words."""
+    sel = np.logical_and.reduce([summary[k] == v for k, v in labels.items()])
+    if not sel.any():
+        return "not run"
+    s = summary[sel].iloc[0]
+    if not np.isfinite(s.onset_concentration_mEq_l):
+        return "no damage onset"
+    note = f"damage onset at {s.onset_concentration_mEq_l:g} mEq/l, {s.final_length_um:.3g} um delaminated"
+    note += f", merged at pass {s.merge_step:g}" if bool(s.merged) else ""
+    return note + (f", stop: {s.stop}" if s.stop != "arrested" else "")
+
+
+def growth_series(ax, run: pd.DataFrame, column: str, colour, ls="-", label=None, mark_ruptures=True):
+    """One run's ``column`` against pseudo-time; a cross after every pass in which particles were converted."""
+    run = run.sort_values("step")
+    ax.plot(run.step, run[column], ls=ls, color=colour, lw=1.0, label=label)
+    if mark_ruptures:
+        burst = run.converted_particles.diff().fillna(0.0).to_numpy() > 0
+        ax.plot(run.step[burst], run[column][burst], "x", color=colour, ms=4)
+
+
+def no_growth_note(ax, runs: pd.DataFrame):
+    """Say so in the panel if none of ``runs`` converted a single particle."""
+    if runs.converted_particles.max() == 0:
+        ax.text(0.5, 0.5, "no growth: no particle converted", transform=ax.transAxes, ha="center", va="center",
+                fontsize=8, color="0.3", bbox=dict(fc="w", ec="0.7", lw=0.6))
+
+
+def converted_panel(ax, growth: pd.DataFrame, summary: pd.DataFrame, case: str, criteria, title: str):
+    """Particles converted on the interior (between the pools) and exterior side against pseudo-time, one line
+    style per onset criterion; a dotted line where the pools merged."""
+    runs = growth[growth.case == case]
+    for criterion, ls in zip(criteria, CRITERION_LS):
+        run = runs[runs.criterion == criterion]
+        for side, colour in SIDE_COLOURS.items():
+            growth_series(ax, run, f"converted_{side}", colour, ls, f"{side}, {criterion}", mark_ruptures=False)
+        merged = summary[(summary.case == case) & (summary.criterion == criterion) & summary.merged.astype(bool)]
+        for step in merged.merge_step:
+            ax.axvline(run.step[run.pseudo_time >= step].min(), color="0.3", ls=":", lw=0.8)
+    no_growth_note(ax, runs)
+    ax.set(xlabel=PSEUDO_TIME, ylabel="converted particles", title=title)
+    ax.set_ylim(bottom=-0.5)
+    ax.yaxis.set_major_locator(matplotlib.ticker.MaxNLocator(integer=True))
+    ax.legend(frameon=False, fontsize=7)
+
+
+def tip_stress_panel(ax, runs, sigma_colours: dict, title: str):
+    """The largest onset-measure radial stress in front of the pools against pseudo-time (the sawtooth of figure 5b),
+    ``runs``: ``(growth rows, colour, line style, label)``; a dashed line at each sigma_cr of ``sigma_colours``."""
+    for run, colour, ls, label in runs:
+        growth_series(ax, run, "tip_radial_stress_kPa", colour, ls, label)
+    for sigma, colour in sigma_colours.items():
+        ax.axhline(sigma, color=colour, ls=(0, (4, 3)), lw=0.8)
+        ax.text(1.0, sigma, f" {sigma:g}", transform=ax.get_yaxis_transform(), color=colour, fontsize=7,
+                va="center", ha="left")
+    ax.axhline(0.0, color="0.7", lw=0.6)
+    ax.set(xlabel=PSEUDO_TIME, ylabel="tip radial stress (kPa)", title=title)
+    ax.legend(frameon=False, fontsize=7, loc="best")
+
+
+def snapshot_grid(fig, spec, columns, media_outer_um):
+    """Snapshot panels in ``spec`` (a gridspec cell): ``columns`` is a list of lists of ``(snapshot, k, label)``,
+    one list per column, each column with one angular window; the material key and the damage colour bar."""
+    rows = max(len(col) for col in columns)
+    grid = spec.subgridspec(rows, len(columns) + 1, width_ratios=[1.0] * len(columns) + [0.015])
+    for j, col in enumerate(columns):
+        window = snapshot_window([(snap, k) for snap, k, _ in col])
+        for i, (snap, k, label) in enumerate(col):
+            ax = fig.add_subplot(grid[i, j])
+            snapshot_panel(ax, snap, k, window, media_outer_um, label)
+            if i == len(col) - 1:
+                ax.set_xlabel("current angle (deg)")
+            if j == 0:
+                ax.set_ylabel("radius (um)")
+    material_key(fig, fig.add_subplot(grid[:, -1]))
+
+
+def fig5(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, sigma: float, criteria, media_outer_um: float,
+         n_snapshots: int = 3):
+    """Figure 5, the single pool: (a) snapshots at sigma_cr = ``sigma`` (``snapshots``: criterion -> snapshots),
+    one column per onset criterion; (b) the tip radial stress against pseudo-time for every sigma_cr, one panel per
+    criterion; (c) the delaminated length against the GAG concentration."""
+    _style()
+    single = growth[growth.case == "single"]
+    sigmas = sorted(single.sigma_cr_kPa.unique())
+    colours = dict(zip(sigmas, plt.cm.Dark2.colors))
+    fig = plt.figure(figsize=(11, 3.2 + 1.3 * n_snapshots), layout="constrained")
+    gs = fig.add_gridspec(2, 1, height_ratios=[1.3 * n_snapshots, 3.0])
+    columns = [[(snapshots[c], k, f"(a) {c}{' (default)' * (j == 0)}, {sigma:g} kPa: ")
+                for k in snapshot_indices(snapshots[c], n_snapshots)] for j, c in enumerate(criteria)]
+    snapshot_grid(fig, gs[0], columns, media_outer_um)
+    bottom = gs[1].subgridspec(1, len(criteria) + 1)
+    tip_axes = []
+    for j, criterion in enumerate(criteria):
+        ax = fig.add_subplot(bottom[j], sharey=tip_axes[0] if tip_axes else None)
+        runs = single[single.criterion == criterion]
+        tip_stress_panel(ax, [(runs[runs.sigma_cr_kPa == s], colours[s], "-",
+                               f"{s:g} kPa: {run_note(summary, case='single', sigma_cr_kPa=s, criterion=criterion)}")
+                              for s in sigmas], colours, f"(b) {criterion} onset measure, single pool")
+        no_growth_note(ax, runs)
+        tip_axes.append(ax)
+    ax = fig.add_subplot(bottom[-1])
+    for (sigma_cr, criterion), run in single.groupby(["sigma_cr_kPa", "criterion"]):
+        run = run.sort_values("step")
+        ax.plot(run.concentration_mEq_l, run.delaminated_length_um, ls=CRITERION_LS[list(criteria).index(criterion)],
+                color=colours[sigma_cr], lw=1.0, label=f"{sigma_cr:g} kPa, {criterion}")
+    no_growth_note(ax, single)
+    ax.set(xlabel="GAG concentration (mEq/l)", ylabel="delaminated length (um)", title="(c) growth, single pool")
+    ax.set_ylim(bottom=-0.5)
+    ax.legend(frameon=False, fontsize=7, loc="upper left")
+    fit_particle_sizes(fig)
+    return fig
+
+
+def fig6(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, cases, criteria, media_outer_um: float):
+    """Figure 6, two pools at one radius (``cases``: low and high separation; ``snapshots``: (case, criterion) ->
+    snapshots): (a, b) the first snapshot and the last one of every criterion; (c) the particles converted between
+    the pools (interior) and away from them (exterior) against pseudo-time."""
+    _style()
+    n_rows = 1 + len(criteria)
+    fig = plt.figure(figsize=(11, 3.4 + 1.25 * n_rows), layout="constrained")
+    gs = fig.add_gridspec(2, 1, height_ratios=[1.25 * n_rows, 3.0])
+    columns = []
+    for j, case in enumerate(cases):
+        letter, first = "ab"[j], snapshots[case, criteria[0]]
+        col = [(first, 0, f"({letter}) {case}, before any damage pass: ")]
+        col += [(snapshots[case, c], len(snapshots[case, c]["steps"]) - 1, f"({letter}) {case}, {c}, last: ")
+                for c in criteria]
+        columns.append(col)
+    snapshot_grid(fig, gs[0], columns, media_outer_um)
+    bottom = gs[1].subgridspec(1, len(cases))
+    for j, case in enumerate(cases):
+        converted_panel(fig.add_subplot(bottom[j]), growth, summary, case, criteria, f"(c) {case}: converted particles")
+    fit_particle_sizes(fig)
+    return fig
+
+
+def fig7(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, case: str, sigma: float, criteria,
+         media_outer_um: float, n_snapshots: int = 4):
+    """Figure 7, two pools offset in radius (``snapshots``: criterion -> snapshots): (a) ``n_snapshots`` snapshots
+    per criterion; (b) the tip radial stress and (c) the converted particles against pseudo-time."""
+    _style()
+    fig = plt.figure(figsize=(11, 3.4 + 1.15 * n_snapshots), layout="constrained")
+    gs = fig.add_gridspec(2, 1, height_ratios=[1.15 * n_snapshots, 3.0])
+    columns = [[(snapshots[c], k, f"(a) {c}{' (default)' * (j == 0)}: ")
+                for k in snapshot_indices(snapshots[c], n_snapshots)] for j, c in enumerate(criteria)]
+    snapshot_grid(fig, gs[0], columns, media_outer_um)
+    bottom = gs[1].subgridspec(1, 2)
+    runs = growth[growth.case == case]
+    ax = fig.add_subplot(bottom[0])
+    tip_stress_panel(ax, [(runs[runs.criterion == c], colour, ls, f"{c}: {run_note(summary, case=case, criterion=c)}")
+                          for c, ls, colour in zip(criteria, CRITERION_LS, CRITERION_COLOURS)], {sigma: "0.45"},
+                     f"(b) {case}: tip radial stress, sigma_cr = {sigma:g} kPa")
+    no_growth_note(ax, runs)
+    converted_panel(fig.add_subplot(bottom[1]), growth, summary, case, criteria, f"(c) {case}: converted particles")
+    fit_particle_sizes(fig)
+    return fig

@@ -93,7 +93,7 @@ rule fig4:
 
 
 rule claims:
-    """The paper's claims (figures 3-4) against our numbers, from the CSV tables alone."""
+    """The paper's claims (figures 3-7) against our numbers, from the CSV tables alone."""
     input:
         code=CLAIMS,
         mean=rules.calibrate_mean.output.states,
@@ -102,11 +102,14 @@ rule claims:
         layers=rules.homeostasis.output.layers,
         transmural=rules.transmural.output[0],
         tips=rules.tip_stress.output[0],
+        growth=rules.delamination_growth.output[0],
+        delamination=rules.delamination_summary.output[0],
     output:
         table="results/claims.csv",
         markdown="figures/claims.md",
     params:
         cases=config["swelling"]["cases"],
+        criteria=config["delamination"]["criteria"],
     log:
         "logs/claims.log",
     conda:
@@ -129,3 +132,83 @@ rule swelling_convergence_figure:
         "../envs/sphgag.yaml"
     script:
         "../scripts/swelling_convergence_figure.py"
+
+
+# figures 5-7: the delamination runs (rule delaminate), one column or line style per onset criterion
+DE_MEDIA_OUTER = config["bilayer"]["inner_radius_um"] + config["bilayer"]["media_thickness_um"]
+# figure 5a shows the single pool at critical_stress_kPa if that is one of its sigma_cr, else at the nearest one
+FIG5_SIGMA = min(DE["critical_stresses_kPa"], key=lambda s: abs(s - DE["critical_stress_kPa"]))
+FIG6_CASES = ["low_separation", "high_separation"]
+
+
+def de_snapshots(poolsets, sigma):
+    """Snapshot files of these pool sets at sigma_cr = ``sigma``, every criterion (pool sets outer, criteria inner)."""
+    return [DE_RUN_NAME.format(poolset=p, sigma=f"{sigma:g}", criterion=c) + "_snapshots.npz"
+            for p in poolsets for c in DE["criteria"]]
+
+
+rule fig5:
+    """Figure 5: the single pool's growth (snapshots), its tip radial stress against pseudo-time for every sigma_cr."""
+    input:
+        code=PLOTS,
+        growth=rules.delamination_growth.output[0],
+        summary=rules.delamination_summary.output[0],
+        snapshots=de_snapshots(["single"], FIG5_SIGMA),
+    output:
+        pdf="figures/fig5.pdf",
+        png="figures/fig5.png",
+    params:
+        sigma=FIG5_SIGMA,
+        criteria=DE["criteria"],
+        media_outer=DE_MEDIA_OUTER,
+    log:
+        "logs/fig5.log",
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/fig5.py"
+
+
+rule fig6:
+    """Figure 6: two pools at one radius, low and high separation: snapshots, interior and exterior growth."""
+    input:
+        code=PLOTS,
+        growth=rules.delamination_growth.output[0],
+        summary=rules.delamination_summary.output[0],
+        snapshots=de_snapshots(FIG6_CASES, DE["critical_stress_kPa"]),
+    output:
+        pdf="figures/fig6.pdf",
+        png="figures/fig6.png",
+    params:
+        cases=FIG6_CASES,
+        criteria=DE["criteria"],
+        media_outer=DE_MEDIA_OUTER,
+    log:
+        "logs/fig6.log",
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/fig6.py"
+
+
+rule fig7:
+    """Figure 7: two pools offset in radius: four snapshots per criterion, tip stress and growth."""
+    input:
+        code=PLOTS,
+        growth=rules.delamination_growth.output[0],
+        summary=rules.delamination_summary.output[0],
+        snapshots=de_snapshots(["radial_offset"], DE["critical_stress_kPa"]),
+    output:
+        pdf="figures/fig7.pdf",
+        png="figures/fig7.png",
+    params:
+        case="radial_offset",
+        sigma=DE["critical_stress_kPa"],
+        criteria=DE["criteria"],
+        media_outer=DE_MEDIA_OUTER,
+    log:
+        "logs/fig7.log",
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/fig7.py"
