@@ -58,7 +58,7 @@ class DamageLaw:
     def damage(self, stretch_beyond_onset) -> np.ndarray:
         """``D = exp((dlambda / tau)^2) - 1`` for ``dlambda >= 0``, 0 below, 1 at and beyond rupture (eq. 2.28)."""
         d = np.maximum(np.asarray(stretch_beyond_onset, dtype=float), 0.0)
-        return np.minimum(np.expm1((d / self.tau) ** 2), 1.0)
+        return np.minimum(np.expm1(np.minimum((d / self.tau) ** 2, LN2)), 1.0)  # exponent capped where D = 1
 
 
 @dataclass

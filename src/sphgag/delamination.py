@@ -375,6 +375,7 @@ def grow(model: Model, start: solver.State, sectors: list[Sector], settings: Set
                                 tip_radial_stress_kPa=r.tip_stress, residual=r.residual) for k, r in enumerate(rows)])
     rate_t, rate_c = growth_rates(growth, settings.concentration_step_mEq_l)
     summary = dict(onset_concentration_mEq_l=onset_c, final_length_um=length,
+                   max_tip_radial_stress_kPa=float(growth.tip_radial_stress_kPa.max()),
                    growth_rate_um_per_pseudo_time=rate_t, growth_rate_um_per_mEq_l=rate_c,
                    merged=merge_step is not None, merge_step=merge_step if merge_step is not None else np.nan,
                    dissipated_energy_J_m2=1e-3 * dissipated / length if length > 0 else np.nan,

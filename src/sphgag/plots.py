@@ -393,7 +393,7 @@ def swelling_convergence(table: pd.DataFrame):
 
 SEEDED, CONVERTED = 1, 2  # history origin codes (sphgag.history): a seeded GAG pool, tissue converted by damage
 MATERIAL_COLOURS = {"media": "0.84", "adventitia": "0.62", SEEDED: LAYER_COLOURS["GAG"], CONVERTED: "#2166ac"}
-DAMAGE_CMAP = matplotlib.colors.LinearSegmentedColormap.from_list("damage", ["#fee391", "#fe9929", "#8c2d04"])
+DAMAGE_CMAP = matplotlib.colors.LinearSegmentedColormap.from_list("damage", ["#ffd300", "#f47b20", "#7f2704"])
 SIDE_COLOURS = {"interior": "#1b9e77", "exterior": "#7570b3"}
 CRITERION_LS = ("-", "--")  # the default onset criterion, the other one
 CRITERION_COLOURS = ("k", "#d95f02")
@@ -420,6 +420,18 @@ def snapshot_window(shown, margin_deg=6.0, min_width_deg=20.0):
     return max(lo, 0.0), min(hi, 90.0)
 
 
+def in_window(snap: dict, window) -> np.ndarray:
+    """The particles whose reference angle is within ``window`` [deg]."""
+    th = np.rad2deg(snap["theta"])
+    return (th >= window[0]) & (th <= window[1])
+
+
+def current_polar(snap: dict, k: int, mask) -> tuple:
+    """``(angle [deg], radius [um])`` of the ``mask`` particles in snapshot ``k``."""
+    x = snap[f"s{k}_x"][mask]
+    return np.rad2deg(np.arctan2(x[:, 1], x[:, 0])), np.hypot(x[:, 0], x[:, 1])
+
+
 def snapshot_status(snap: dict, k: int) -> str:
     """What damage has done by snapshot ``k``, in words."""
     origin, D = snap[f"s{k}_history_origin"], snap[f"s{k}_history_D"]
@@ -427,17 +439,17 @@ def snapshot_status(snap: dict, k: int) -> str:
     d_max = float(D[origin == 0].max(initial=0.0))
     if converted:
         return f"{converted} converted to GAG"
-    return f"damage (max D {d_max:.2f}), none ruptured" if d_max > 0 else "no damage onset"
+    return f"max D {d_max:.2f}, none ruptured" if d_max > 0 else "no damage onset"
 
 
-def snapshot_panel(ax, snap: dict, k: int, window, media_outer_um: float, label: str):
-    """Snapshot ``k`` of a run: the particles of the angular ``window`` at their current angle and radius, true to
-    scale at the pools' radius; intact tissue grey (media light, adventitia dark), damaged tissue by D, seeded GAG
-    red, GAG converted by damage blue. Marker sizes are set by :func:`fit_particle_sizes` after the layout."""
-    x = snap[f"s{k}_x"]
-    near = (np.rad2deg(snap["theta"]) >= window[0]) & (np.rad2deg(snap["theta"]) <= window[1])
+def snapshot_panel(ax, snap: dict, k: int, window, radii, media_outer_um: float, label: str):
+    """Snapshot ``k`` of a run: the particles of the angular ``window`` at their current angle and radius (axis
+    limits ``window`` x ``radii``), true to scale at the pools' radius; intact tissue grey (media light, adventitia
+    dark), damaged tissue by D, seeded GAG red, GAG converted by damage blue. Marker sizes are set by
+    :func:`fit_particle_sizes` after the layout."""
+    near = in_window(snap, window)
     origin, D = snap[f"s{k}_history_origin"][near], snap[f"s{k}_history_D"][near]
-    th, r = np.rad2deg(np.arctan2(x[near, 1], x[near, 0])), np.hypot(x[near, 0], x[near, 1])
+    th, r = current_polar(snap, k, near)
     media = np.hypot(*snap["X"][near].T) <= media_outer_um
     colours = matplotlib.colors.to_rgba_array(np.where(media, MATERIAL_COLOURS["media"],
                                                        MATERIAL_COLOURS["adventitia"]))
@@ -445,13 +457,14 @@ def snapshot_panel(ax, snap: dict, k: int, window, media_outer_um: float, label:
     colours[damaged] = DAMAGE_CMAP(D[damaged])
     for code in (SEEDED, CONVERTED):
         colours[origin == code] = matplotlib.colors.to_rgba(MATERIAL_COLOURS[code])
-    ax.scatter(th, r, s=4, c=colours, linewidths=0)
+    edges = np.where(origin == CONVERTED, "k", np.where(damaged, matplotlib.colors.to_hex(DAMAGE_CMAP(1.0)), "none"))
+    ax.scatter(th, r, s=4, c=colours, edgecolors=edges, linewidths=np.where(edges == "none", 0.0, 0.7))
     dx = float(np.sqrt(np.median(snap["volume"])))
     radius = float(np.median(r))
     ax._particle_spacing = (dx, radius)
     ax.set_aspect(180.0 / (np.pi * radius))  # 1 um of arc at the pools' radius as long as 1 um of radius
     ax.set_xlim(*window)
-    ax.set_ylim(r.min() - dx, r.max() + dx)
+    ax.set_ylim(*radii)
     ax.set_title(f"{label}c = {snap['concentrations'][k]:g} mEq/l, pass {int(snap['steps'][k])}: "
                  f"{snapshot_status(snap, k)}", fontsize=8, loc="left")
 
@@ -519,10 +532,13 @@ def converted_panel(ax, growth: pd.DataFrame, summary: pd.DataFrame, case: str, 
             growth_series(ax, run, f"converted_{side}", colour, ls, f"{side}, {criterion}", mark_ruptures=False)
         merged = summary[(summary.case == case) & (summary.criterion == criterion) & summary.merged.astype(bool)]
         for step in merged.merge_step:
-            ax.axvline(run.step[run.pseudo_time >= step].min(), color="0.3", ls=":", lw=0.8)
+            row = run.step[run.pseudo_time >= step].min()
+            ax.axvline(row, color="0.3", ls=":", lw=0.8)
+            ax.text(row, 0.5, f" merged ({criterion})", transform=ax.get_xaxis_transform(), fontsize=7,
+                    color="0.3", rotation=90, va="center")
     no_growth_note(ax, runs)
     ax.set(xlabel=PSEUDO_TIME, ylabel="converted particles", title=title)
-    ax.set_ylim(bottom=-0.5)
+    ax.set_ylim(-0.5, max(ax.get_ylim()[1], 2.0))
     ax.yaxis.set_major_locator(matplotlib.ticker.MaxNLocator(integer=True))
     ax.legend(frameon=False, fontsize=7)
 
@@ -537,8 +553,10 @@ def tip_stress_panel(ax, runs, sigma_colours: dict, title: str):
         ax.text(1.0, sigma, f" {sigma:g}", transform=ax.get_yaxis_transform(), color=colour, fontsize=7,
                 va="center", ha="left")
     ax.axhline(0.0, color="0.7", lw=0.6)
+    lo, hi = ax.get_ylim()
+    ax.set_ylim(lo, hi + 0.12 * len(runs) * (hi - lo))  # room for the legend above the curves
     ax.set(xlabel=PSEUDO_TIME, ylabel="tip radial stress (kPa)", title=title)
-    ax.legend(frameon=False, fontsize=7, loc="best")
+    ax.legend(frameon=False, fontsize=7, loc="upper left")
 
 
 def snapshot_grid(fig, spec, columns, media_outer_um):
@@ -546,11 +564,15 @@ def snapshot_grid(fig, spec, columns, media_outer_um):
     one list per column, each column with one angular window; the material key and the damage colour bar."""
     rows = max(len(col) for col in columns)
     grid = spec.subgridspec(rows, len(columns) + 1, width_ratios=[1.0] * len(columns) + [0.015])
-    for j, col in enumerate(columns):
-        window = snapshot_window([(snap, k) for snap, k, _ in col])
+    windows = [snapshot_window([(snap, k) for snap, k, _ in col]) for col in columns]
+    r = np.concatenate([current_polar(snap, k, in_window(snap, w))[1] for col, w in zip(columns, windows)
+                        for snap, k, _ in col])
+    dx = float(np.sqrt(np.median(columns[0][0][0]["volume"])))
+    radii = (r.min() - dx, r.max() + dx)  # one radial range: every panel of the grid has the same scale
+    for j, (col, window) in enumerate(zip(columns, windows)):
         for i, (snap, k, label) in enumerate(col):
             ax = fig.add_subplot(grid[i, j])
-            snapshot_panel(ax, snap, k, window, media_outer_um, label)
+            snapshot_panel(ax, snap, k, window, radii, media_outer_um, label)
             if i == len(col) - 1:
                 ax.set_xlabel("current angle (deg)")
             if j == 0:
@@ -567,10 +589,11 @@ def fig5(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, sigma: fl
     single = growth[growth.case == "single"]
     sigmas = sorted(single.sigma_cr_kPa.unique())
     colours = dict(zip(sigmas, plt.cm.Dark2.colors))
-    fig = plt.figure(figsize=(11, 3.2 + 1.3 * n_snapshots), layout="constrained")
-    gs = fig.add_gridspec(2, 1, height_ratios=[1.3 * n_snapshots, 3.0])
     columns = [[(snapshots[c], k, f"(a) {c}{' (default)' * (j == 0)}, {sigma:g} kPa: ")
                 for k in snapshot_indices(snapshots[c], n_snapshots)] for j, c in enumerate(criteria)]
+    rows = max(len(col) for col in columns)
+    fig = plt.figure(figsize=(11, 3.2 + 1.3 * rows), layout="constrained")
+    gs = fig.add_gridspec(2, 1, height_ratios=[1.3 * rows, 3.0])
     snapshot_grid(fig, gs[0], columns, media_outer_um)
     bottom = gs[1].subgridspec(1, len(criteria) + 1)
     tip_axes = []
@@ -589,7 +612,6 @@ def fig5(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, sigma: fl
                 color=colours[sigma_cr], lw=1.0, label=f"{sigma_cr:g} kPa, {criterion}")
     no_growth_note(ax, single)
     ax.set(xlabel="GAG concentration (mEq/l)", ylabel="delaminated length (um)", title="(c) growth, single pool")
-    ax.set_ylim(bottom=-0.5)
     ax.legend(frameon=False, fontsize=7, loc="upper left")
     fit_particle_sizes(fig)
     return fig
@@ -606,8 +628,8 @@ def fig6(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, cases, cr
     columns = []
     for j, case in enumerate(cases):
         letter, first = "ab"[j], snapshots[case, criteria[0]]
-        col = [(first, 0, f"({letter}) {case}, before any damage pass: ")]
-        col += [(snapshots[case, c], len(snapshots[case, c]["steps"]) - 1, f"({letter}) {case}, {c}, last: ")
+        col = [(first, 0, f"({letter}) {case}, first state: ")]
+        col += [(snapshots[case, c], len(snapshots[case, c]["steps"]) - 1, f"({letter}) {case}, {c}: ")
                 for c in criteria]
         columns.append(col)
     snapshot_grid(fig, gs[0], columns, media_outer_um)
@@ -623,10 +645,11 @@ def fig7(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, case: str
     """Figure 7, two pools offset in radius (``snapshots``: criterion -> snapshots): (a) ``n_snapshots`` snapshots
     per criterion; (b) the tip radial stress and (c) the converted particles against pseudo-time."""
     _style()
-    fig = plt.figure(figsize=(11, 3.4 + 1.15 * n_snapshots), layout="constrained")
-    gs = fig.add_gridspec(2, 1, height_ratios=[1.15 * n_snapshots, 3.0])
     columns = [[(snapshots[c], k, f"(a) {c}{' (default)' * (j == 0)}: ")
                 for k in snapshot_indices(snapshots[c], n_snapshots)] for j, c in enumerate(criteria)]
+    rows = max(len(col) for col in columns)
+    fig = plt.figure(figsize=(11, 3.4 + 1.15 * rows), layout="constrained")
+    gs = fig.add_gridspec(2, 1, height_ratios=[1.15 * rows, 3.0])
     snapshot_grid(fig, gs[0], columns, media_outer_um)
     bottom = gs[1].subgridspec(1, 2)
     runs = growth[growth.case == case]
