@@ -271,8 +271,10 @@ def grow(model: Model, start: solver.State, sectors: list[Sector], settings: Set
         c_from = float(state.load.material_value("concentration"))
         log.info("[%s] resuming at pass %d, c = %g mEq/l (%d GAG particles)", run, step, c_from, int(hist.gag.sum()))
     model.set_props(material)
-    if state.evaluation is None:
-        state = solver.State(state.load, state.x, model.evaluate(state.x, state.load), state.convergence)
+    if state.evaluation is None:  # a resumed snapshot: evaluate it and measure its residual
+        ev = model.evaluate(state.x, state.load)
+        conv = state.convergence or solver.Convergence(solver.relative_residual(model, ev), 0, 1, 0, 0.0)
+        state = solver.State(state.load, state.x, ev, conv)
     dmg = damage.DamageState(hist.D.copy(), hist.onset_stretch.copy())
     rows, snapshots = [], []
     dissipated = 0.0  # kPa um^2 per unit axial length
@@ -285,6 +287,10 @@ def grow(model: Model, start: solver.State, sectors: list[Sector], settings: Set
         rows.append(Pass(step, c, front.converted(hist), front.delaminated_length(hist), tip, st.convergence.residual))
         if (first_of_level or step in wanted) and not any(s[0] == step and s[1].load == st.load for s in snapshots):
             snapshots.append((step, st, hist))
+            # the run continues from a snapshot exactly as a restart from it does: without a stale factorisation
+            # (equilibria need not be unique, e.g. a crushed tissue bridge between two GAG regions, so the
+            # solver's path must be the same)
+            model.factorisation = None
 
     def level(c, state):
         nonlocal hist, material, dmg, dissipated, onset_c, merge_step, step, max_residual
