@@ -10,13 +10,10 @@ DE_RUNS = [
     for sigma in (DE["critical_stresses_kPa"] if case == "single" else [DE["critical_stress_kPa"]])
     for criterion in DE["criteria"]
 ]
-DE_RUN_NAME = "results/delamination/runs/{poolset}_{sigma}kPa_{criterion}"
 DE_SETTINGS = {k: v for k, v in DE.items() if k not in ("pool_sets", "critical_stresses_kPa", "convergence")}
 DE_DX = [f"{dx:g}" for dx in DE["convergence"]["dx_um"]]
-
-
-def de_runs(pattern):
-    return [pattern.format(**r) for r in DE_RUNS]
+DE_GROWTH = [f"results/delamination/runs/{r['poolset']}_{r['sigma']}kPa_{r['criterion']}_growth.csv" for r in DE_RUNS]
+DE_SUMMARIES = [f"results/delamination/runs/{r['poolset']}_{r['sigma']}kPa_{r['criterion']}_summary.csv" for r in DE_RUNS]
 
 
 wildcard_constraints:
@@ -32,9 +29,9 @@ rule delaminate:
         code=SPHGAG,
         state=f"results/states/passive_{DE_PRESSURE}mmHg.npz",
     output:
-        growth=DE_RUN_NAME + "_growth.csv",
-        summary=DE_RUN_NAME + "_summary.csv",
-        snapshots=DE_RUN_NAME + "_snapshots.npz",
+        growth="results/delamination/runs/{poolset}_{sigma}kPa_{criterion}_growth.csv",
+        summary="results/delamination/runs/{poolset}_{sigma}kPa_{criterion}_summary.csv",
+        snapshots="results/delamination/runs/{poolset}_{sigma}kPa_{criterion}_snapshots.npz",
         provenance="results/provenance/delaminate_{poolset}_{sigma}kPa_{criterion}.json",
     params:
         state_slice=dict(PRESSURISED_SLICE, model="passive"),
@@ -55,7 +52,7 @@ rule delaminate:
 rule delamination_growth:
     """Every delamination run's growth rows in one tidy table."""
     input:
-        de_runs(DE_RUN_NAME + "_growth.csv"),
+        DE_GROWTH,
     output:
         "results/delamination/growth.csv",
     log:
@@ -69,7 +66,7 @@ rule delamination_growth:
 rule delamination_summary:
     """One row per delamination run."""
     input:
-        de_runs(DE_RUN_NAME + "_summary.csv"),
+        DE_SUMMARIES,
     output:
         "results/delamination/summary.csv",
     log:

@@ -139,12 +139,7 @@ DE_MEDIA_OUTER = config["bilayer"]["inner_radius_um"] + config["bilayer"]["media
 # figure 5a shows the single pool at critical_stress_kPa if that is one of its sigma_cr, else at the nearest one
 FIG5_SIGMA = min(DE["critical_stresses_kPa"], key=lambda s: abs(s - DE["critical_stress_kPa"]))
 FIG6_CASES = ["low_separation", "high_separation"]
-
-
-def de_snapshots(poolsets, sigma):
-    """Snapshot files of these pool sets at sigma_cr = ``sigma``, every criterion (pool sets outer, criteria inner)."""
-    return [DE_RUN_NAME.format(poolset=p, sigma=f"{sigma:g}", criterion=c) + "_snapshots.npz"
-            for p in poolsets for c in DE["criteria"]]
+DE_SNAPSHOTS = "results/delamination/runs/{poolset}_{sigma}kPa_{criterion}_snapshots.npz"  # expanded over pool sets (outer) and criteria (inner)
 
 
 rule fig5:
@@ -153,7 +148,7 @@ rule fig5:
         code=PLOTS,
         growth=rules.delamination_growth.output[0],
         summary=rules.delamination_summary.output[0],
-        snapshots=de_snapshots(["single"], FIG5_SIGMA),
+        snapshots=expand(DE_SNAPSHOTS, poolset=["single"], sigma=f"{FIG5_SIGMA:g}", criterion=DE["criteria"]),
     output:
         pdf="figures/fig5.pdf",
         png="figures/fig5.png",
@@ -175,7 +170,7 @@ rule fig6:
         code=PLOTS,
         growth=rules.delamination_growth.output[0],
         summary=rules.delamination_summary.output[0],
-        snapshots=de_snapshots(FIG6_CASES, DE["critical_stress_kPa"]),
+        snapshots=expand(DE_SNAPSHOTS, poolset=FIG6_CASES, sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"]),
     output:
         pdf="figures/fig6.pdf",
         png="figures/fig6.png",
@@ -197,7 +192,7 @@ rule fig7:
         code=PLOTS,
         growth=rules.delamination_growth.output[0],
         summary=rules.delamination_summary.output[0],
-        snapshots=de_snapshots(["radial_offset"], DE["critical_stress_kPa"]),
+        snapshots=expand(DE_SNAPSHOTS, poolset=["radial_offset"], sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"]),
     output:
         pdf="figures/fig7.pdf",
         png="figures/fig7.png",
