@@ -580,6 +580,19 @@ def snapshot_grid(fig, spec, columns, media_outer_um):
     material_key(fig, fig.add_subplot(grid[:, -1]))
 
 
+def criterion_snapshot_figure(snapshots: dict, criteria, n_snapshots: int, label: str, media_outer_um: float,
+                              row_height: float):
+    """A figure whose upper part has one column of ``n_snapshots`` snapshots per onset criterion (``snapshots``:
+    criterion -> snapshots; titles "(a) <criterion><label>"); returns it with the grid cell left below."""
+    columns = [[(snapshots[c], k, f"(a) {c}{' (default)' * (j == 0)}{label}")
+                for k in snapshot_indices(snapshots[c], n_snapshots)] for j, c in enumerate(criteria)]
+    rows = max(len(col) for col in columns)
+    fig = plt.figure(figsize=(11, 3.3 + row_height * rows), layout="constrained")
+    gs = fig.add_gridspec(2, 1, height_ratios=[row_height * rows, 3.0])
+    snapshot_grid(fig, gs[0], columns, media_outer_um)
+    return fig, gs[1]
+
+
 def fig5(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, sigma: float, criteria, media_outer_um: float,
          n_snapshots: int = 3):
     """Figure 5, the single pool: (a) snapshots at sigma_cr = ``sigma`` (``snapshots``: criterion -> snapshots),
@@ -589,13 +602,8 @@ def fig5(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, sigma: fl
     single = growth[growth.case == "single"]
     sigmas = sorted(single.sigma_cr_kPa.unique())
     colours = dict(zip(sigmas, plt.cm.Dark2.colors))
-    columns = [[(snapshots[c], k, f"(a) {c}{' (default)' * (j == 0)}, {sigma:g} kPa: ")
-                for k in snapshot_indices(snapshots[c], n_snapshots)] for j, c in enumerate(criteria)]
-    rows = max(len(col) for col in columns)
-    fig = plt.figure(figsize=(11, 3.2 + 1.3 * rows), layout="constrained")
-    gs = fig.add_gridspec(2, 1, height_ratios=[1.3 * rows, 3.0])
-    snapshot_grid(fig, gs[0], columns, media_outer_um)
-    bottom = gs[1].subgridspec(1, len(criteria) + 1)
+    fig, lower = criterion_snapshot_figure(snapshots, criteria, n_snapshots, f", {sigma:g} kPa: ", media_outer_um, 1.3)
+    bottom = lower.subgridspec(1, len(criteria) + 1)
     tip_axes = []
     for j, criterion in enumerate(criteria):
         ax = fig.add_subplot(bottom[j], sharey=tip_axes[0] if tip_axes else None)
@@ -645,13 +653,8 @@ def fig7(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, case: str
     """Figure 7, two pools offset in radius (``snapshots``: criterion -> snapshots): (a) ``n_snapshots`` snapshots
     per criterion; (b) the tip radial stress and (c) the converted particles against pseudo-time."""
     _style()
-    columns = [[(snapshots[c], k, f"(a) {c}{' (default)' * (j == 0)}: ")
-                for k in snapshot_indices(snapshots[c], n_snapshots)] for j, c in enumerate(criteria)]
-    rows = max(len(col) for col in columns)
-    fig = plt.figure(figsize=(11, 3.4 + 1.15 * rows), layout="constrained")
-    gs = fig.add_gridspec(2, 1, height_ratios=[1.15 * rows, 3.0])
-    snapshot_grid(fig, gs[0], columns, media_outer_um)
-    bottom = gs[1].subgridspec(1, 2)
+    fig, lower = criterion_snapshot_figure(snapshots, criteria, n_snapshots, ": ", media_outer_um, 1.15)
+    bottom = lower.subgridspec(1, 2)
     runs = growth[growth.case == case]
     ax = fig.add_subplot(bottom[0])
     tip_stress_panel(ax, [(runs[runs.criterion == c], colour, ls, f"{c}: {run_note(summary, case=case, criterion=c)}")
