@@ -67,8 +67,7 @@ def main():
     FP, f = np.empty((n, 12)), np.empty((n, 2))
 
     def kernel_call():
-        forces.evaluate_forces(x, model.layout.volume, model.nb, pairs, lz, model.cth, model.sth, props,
-                               model._xe, model._fe, FP, f)
+        forces.evaluate_forces(x, pairs, lz, model.cth, model.sth, props, model._xe, model._fe, FP, f)
 
     out["force_evaluation_ms"] = 1e3 * median_time(kernel_call, 15, 200)
     out["force_evaluation_ms_per_1400_particles"] = out["force_evaluation_ms"] * 1400 / n

@@ -42,72 +42,128 @@ def hourglass_coefficients(V, ptr, nbr, R, w, props, alpha, out):
 
 @dataclass(frozen=True)
 class PairData:
-    """Per-pair data of the force kernel: geometry and hourglass coefficients, packed.
+    """Per-pair data of the force kernel: geometry, stencil gradients and hourglass coefficients, packed.
 
     ``pair_geo[p] = (V_i a_ij, V_j a_ji, R_ij)`` for the half list of real pairs,
-    ``solo_geo[s] = (V_i a_e, R_e)`` for ghost entries; ``*_hgc`` the hourglass
+    ``solo_geo[s] = (V_i a_e, R_e)`` for ghost entries; ``pair_a[p] = (a_ij, a_ji, ah_ij, ah_ji)`` and
+    ``solo_a[s] = (a_e, ah_e)`` the corrected gradients of F (eq. 2.9) and of the hourglass stencil's F~;
+    ``split``: whether the two stencils differ (a GAG/tissue interface); ``*_hgc`` the hourglass
     coefficients of :func:`hourglass_coefficients` (symmetric in i, j).
     """
 
     pair_ptr: np.ndarray
     pair_j: np.ndarray
     pair_geo: np.ndarray
+    pair_a: np.ndarray
     pair_hgc: np.ndarray
     solo_ptr: np.ndarray
     solo_j: np.ndarray
     solo_geo: np.ndarray
+    solo_a: np.ndarray
     solo_hgc: np.ndarray
+    split: bool
+    ghost_owner: np.ndarray
+    ghost_mirror: np.ndarray
 
     @classmethod
-    def pack(cls, nb, V, hgc):
+    def pack(cls, nb, V, hgc, ah=None):
+        """``ah``: the hourglass stencil's gradients (:func:`sphgag.kernel.hourglass_gradients`; default the full
+        stencil ``nb.a``)."""
+        ah = nb.a if ah is None else ah
         pe, pr, se = nb.pair_entry, nb.pair_reverse, nb.solo_entry
         owner = np.repeat(np.arange(V.size), np.diff(nb.ptr))
         pair_geo = np.column_stack([V[owner[pe], None] * nb.a[pe], V[owner[pr], None] * nb.a[pr], nb.R[pe]])
         solo_geo = np.column_stack([V[owner[se], None] * nb.a[se], nb.R[se]])
-        return cls(nb.pair_ptr, nb.ext[pe].copy(), np.ascontiguousarray(pair_geo), hgc[pe].copy(),
-                   nb.solo_ptr, nb.ext[se].copy(), np.ascontiguousarray(solo_geo), hgc[se].copy())
+        pair_a = np.column_stack([nb.a[pe], nb.a[pr], ah[pe], ah[pr]])
+        solo_a = np.column_stack([nb.a[se], ah[se]])
+        return cls(nb.pair_ptr, nb.ext[pe].copy(), np.ascontiguousarray(pair_geo), np.ascontiguousarray(pair_a),
+                   hgc[pe].copy(), nb.solo_ptr, nb.ext[se].copy(), np.ascontiguousarray(solo_geo),
+                   np.ascontiguousarray(solo_a), hgc[se].copy(), not np.array_equal(ah, nb.a), nb.ghost_owner,
+                   nb.ghost_mirror)
 
 
 NO_EXTRA_STRESS = np.empty((0, 4))
 
 
-def evaluate_forces(x, V, nb, pd: PairData, lz, cth, sth, props, xe, fe, FP, f, extra=NO_EXTRA_STRESS, ah=None):
+def evaluate_forces(x, pd: PairData, lz, cth, sth, props, xe, fe, FP, f, extra=NO_EXTRA_STRESS):
     """One force evaluation (see :func:`forces_and_stresses`); fills FP = (F, P, F~) and f.
 
     ``extra`` (N, 4), if given, is added to every particle's P before the forces
     are formed (the viscous stress of section 2.3 in :mod:`sphgag.dynamics`).
-    ``ah``: the hourglass stencil's gradients of :func:`sphgag.kernel.hourglass_gradients`
-    (default: the full stencil).
     """
-    ah = nb.a if ah is None else ah
-    return forces_and_stresses(x, nb.ptr, nb.ext, nb.a, ah, pd.pair_ptr, pd.pair_j, pd.pair_geo, pd.pair_hgc,
-                               pd.solo_ptr, pd.solo_j, pd.solo_geo, pd.solo_hgc, nb.ghost_owner, nb.ghost_mirror,
-                               lz, cth, sth, props, extra, xe, fe, FP, f)
+    return forces_and_stresses(x, pd.pair_ptr, pd.pair_j, pd.pair_geo, pd.pair_a, pd.pair_hgc, pd.solo_ptr,
+                               pd.solo_j, pd.solo_geo, pd.solo_a, pd.solo_hgc, pd.split, pd.ghost_owner, pd.ghost_mirror, lz,
+                               cth, sth, props, extra, xe, fe, FP, f)
 
 
-@njit(cache=True, fastmath=True, error_model="numpy", parallel=True)
-def _deformation_and_stress(xe, ptr, ext, a, ah, lz, cth, sth, props, extra, FP, n):
-    """Pass 1 of :func:`forces_and_stresses`, one particle at a time (parallel over particles, Numba threads):
-    ``FP[i] = (F_i, P_i, F~_i)``; returns the smallest det(F_2D) (NaN stress where det <= 0)."""
-    dets = np.empty(n)
-    for i in prange(n):
+@njit(cache=True, fastmath=True, error_model="numpy")
+def _deformation_gradients(xe, pair_ptr, pair_j, pair_a, solo_ptr, solo_j, solo_a, split, FP, n):
+    """Pass 1a of :func:`forces_and_stresses`: ``F_i = sum_j (x_j - x_i) (x) a_ij`` (eq. 2.9) and the hourglass
+    stencil's ``F~_i`` into ``FP[:, :4]`` and ``FP[:, 8:]``, over the half list of pairs (the separation of a pair
+    serves both of its particles; ghost entries from their real side)."""
+    for i in range(n):
+        for k in range(4):
+            FP[i, k] = 0.0
+            FP[i, 8 + k] = 0.0
+    for i in range(n):
         xi0, xi1 = xe[i, 0], xe[i, 1]
         f00 = f01 = f10 = f11 = 0.0
         h00 = h01 = h10 = h11 = 0.0
-        for e in range(ptr[i], ptr[i + 1]):
-            j = ext[e]
+        for p in range(pair_ptr[i], pair_ptr[i + 1]):
+            j = pair_j[p]
             d0 = xe[j, 0] - xi0
             d1 = xe[j, 1] - xi1
-            f00 += d0 * a[e, 0]
-            f01 += d0 * a[e, 1]
-            f10 += d1 * a[e, 0]
-            f11 += d1 * a[e, 1]
-            h00 += d0 * ah[e, 0]
-            h01 += d0 * ah[e, 1]
-            h10 += d1 * ah[e, 0]
-            h11 += d1 * ah[e, 1]
-        FP[i, 0], FP[i, 1], FP[i, 2], FP[i, 3] = f00, f01, f10, f11
-        FP[i, 8], FP[i, 9], FP[i, 10], FP[i, 11] = h00, h01, h10, h11
+            f00 += d0 * pair_a[p, 0]
+            f01 += d0 * pair_a[p, 1]
+            f10 += d1 * pair_a[p, 0]
+            f11 += d1 * pair_a[p, 1]
+            FP[j, 0] -= d0 * pair_a[p, 2]  # x_i - x_j = -d
+            FP[j, 1] -= d0 * pair_a[p, 3]
+            FP[j, 2] -= d1 * pair_a[p, 2]
+            FP[j, 3] -= d1 * pair_a[p, 3]
+            if split:
+                h00 += d0 * pair_a[p, 4]
+                h01 += d0 * pair_a[p, 5]
+                h10 += d1 * pair_a[p, 4]
+                h11 += d1 * pair_a[p, 5]
+                FP[j, 8] -= d0 * pair_a[p, 6]
+                FP[j, 9] -= d0 * pair_a[p, 7]
+                FP[j, 10] -= d1 * pair_a[p, 6]
+                FP[j, 11] -= d1 * pair_a[p, 7]
+        for s in range(solo_ptr[i], solo_ptr[i + 1]):
+            j = solo_j[s]
+            d0 = xe[j, 0] - xi0
+            d1 = xe[j, 1] - xi1
+            f00 += d0 * solo_a[s, 0]
+            f01 += d0 * solo_a[s, 1]
+            f10 += d1 * solo_a[s, 0]
+            f11 += d1 * solo_a[s, 1]
+            if split:
+                h00 += d0 * solo_a[s, 2]
+                h01 += d0 * solo_a[s, 3]
+                h10 += d1 * solo_a[s, 2]
+                h11 += d1 * solo_a[s, 3]
+        FP[i, 0] += f00
+        FP[i, 1] += f01
+        FP[i, 2] += f10
+        FP[i, 3] += f11
+        if split:
+            FP[i, 8] += h00
+            FP[i, 9] += h01
+            FP[i, 10] += h10
+            FP[i, 11] += h11
+        else:  # one stencil: F~ = F
+            for k in range(4):
+                FP[i, 8 + k] = FP[i, k]
+
+
+@njit(cache=True, fastmath=True, error_model="numpy", parallel=True)
+def _stresses(lz, cth, sth, props, extra, FP, n):
+    """Pass 1b of :func:`forces_and_stresses`: ``P_i`` (eq. 2.10) from ``F_i``, parallel over particles (Numba
+    threads); returns the smallest det(F_2D) (NaN stress where det <= 0)."""
+    dets = np.empty(n)
+    for i in prange(n):
+        f00, f01, f10, f11 = FP[i, 0], FP[i, 1], FP[i, 2], FP[i, 3]
         det = f00 * f11 - f01 * f10
         dets[i] = det
         if det > 0.0:
@@ -124,14 +180,15 @@ def _deformation_and_stress(xe, ptr, ext, a, ah, lz, cth, sth, props, extra, FP,
 
 
 @njit(cache=True, fastmath=True, error_model="numpy")
-def forces_and_stresses(x, ptr, ext, a, ah, pair_ptr, pair_j, pair_geo, pair_hgc, solo_ptr, solo_j, solo_geo,
-                        solo_hgc, ghost_owner, ghost_mirror, lz, cth, sth, props, extra, xe, fe, FP, f):
+def forces_and_stresses(x, pair_ptr, pair_j, pair_geo, pair_a, pair_hgc, solo_ptr, solo_j, solo_geo, solo_a, solo_hgc,
+                        split, ghost_owner, ghost_mirror, lz, cth, sth, props, extra, xe, fe, FP, f):
     """One force evaluation: F (eq. 2.9), P (eq. 2.10) and the forces of eqs. (2.11), (2.14).
 
-    Pass 1, per particle: ``F_i = sum_j (x_j - x_i) (x) a_ij`` over its stencil,
-    then ``P_i`` from its material row, and the hourglass deformation gradient
-    ``F~_i`` from the weighted stencil ``ah`` (:func:`sphgag.kernel.hourglass_gradients`;
-    ``ah = a`` without a GAG/tissue interface); ``FP[i] = (F_i, P_i, F~_i)`` (row-major).
+    Pass 1: ``F_i = sum_j (x_j - x_i) (x) a_ij`` and the hourglass deformation gradient
+    ``F~_i`` of the weighted stencil ``ah`` (:func:`sphgag.kernel.hourglass_gradients`;
+    ``F~ = F`` without a GAG/tissue interface), accumulated over the half list of pairs
+    (:func:`_deformation_gradients`), then ``P_i`` from each particle's material row
+    (:func:`_stresses`, parallel); ``FP[i] = (F_i, P_i, F~_i)`` (row-major).
     Pass 2, over the half list of real pairs: the two directed pair vectors
     ``t_ij = V_i P_i a_ij - c_ij delta_ij n_ij`` (``f_i += t_ij``, ``f_j -= t_ij``)
     and ``t_ji`` share the separation and the division, so each pair is
@@ -149,7 +206,8 @@ def forces_and_stresses(x, ptr, ext, a, ah, pair_ptr, pair_j, pair_geo, pair_hgc
         o = ghost_owner[g]
         xe[n + g, 0] = ghost_mirror[g, 0] * x[o, 0]
         xe[n + g, 1] = ghost_mirror[g, 1] * x[o, 1]
-    dmin = _deformation_and_stress(xe, ptr, ext, a, ah, lz, cth, sth, props, extra, FP, n)
+    _deformation_gradients(xe, pair_ptr, pair_j, pair_a, solo_ptr, solo_j, solo_a, split, FP, n)
+    dmin = _stresses(lz, cth, sth, props, extra, FP, n)
     fe[:, :] = 0.0
     for i in range(n):
         xi0, xi1 = xe[i, 0], xe[i, 1]

@@ -120,7 +120,7 @@ class Model:
                                           self.hourglass_alpha, hgc)
             beta, ah, sh = kernel.hourglass_gradients(self.nb, V, props[:, materials.TISSUE])
             hgc *= beta
-            pairs = forces.PairData.pack(self.nb, V, hgc)
+            pairs = forces.PairData.pack(self.nb, V, hgc, ah)
             self._cache.update(key=key, props=props, hgc=hgc, pairs=pairs, hg=(ah, sh))
         return self._cache["props"], self._cache["hgc"], self._cache["pairs"]
 
@@ -146,15 +146,13 @@ class Model:
     # -- evaluation -----------------------------------------------------------
     def evaluate(self, x: np.ndarray, load: Load, extra_stress: np.ndarray | None = None) -> Evaluation:
         """Forces and stresses at positions ``x`` under ``load`` (``extra_stress``: (N, 4) added to P)."""
-        nb, lay = self.nb, self.layout
-        n = self.n
+        lay, n = self.layout, self.n
         FP = np.empty((n, 12))
         f = np.empty((n, 2))
         props, hgc, pairs = self.material(load)
-        ah = self.hourglass_stencil(load)[0]
         extra = forces.NO_EXTRA_STRESS if extra_stress is None else extra_stress
-        min_det = forces.evaluate_forces(x, lay.volume, nb, pairs, load.axial_stretch, self.cth, self.sth, props,
-                                         self._xe, self._fe, FP, f, extra, ah)
+        min_det = forces.evaluate_forces(x, pairs, load.axial_stretch, self.cth, self.sth, props, self._xe, self._fe,
+                                         FP, f, extra)
         F, P = FP[:, :4].reshape(n, 2, 2), FP[:, 4:8].reshape(n, 2, 2)
         Fh = FP[:, 8:].reshape(n, 2, 2)
         p = load.pressure_kPa or 0.0
