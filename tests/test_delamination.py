@@ -75,6 +75,8 @@ def test_seeded_pool_material_is_the_swelling_material(ci_config):
     assert np.array_equal(np.flatnonzero(np.any(table != base(load), axis=1)), members)
     at_zero = model.props(load.with_material(transition=0.0))
     assert np.array_equal(at_zero, base(load))
+    # a load that says nothing of the transition (homeostasis, pressurisation) sees the intact wall
+    assert np.array_equal(model.props(Load(1.0, 10.0)), base(Load(1.0, 10.0)))
 
 
 def test_a_material_path_of_damage_is_linear_in_d_and_ends_at_the_new_history(ci_config):

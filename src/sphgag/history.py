@@ -123,8 +123,8 @@ class HistoryMaterial:
     ``base(load)``: the intact wall's table (e.g. :class:`sphgag.artery.BilayerMaterial`);
     ``gag``: the ``gag`` configuration (eq. 2.27 and the Donnan law).
 
-    The load's ``transition`` t in [0, 1] (default 1) moves between the two histories,
-    so that the quasi-static solver can follow (and bisect) any change of history:
+    The load's ``transition`` t in [0, 1] moves between the two histories (a load without one is at
+    ``before``), so that the quasi-static solver can follow (and bisect) any change of history:
 
     * damage ``D = D_before + t (D_after - D_before)``, as ``(1 - D) W`` (:func:`sphgag.damage.weaken`);
     * particles that are GAG in ``after`` but not in ``before`` follow the conversion
@@ -158,7 +158,7 @@ class HistoryMaterial:
         return HistoryMaterial(self.base, self.after, self.gag, after)
 
     def __call__(self, load: Load) -> np.ndarray:
-        t = float(load.material_value("transition", 1.0))
+        t = float(load.material_value("transition", 0.0))
         c = float(load.material_value("concentration", 0.0))
         out = self.base(load)
         D = self.before.D + t * (self.after.D - self.before.D)
