@@ -13,7 +13,12 @@ os.environ.update(PYTHONPATH=os.pathsep.join(filter(None, [SRC, os.environ.get("
 
 from sphgag.config import canonical, load_yaml, validate  # noqa: E402
 
-configfile: "config/config.yaml"
+# The full study is the default only when no --configfile is given: a user's config stands alone (Snakemake would
+# otherwise merge it over config/config.yaml, so that pools, pressures and whole sections leak in from the full study).
+if not workflow.overwrite_configfiles:
+
+    configfile: "config/config.yaml"
+
 
 for _path in workflow.configfiles:  # Snakemake's own YAML reader lets a duplicated key win silently
     load_yaml(_path)

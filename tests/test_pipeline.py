@@ -161,3 +161,45 @@ def test_lint_is_clean():
     run = subprocess.run([sys.executable, "-m", "snakemake", "--snakefile", str(ROOT / "Snakefile"), "--lint"],
                          capture_output=True, text=True, cwd=ROOT)
     assert "Congratulations" in run.stdout + run.stderr, run.stdout[-2000:]
+
+
+@pytest.fixture(scope="module")
+def project_copy(tmp_path_factory):
+    """A copy of the project root (its git-tracked files), where a user runs snakemake."""
+    dest = tmp_path_factory.mktemp("project")
+    files = subprocess.run(["git", "ls-files"], cwd=ROOT, capture_output=True, text=True, check=True).stdout.split()
+    for name in files:
+        if (ROOT / name).is_file():
+            (dest / name).parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy2(ROOT / name, dest / name)
+    return dest
+
+
+def plan(project, *args):
+    run = subprocess.run([sys.executable, "-m", "snakemake", "-n", "all", *args], cwd=project, capture_output=True,
+                         text=True, env=os.environ.copy())
+    return run, run.stdout + run.stderr
+
+
+def test_a_configfile_stands_alone(project_copy, ci_config):
+    """--configfile X means X: nothing of config/config.yaml (pools II, III, pressure 145) leaks in."""
+    run, out = plan(project_copy, "--configfile", "config/ci.yaml")
+    assert run.returncode == 0, out
+    sw = ci_config["swelling"]
+    expected = len(sw["models"]) * len(sw["cases"]) * len(sw["pressures_mmHg"])
+    swell = [line for line in out.splitlines() if line.startswith("swell ")]
+    assert swell and int(swell[0].split()[-1]) == expected, swell
+    run, out = plan(project_copy)  # no --configfile: the full study
+    full = yaml.safe_load((ROOT / "config/config.yaml").read_text())["swelling"]
+    assert f"swell {len(full['models']) * len(full['cases']) * len(full['pressures_mmHg'])}".split() in \
+        [line.split() for line in out.splitlines()]
+
+
+def test_a_config_missing_a_section_is_rejected_naming_it(project_copy, ci_config, tmp_path):
+    cfg = copy.deepcopy(ci_config)
+    del cfg["delamination"]
+    path = tmp_path / "partial.yaml"
+    path.write_text(yaml.safe_dump(cfg, sort_keys=False))
+    run, out = plan(project_copy, "--configfile", str(path))
+    assert run.returncode != 0
+    assert "missing key 'delamination'" in out, out[-2000:]
