@@ -76,3 +76,38 @@ def test_all_problems_are_reported_at_once(full_config):
     with pytest.raises(config.ConfigError) as info:
         config.validate(cfg, SCHEMA)
     assert "mean.dx_um" in str(info.value) and "numerics.tolerance" in str(info.value)
+
+
+# -- inputs a schema alone lets through (issue 10) ----------------------------------------------------------------
+
+
+@pytest.mark.parametrize("path, value, expected", [
+    (("bilayer", "inner_radius_um"), float("nan"), "bilayer.inner_radius_um = nan is not a finite number"),
+    (("mean", "mass_fraction"), float("inf"), None),  # unknown key or inf: either way rejected by name
+    (("numerics", "tolerance"), float("nan"), "numerics.tolerance = nan is not a finite number"),
+    (("numerics", "max_newton_iterations"), 30.0, "numerics.max_newton_iterations = 30.0 is invalid"),
+    (("numerics", "reuse_factorisation"), 1, "numerics.reuse_factorisation = 1 is invalid"),
+    (("numerics", "tolerance"), "1e-4", "write 1.0e-4"),
+    (("swelling", "pressures_mmHg"), [103.0, 103.0], "swelling.pressures_mmHg = [103.0, 103.0] is invalid"),
+    (("swelling", "cases", "I", "angular_extent_deg"), 0, "swelling.cases.I.angular_extent_deg = 0 is invalid"),
+    (("bilayer_calibration", "state_pressures_mmHg"), [103.0, 103.0000001, 200.0], "all give the file name '103'"),
+])
+def test_inputs_the_schema_alone_misses_are_rejected_by_name(ci_config, path, value, expected):
+    message = bad(ci_config, path, value)
+    assert (expected or path[0]) in message
+
+
+def test_a_pool_named_by_a_number_is_rejected(ci_config):
+    cfg = copy.deepcopy(ci_config)
+    cfg["swelling"]["cases"][1] = cfg["swelling"]["cases"]["I"]
+    with pytest.raises(config.ConfigError, match="key 'swelling.cases.1' must be a name"):
+        config.validate(cfg, SCHEMA)
+
+
+def test_a_corrupt_state_file_names_the_file_and_the_remedy(tmp_path):
+    from sphgag import state
+
+    path = tmp_path / "homeostatic.npz"
+    path.write_bytes(b"PK\x03\x04 truncated")
+    with pytest.raises(state.CorruptState, match="homeostatic.npz is not a readable state file.*rerun snakemake"):
+        state.load(path)

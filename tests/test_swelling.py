@@ -67,12 +67,10 @@ def swell(cfg, start, sector):
     return model, table
 
 
-def test_a_pool_of_zero_size_changes_nothing(ci_config, pressurised):
-    sector = geometry.Sector(663.0, 51.5, 15.0, 0.0)
-    model, table = swell(ci_config, pressurised, sector)
-    assert model.props.converting.size == 0
-    for col in ("tip_radial_stress_kPa", "top_circ_stress_kPa"):
-        assert np.allclose(table[col], table[col].iloc[0], rtol=1e-6, atol=1e-6)
+def test_a_pool_without_particles_is_refused_by_name(ci_config):
+    """A pool too small for the resolution would write a table of an unchanged wall: it is an error instead."""
+    with pytest.raises(ValueError, match="holds no medial particle at dx = 6 um"):
+        pool_model(ci_config, geometry.Sector(663.0, 51.5, 15.0, 0.01))
 
 
 def test_swelling_keeps_the_lumen_pressure_and_converges(ci_config, pressurised):

@@ -158,6 +158,14 @@ def pool_sector(case: dict) -> geometry.Sector:
                            case["angular_extent_deg"])
 
 
+def bilayer_layout(p: dict) -> geometry.Layout:
+    """Particles of the bi-layered wall: media (with ``aligned_radii_um`` as cell boundaries) and adventitia."""
+    r0, border, r1 = bilayer_interfaces(p)
+    aligned = sorted(r for r in p["aligned_radii_um"] if r0 < r < border)
+    return geometry.quarter_annulus([r0, *aligned, border, r1], p["dx_um"],
+                                    layer_names=["media"] * (len(aligned) + 1) + ["adventitia"])
+
+
 def bilayer_model(p: dict, numerics: dict, name: str = "bilayer", pool=None, gag: dict | None = None) -> Model:
     """Bi-layered model (section 2.4.2, Table 2) in its in vivo reference configuration.
 
@@ -170,15 +178,17 @@ def bilayer_model(p: dict, numerics: dict, name: str = "bilayer", pool=None, gag
     the intact wall to the wall with those medial sectors seeded as GAG pools: the
     load's ``transition`` converts them and its ``concentration`` swells them.
     """
-    r0, border, r1 = bilayer_interfaces(p)
-    aligned = sorted(r for r in p["aligned_radii_um"] if r0 < r < border)
-    layout = geometry.quarter_annulus([r0, *aligned, border, r1], p["dx_um"],
-                                      layer_names=["media"] * (len(aligned) + 1) + ["adventitia"])
+    layout = bilayer_layout(p)
     nb = kernel.for_layout(layout, numerics["kernel_support_factor"])
     material = BilayerMaterial(p, layout)
     if pool is not None:
         sectors = [pool] if isinstance(pool, geometry.Sector) else list(pool)
+        members = [s.members(layout, layer="media") for s in sectors]
+        for s, m in zip(sectors, members):
+            if not m.size:
+                raise ValueError(f"the pool {s} holds no medial particle at dx = {p['dx_um']:g} um: make it larger "
+                                 "than the particle spacing or move it into the media")
         intact = history.ParticleHistory.intact(layout.n)
-        seeded = intact.seed([s.members(layout, layer="media") for s in sectors])
+        seeded = intact.seed(members)
         material = history.HistoryMaterial(material, intact, gag, after=seeded)
     return Model(name, layout, nb, material, numerics["hourglass_alpha"])

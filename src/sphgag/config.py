@@ -9,6 +9,7 @@ allowed range and what the key means.
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import jsonschema
@@ -47,12 +48,20 @@ def _key(path) -> str:
 
 
 def _subschema(schema: dict, path) -> dict:
-    node = schema
+    """The schema node of a config key (following ``$ref``s and the schemas of named entries)."""
+
+    def resolve(node):
+        while isinstance(node, dict) and "$ref" in node:
+            node = schema["$defs"][node["$ref"].split("/")[-1]]
+        return node
+
+    node = resolve(schema)
     for part in path:
         if isinstance(part, int):
-            node = node.get("items", {})
+            node = resolve(node.get("items", {}))
         else:
-            node = node.get("properties", {}).get(part, {})
+            extra = node.get("additionalProperties")
+            node = resolve(node.get("properties", {}).get(part, extra if isinstance(extra, dict) else {}))
     return node
 
 
@@ -76,7 +85,22 @@ def _describe(error: jsonschema.ValidationError, schema: dict) -> str:
     if "enum" in node:
         allowed = f" (allowed: one of {node['enum']})"
     desc = f" -- {node['description']}" if "description" in node else ""
-    return f"{key} = {error.instance!r} is invalid: {error.message}{allowed}{desc}"
+    hint = ""
+    if error.validator == "type" and isinstance(error.instance, str):
+        try:
+            value = float(error.instance)
+        except ValueError:
+            pass
+        else:  # YAML 1.1 reads 1e-4 (no dot) as text
+            hint = f" (YAML reads {error.instance} as text, not as the number {value!r}: write {_yaml_float(error.instance)})"
+    return f"{key} = {error.instance!r} is invalid: {error.message}{hint}{allowed}{desc}"
+
+
+def _yaml_float(text: str) -> str:
+    mantissa, _, exponent = text.lower().partition("e")
+    if "." not in mantissa:
+        mantissa += ".0"
+    return mantissa + ("e" + exponent if exponent else "")
 
 
 def canonical(config):
@@ -88,16 +112,68 @@ def canonical(config):
     return config
 
 
+# JSON Schema's "integer" accepts 30.0 and its "number" accepts True; in a config they are mistakes
+# (``range(30.0)`` fails long after validation), so only Python ints are integers and bools are neither.
+_TYPES = jsonschema.Draft202012Validator.TYPE_CHECKER.redefine_many({
+    "integer": lambda _, v: isinstance(v, int) and not isinstance(v, bool),
+    "number": lambda _, v: isinstance(v, (int, float)) and not isinstance(v, bool),
+})
+_Validator = jsonschema.validators.extend(jsonschema.Draft202012Validator, type_checker=_TYPES)
+
+
+def _literal_problems(node, path=()) -> list[str]:
+    """What JSON Schema cannot see: mapping keys that are not text (YAML reads ``1:`` as an integer) and
+    non-finite numbers (``.nan`` and ``.inf`` pass every range check)."""
+    out = []
+    if isinstance(node, dict):
+        for k, v in node.items():
+            if not isinstance(k, str):
+                out.append(f"key {_key(path + (str(k),))!r} must be a name, not a number: write '{k}' in quotes")
+            out += _literal_problems(v, path + (str(k),))
+    elif isinstance(node, list):
+        for i, v in enumerate(node):
+            out += _literal_problems(v, path + (i,))
+    elif isinstance(node, float) and not math.isfinite(node):
+        out.append(f"{_key(path)} = {node} is not a finite number")
+    return out
+
+
 def validate(config: dict, schema_path) -> dict:
     """Validate ``config`` against the schema at ``schema_path``; return it or raise :class:`ConfigError`."""
     schema = load_yaml(schema_path)
-    validator = jsonschema.Draft202012Validator(schema)
-    errors = sorted(validator.iter_errors(config), key=lambda e: list(map(str, e.absolute_path)))
-    problems = [_describe(e, schema) for e in errors] if errors else _consistency(config)
+    if not isinstance(config, dict):
+        raise ConfigError(f"invalid configuration: expected a mapping of sections, got {type(config).__name__}")
+    problems = _literal_problems(config)
+    if not problems:
+        validator = _Validator(schema)
+        errors = sorted(validator.iter_errors(config), key=lambda e: list(map(str, e.absolute_path)))
+        problems = [_describe(e, schema) for e in errors] if errors else _consistency(config)
     if problems:
         lines = "\n".join(f"  - {p}" for p in problems)
         raise ConfigError(f"invalid configuration ({Path(schema_path).name}):\n{lines}")
     return config
+
+
+def _empty_pools(config: dict) -> list[str]:
+    """Pools that hold no medial particle at a resolution they are run at (too thin or too narrow for dx)."""
+    from . import artery
+
+    bil, out, layouts = config["bilayer"], [], {}
+    sw, de = config.get("swelling", {}), config.get("delamination", {})
+    runs = [(f"swelling.cases.{n}", pool, bil["dx_um"]) for n, pool in sw.get("cases", {}).items()]
+    runs += [(f"swelling.cases.{n}", sw["cases"][n], dx) for n in config.get("swelling_convergence", {}).get("cases", [])
+             for dx in config["swelling_convergence"]["dx_um"] if n in sw.get("cases", {})]
+    for name, pools in de.get("pool_sets", {}).items():
+        spacings = [bil["dx_um"]] + (de["convergence"]["dx_um"] if name == "single" else [])
+        runs += [(f"delamination.pool_sets.{name}[{k}]", pool, dx) for k, pool in enumerate(pools) for dx in spacings]
+    for name, pool, dx in runs:
+        if dx not in layouts:
+            layouts[dx] = artery.bilayer_layout(dict(bil, dx_um=dx))
+        if not artery.pool_sector(pool).members(layouts[dx], layer="media").size:
+            out.append(f"{name}: the pool holds no medial particle at dx = {dx:g} um (it is "
+                       f"{pool['radial_extent_um']:g} um by {pool['angular_extent_deg']:g} deg): make it larger than "
+                       "the particle spacing")
+    return sorted(set(out))
 
 
 def _consistency(config: dict) -> list[str]:
@@ -134,6 +210,19 @@ def _consistency(config: dict) -> list[str]:
         if name not in sw.get("cases", {}):
             problems.append(f"swelling_convergence.cases[{k}] = {name!r} is not a pool of swelling.cases "
                             f"({', '.join(sw.get('cases', {}))})")
+    # values that name files ({pressure}mmHg, dx{dx}, {sigma}kPa) must give distinct names
+    named = [("bilayer_calibration", "state_pressures_mmHg"), ("calibration", "transmural_pressures_mmHg"),
+             ("swelling", "pressures_mmHg"), ("swelling_convergence", "dx_um"),
+             ("delamination", "critical_stresses_kPa")]
+    for section, key in named:
+        values = config.get(section, {}).get(key, [])
+        names = [f"{v:g}" for v in values]
+        for name in sorted({n for n in names if names.count(n) > 1}):
+            same = [v for v, n in zip(values, names) if n == name]
+            problems.append(f"{section}.{key}: {same} all give the file name '{name}': make them differ by more")
+    de_dx = [f"{v:g}" for v in config.get("delamination", {}).get("convergence", {}).get("dx_um", [])]
+    if len(set(de_dx)) < len(de_dx):
+        problems.append(f"delamination.convergence.dx_um: {de_dx} repeat a file name (dx{{dx}}): make them differ")
     de = config.get("delamination", {})
     if de:
         if de["pressure_mmHg"] not in saved:
@@ -161,6 +250,8 @@ def _consistency(config: dict) -> list[str]:
             if pool["centre_angle_deg"] - half <= 0 or pool["centre_angle_deg"] + half >= 90:
                 problems.append(f"{name}: angles {pool['centre_angle_deg'] - half:g}-"
                                 f"{pool['centre_angle_deg'] + half:g} deg reach a symmetry edge (0 or 90 deg)")
+    if not problems and bil:
+        problems += _empty_pools(config)
     act = bil.get("active", {})
     if act and act.get("stretch_min", 0) >= act.get("stretch_max", 1):
         problems.append(f"bilayer.active.stretch_min = {act.get('stretch_min')} must be below "

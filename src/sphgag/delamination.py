@@ -252,7 +252,11 @@ def grow(model: Model, start: solver.State, sectors: list[Sector], settings: Set
     law = settings.law
     if resume is None:
         intact = ParticleHistory.intact(lay.n)
-        hist = intact.seed([s.members(lay, layer="media") for s in sectors])
+        members = [s.members(lay, layer="media") for s in sectors]
+        empty = [s for s, m in zip(sectors, members) if not m.size]
+        if empty:
+            raise ValueError(f"[{run}] pool(s) {empty} hold no medial particle at dx = {lay.dx:g} um")
+        hist = intact.seed(members)
         material = HistoryMaterial(base, intact, gag, after=hist)
         model.set_props(material)
         base_load = protocols.swelling_load(start.load, 0.0, 0.0)

@@ -11,6 +11,7 @@ other parameters.
 from __future__ import annotations
 
 import json
+import zipfile
 from contextlib import nullcontext
 from dataclasses import dataclass
 from pathlib import Path
@@ -24,6 +25,10 @@ from .loading import Load
 
 class StateMismatch(ValueError):
     """The state file was made with different parameters than the caller expects."""
+
+
+class CorruptState(ValueError):
+    """The state file cannot be read (truncated, not a state file)."""
 
 
 def canonical(params) -> str:
@@ -60,10 +65,14 @@ def save(path, x: np.ndarray, load: Load, params: dict, info: dict | None = None
 
 def load(path, expected_params: dict | None = None) -> SavedState:
     """Read a state file; if ``expected_params`` is given it must equal the stored slice."""
-    with np.load(path, allow_pickle=False) as data:
-        x = data["x"].copy()
-        meta = json.loads(str(data["meta"]))
-        history = ParticleHistory.from_arrays(data) if "history_origin" in data.files else None
+    try:
+        with np.load(path, allow_pickle=False) as data:
+            x = data["x"].copy()
+            meta = json.loads(str(data["meta"]))
+            history = ParticleHistory.from_arrays(data) if "history_origin" in data.files else None
+    except (OSError, ValueError, KeyError, EOFError, zipfile.BadZipFile) as exc:
+        raise CorruptState(f"{path} is not a readable state file ({type(exc).__name__}: {exc}); delete it and rerun "
+                           "snakemake, which regenerates it with the rule that wrote it") from exc
     if expected_params is not None and canonical(expected_params) != canonical(meta["params"]):
         diff = _differences(json.loads(canonical(expected_params)), meta["params"])
         raise StateMismatch(f"{path} was made with different parameters: {'; '.join(diff)}")
