@@ -28,8 +28,9 @@ config = canonical(config)
 
 # Snakemake tracks a rule's script, not the modules it imports: every simulation
 # rule depends on the package's physics sources, so a physics edit reruns what it
-# affects; figure and claims rules depend on their own modules only.
-PRESENTATION = {"plots.py", "claims.py"}
+# affects; figure and claims rules depend on their own modules only; the modules that
+# compute no number (validation, logging, provenance records) are inputs of nothing.
+PRESENTATION = {"plots.py", "claims.py", "config.py", "runlog.py", "provenance.py"}
 # (relative to the working directory, so that moving or re-cloning the checkout reruns nothing)
 SPHGAG = sorted(os.path.relpath(p) for p in Path(SRC, "sphgag").glob("*.py") if p.name not in PRESENTATION)
 PLOTS = os.path.relpath(Path(SRC, "sphgag", "plots.py"))

@@ -35,6 +35,8 @@ def save(fig, paths, description: str):
         meta = figure_metadata(description)
         if str(path).endswith(".png"):
             meta = {"Title": meta["Title"], "Software": meta["Creator"]}
+        elif str(path).endswith(".pdf"):
+            meta["CreationDate"] = None  # no timestamp: the same tables give the same bytes
         fig.savefig(path, metadata=meta)
     plt.close(fig)
 

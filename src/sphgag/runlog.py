@@ -9,13 +9,19 @@ from contextlib import contextmanager
 
 
 def setup(log_path=None, level=logging.INFO) -> logging.Logger:
-    """Send the ``sphgag`` logger to ``log_path`` (if given) and to stderr, line by line."""
+    """Send the ``sphgag`` logger to ``log_path`` (if given) and to stderr, line by line.
+
+    With a log file, the progress (every converged state) goes to the file only and the terminal gets
+    warnings and errors, so that a Snakemake run shows its job progress, not thousands of states.
+    """
     logger = logging.getLogger("sphgag")
     logger.setLevel(level)
     logger.handlers.clear()
     fmt = logging.Formatter("%(asctime)s %(levelname)s %(message)s", "%H:%M:%S")
-    handlers = [logging.StreamHandler(sys.stderr)]
+    terminal = logging.StreamHandler(sys.stderr)
+    handlers = [terminal]
     if log_path:
+        terminal.setLevel(logging.WARNING)
         handlers.append(logging.FileHandler(log_path, mode="w"))
     for h in handlers:
         h.setFormatter(fmt)
