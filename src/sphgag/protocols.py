@@ -86,7 +86,6 @@ def state_row(model: Model, s: solver.State, tube: analytic.ThickWallTube, R_ref
         newton_iterations=s.convergence.iterations,
         force_evaluations=s.convergence.force_evaluations,
         jacobians=s.convergence.jacobians,
-        solve_seconds=s.convergence.seconds,
         exact_outer_diameter_um=exact_OD,
         exact_inner_diameter_um=2.0 * exact_r_in,
         od_rel_error=OD / exact_OD - 1.0,
@@ -337,7 +336,7 @@ def swell_pool(model: Model, start: solver.State, pool, numerics: dict, sw: dict
                    pressure_mmHg=measure.carried_pressure(model, state.evaluation) / MMHG_TO_KPA)
         row.update(pool_measurements(model, state.evaluation, pool, members, sw["probe_length_um"]))
         row.update(residual=state.convergence.residual, newton_iterations=state.convergence.iterations,
-                   force_evaluations=state.convergence.force_evaluations, solve_seconds=state.convergence.seconds)
+                   force_evaluations=state.convergence.force_evaluations)
         rows.append(row)
 
     intact = solver.follow_path(model, start.x, base, [base], **opts)[-1]
