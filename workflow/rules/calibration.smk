@@ -18,6 +18,9 @@ rule calibrate_mean:
     benchmark:
         "results/benchmarks/calibrate_mean.tsv"
     threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
     script:
         "../scripts/calibrate_mean.py"
 

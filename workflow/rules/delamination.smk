@@ -45,6 +45,9 @@ rule delaminate:
     conda:
         "../envs/sphgag.yaml"
     threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
     script:
         "../scripts/delaminate.py"
 
@@ -97,6 +100,9 @@ rule delamination_convergence_dx:
     conda:
         "../envs/sphgag.yaml"
     threads: 1
+    resources:
+        runtime=5,
+        mem_mb=2500,
     script:
         "../scripts/delamination_convergence.py"
 

@@ -11,6 +11,10 @@ rule fig3a_mean:
         "../envs/sphgag.yaml"
     log:
         "logs/fig3a_mean.log",
+    threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
     script:
         "../scripts/fig3a_mean.py"
 
@@ -27,6 +31,10 @@ rule fig3b:
         "../envs/sphgag.yaml"
     log:
         "logs/fig3b.log",
+    threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
     script:
         "../scripts/fig3b.py"
 
@@ -48,6 +56,10 @@ rule fig3:
         "logs/fig3.log",
     conda:
         "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
     script:
         "../scripts/fig3.py"
 
@@ -68,6 +80,10 @@ rule fig1:
         "logs/fig1.log",
     conda:
         "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
     script:
         "../scripts/fig1.py"
 
@@ -88,6 +104,10 @@ rule fig4:
         "logs/fig4.log",
     conda:
         "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
     script:
         "../scripts/fig4.py"
 
@@ -130,6 +150,10 @@ rule swelling_convergence_figure:
         "logs/swelling_convergence_figure.log",
     conda:
         "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
     script:
         "../scripts/swelling_convergence_figure.py"
 
@@ -160,6 +184,10 @@ rule fig5:
         "logs/fig5.log",
     conda:
         "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
     script:
         "../scripts/fig5.py"
 
@@ -182,6 +210,10 @@ rule fig6:
         "logs/fig6.log",
     conda:
         "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
     script:
         "../scripts/fig6.py"
 
@@ -205,5 +237,9 @@ rule fig7:
         "logs/fig7.log",
     conda:
         "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
     script:
         "../scripts/fig7.py"

@@ -34,6 +34,9 @@ rule homeostasis:
     conda:
         "../envs/sphgag.yaml"
     threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
     script:
         "../scripts/homeostasis.py"
 
@@ -60,6 +63,9 @@ rule bilayer_pressure_diameter:
     conda:
         "../envs/sphgag.yaml"
     threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
     script:
         "../scripts/bilayer_pressure_diameter.py"
 

@@ -33,6 +33,9 @@ rule swell:
     conda:
         "../envs/sphgag.yaml"
     threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
     script:
         "../scripts/swell.py"
 
@@ -81,6 +84,9 @@ rule swelling_convergence_dx:
     conda:
         "../envs/sphgag.yaml"
     threads: 1
+    resources:
+        runtime=5,
+        mem_mb=2500,
     script:
         "../scripts/swelling_convergence.py"
 

@@ -32,6 +32,9 @@ rule verify_pool_ratio:
     conda:
         "../envs/sphgag.yaml"
     threads: 1
+    resources:
+        runtime=5,
+        mem_mb=2000,
     script:
         "../scripts/verify_pool.py"
 
@@ -77,5 +80,9 @@ rule verification_pool_figure:
         "logs/verification_pool_figure.log",
     conda:
         "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
     script:
         "../scripts/verification_pool_figure.py"
