@@ -49,6 +49,7 @@ rule all:
     input:
         rules.calibrate_mean.output,
         rules.homeostasis.output,
+        rules.homeostasis_target.output,
         expand(rules.bilayer_pressure_diameter.output, model=("passive", "active")),
         rules.bilayer_table.output,
         rules.transmural.output,

@@ -137,6 +137,16 @@ def test_changing_a_parameter_reruns_only_what_it_affects(workdir, ci_config, tm
     assert "rule homeostasis:" not in out and "rule bilayer_pressure_diameter:" not in out
 
 
+def test_a_reference_value_reruns_only_the_table_that_shows_it(workdir, ci_config, tmp_path):
+    edited = edited_config(tmp_path, ci_config, "homeostasis", "target_pressure_mmHg", 110.0)
+    run = snakemake(workdir, "-n", "all", configfile=edited)
+    out = run.stdout + run.stderr
+    assert run.returncode == 0, out
+    planned = {line.split()[0] for line in out.split("Job stats:")[1].splitlines()[3:] if line.strip()
+               and not line.startswith("total")} if "Job stats:" in out else set()
+    assert planned == {"homeostasis_target", "all"}, out[-3000:]
+
+
 def test_a_bad_config_stops_the_workflow_with_a_named_key(tmp_path, ci_config):
     edited = edited_config(tmp_path, ci_config, "numerics", "kernel_support_factor", 9.0)
     run = snakemake(tmp_path, "-n", "all", configfile=edited)

@@ -31,7 +31,7 @@ with runlog.run("homeostasis", sm.log[0]) as log:
                    residual=h.state.convergence.residual,
                    inner_stress_pressure_mmHg=h.pressures_kPa["inner_radial_stress"] / MMHG_TO_KPA,
                    equilibrium_pressure_mmHg=h.pressures_kPa["hoop_equilibrium"] / MMHG_TO_KPA,
-                   semi_analytical_pressure_mmHg=semi, target_pressure_mmHg=sm.params.target_pressure)
+                   semi_analytical_pressure_mmHg=semi)
         for _, ls in h.layers.iterrows():
             row[f"{ls.layer}_circ_stress_kPa"] = ls.circ_stress_mean_kPa
             row[f"{ls.layer}_circ_variation"] = ls.circ_variation
@@ -39,9 +39,8 @@ with runlog.run("homeostasis", sm.log[0]) as log:
         profiles.append(h.profile.assign(model=label))
         layers.append(h.layers.assign(model=label))
         log.info("[homeostasis] %s: carried pressure %.2f mmHg from the reactions, %.2f from global equilibrium, "
-                 "%.2f from the inner ring's radial stress; semi-analytical %.2f; target %.0f (%+.1f %%)", label,
-                 row["carried_pressure_mmHg"], row["equilibrium_pressure_mmHg"], row["inner_stress_pressure_mmHg"],
-                 semi, sm.params.target_pressure, 100 * (row["carried_pressure_mmHg"] / sm.params.target_pressure - 1))
+                 "%.2f from the inner ring's radial stress; semi-analytical %.2f", label,
+                 row["carried_pressure_mmHg"], row["equilibrium_pressure_mmHg"], row["inner_stress_pressure_mmHg"], semi)
         for _, ls in h.layers.iterrows():
             log.info("[homeostasis] %s %s: circumferential stress %.1f kPa, (max - min)/mean over %d rings = %.1f %%",
                      label, ls.layer, ls.circ_stress_mean_kPa, ls.rings, 100 * ls.circ_variation)

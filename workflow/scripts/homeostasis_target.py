@@ -1,0 +1,16 @@
+"""Rule homeostasis_target: the carried homeostatic pressure against the reference value of Table 2."""
+
+import pandas as pd
+
+from sphgag import runlog
+
+sm = snakemake  # noqa: F821
+with runlog.run("homeostasis_target", sm.log[0]) as log:
+    summary = pd.read_csv(sm.input.summary)
+    target = float(sm.params.target_pressure)
+    out = summary[["model", "carried_pressure_mmHg", "semi_analytical_pressure_mmHg"]].assign(
+        target_pressure_mmHg=target, relative_to_target=summary.carried_pressure_mmHg / target - 1.0)
+    out.to_csv(sm.output[0], index=False)
+    for r in out.itertuples():
+        log.info("[homeostasis_target] %s: carried %.2f mmHg, target %.0f (%+.1f %%)", r.model,
+                 r.carried_pressure_mmHg, target, 100 * r.relative_to_target)
