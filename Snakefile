@@ -11,7 +11,9 @@ SRC = str(Path(workflow.basedir, "src").resolve())
 sys.path.insert(0, SRC)
 os.environ.update(PYTHONPATH=os.pathsep.join(filter(None, [SRC, os.environ.get("PYTHONPATH")])))
 
-from sphgag.config import canonical, load_yaml, validate  # noqa: E402
+from snakemake.utils import update_config  # noqa: E402
+
+from sphgag.config import canonical, load_yaml, typed_overrides, validate  # noqa: E402
 
 # The full study is the default only when no --configfile is given: a user's config stands alone (Snakemake would
 # otherwise merge it over config/config.yaml, so that pools, pressures and whole sections leak in from the full study).
@@ -22,6 +24,8 @@ if not workflow.overwrite_configfiles:
 
 for _path in workflow.configfiles:  # Snakemake's own YAML reader lets a duplicated key win silently
     load_yaml(_path)
+# --config key='{nested: 0.001}' arrives with every nested value as text: read those values as YAML does
+update_config(config, typed_overrides(workflow.config_settings.config))
 validate(config, Path(workflow.basedir, "config", "schema.yaml"))
 # key order must not matter when Snakemake compares a rule's params with its last run
 config = canonical(config)

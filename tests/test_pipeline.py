@@ -223,3 +223,11 @@ def test_a_config_missing_a_section_is_rejected_naming_it(project_copy, ci_confi
     run, out = plan(project_copy, "--configfile", str(path))
     assert run.returncode != 0
     assert "missing key 'delamination'" in out, out[-2000:]
+
+
+def test_a_nested_config_override_is_read_as_yaml(project_copy):
+    """``--config numerics='{tolerance: 0.001}'`` (Snakemake passes nested values as text) is a valid override."""
+    run, out = plan(project_copy, "--configfile", "config/ci.yaml", "--config", "numerics={tolerance: 0.001}")
+    assert run.returncode == 0, out[-2000:]
+    run, out = plan(project_copy, "--configfile", "config/ci.yaml", "--config", "numerics={tolerance: 1e-4}")
+    assert run.returncode != 0 and "write 1.0e-4" in out

@@ -91,8 +91,13 @@ def _describe(error: jsonschema.ValidationError, schema: dict) -> str:
             value = float(error.instance)
         except ValueError:
             pass
-        else:  # YAML 1.1 reads 1e-4 (no dot) as text
-            hint = f" (YAML reads {error.instance} as text, not as the number {value!r}: write {_yaml_float(error.instance)})"
+        else:
+            if "e" in error.instance.lower() and "." not in error.instance.lower().partition("e")[0]:
+                # YAML 1.1 reads 1e-4 (no dot in the mantissa) as text
+                hint = f" (YAML reads {error.instance} as text, not as the number {value!r}: write " \
+                       f"{_yaml_float(error.instance)})"
+            else:
+                hint = f" (the number {value!r} was given as text: write it without quotes)"
     return f"{key} = {error.instance!r} is invalid: {error.message}{hint}{allowed}{desc}"
 
 
@@ -101,6 +106,23 @@ def _yaml_float(text: str) -> str:
     if "." not in mantissa:
         mantissa += ".0"
     return mantissa + ("e" + exponent if exponent else "")
+
+
+def typed_overrides(overrides):
+    """The ``--config`` overrides with nested values read as YAML would read them in a file.
+
+    Snakemake parses a nested ``--config section='{key: 0.001}'`` with YAML's base loader, which keeps
+    every scalar as text; top-level values it already types itself and are left alone.
+    """
+
+    def typed(node):
+        if isinstance(node, dict):
+            return {k: typed(v) for k, v in node.items()}
+        if isinstance(node, list):
+            return [typed(v) for v in node]
+        return yaml.safe_load(node) if isinstance(node, str) else node
+
+    return {k: typed(v) if isinstance(v, (dict, list)) else v for k, v in dict(overrides or {}).items()}
 
 
 def canonical(config):
