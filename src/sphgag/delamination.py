@@ -48,6 +48,7 @@ import pandas as pd
 from scipy.spatial import cKDTree
 
 from . import damage, forces, measure, protocols, solver
+from . import state as state_io
 from .geometry import Sector
 from .history import DAMAGED, HistoryMaterial, ParticleHistory
 from .loading import MMHG_TO_KPA
@@ -399,37 +400,24 @@ def grow(model: Model, start: solver.State, sectors: list[Sector], settings: Set
 
 def save_snapshots(path, model: Model, snapshots, params: dict) -> None:
     """All snapshots of a run in one ``.npz``: per snapshot ``k`` its state file content (positions, load, particle
-    history, :func:`sphgag.state.save`) under ``s{k}_``, plus its radial Cauchy stress; ``steps`` and
-    ``concentrations`` index them. Each snapshot can restart the run (:func:`load_snapshot`)."""
-    import io
-
-    from . import state as state_io
-
+    history, :func:`sphgag.state.contents`) under ``s{k}_``, plus its radial Cauchy stress (eq. 2.10, current polar
+    frame); ``steps`` and ``concentrations`` index them. Each snapshot can restart the run (:func:`load_snapshot`)."""
     arrays = dict(steps=np.array([s[0] for s in snapshots]),
                   concentrations=np.array([s[1].load.material_value("concentration") for s in snapshots]),
                   X=model.layout.X, volume=model.layout.volume, theta=model.layout.theta)
     for k, (step, st, hist) in enumerate(snapshots):
-        buf = io.BytesIO()
-        state_io.save(buf, st.x, st.load, params, info=dict(pseudo_time=int(step)), history=hist)
-        buf.seek(0)
-        with np.load(buf) as data:
-            arrays.update({f"s{k}_{name}": data[name] for name in data.files})
+        part = state_io.contents(st.x, st.load, params, info=dict(pseudo_time=int(step)), history=hist)
+        arrays.update({f"s{k}_{name}": value for name, value in part.items()})
         arrays[f"s{k}_radial_stress_kPa"] = measure.cauchy_polar(st.evaluation)[0]
     np.savez_compressed(path, **arrays)
 
 
 def load_snapshot(path, k: int, expected_params: dict | None = None):
     """``(solver.State, ParticleHistory, pseudo_time)`` of snapshot ``k`` of a :func:`save_snapshots` file."""
-    import io
-
-    from . import state as state_io
-
+    prefix = f"s{k}_"
     with np.load(path) as data:
-        part = {name[len(f"s{k}_"):]: data[name] for name in data.files if name.startswith(f"s{k}_")}
-    buf = io.BytesIO()
-    np.savez(buf, **part)
-    buf.seek(0)
-    saved = state_io.load(buf, expected_params)
+        part = {name[len(prefix):]: data[name] for name in data.files if name.startswith(prefix)}
+    saved = state_io.read(part, f"{path} (snapshot {k})", expected_params)
     return solver.State(saved.load, saved.x, None, None), saved.history, int(saved.info["pseudo_time"])
 
 

@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import json
 import zipfile
-from contextlib import nullcontext
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -46,9 +45,10 @@ class SavedState:
     history: ParticleHistory | None = None  # the particles' history (damage, GAG pools), if the state has one
 
 
-def save(path, x: np.ndarray, load: Load, params: dict, info: dict | None = None,
-         history: ParticleHistory | None = None) -> None:
-    """Write a state file with its load, configuration slice, code version, extra info and particle history."""
+def contents(x: np.ndarray, load: Load, params: dict, info: dict | None = None,
+             history: ParticleHistory | None = None) -> dict:
+    """The arrays of a state file: positions, metadata (load, configuration slice, code version, extra info) and
+    the particle history, if any."""
     meta = {
         "load": {"axial_stretch": load.axial_stretch, "pressure_kPa": load.pressure_kPa,
                  "inner_radius": load.inner_radius, "material": list(map(list, load.material))},
@@ -57,29 +57,41 @@ def save(path, x: np.ndarray, load: Load, params: dict, info: dict | None = None
         "info": info or {},
     }
     arrays = {} if history is None else history.arrays()
-    if not hasattr(path, "write"):  # a path; file objects (e.g. io.BytesIO) are written as they are
-        Path(path).parent.mkdir(parents=True, exist_ok=True)
-    with nullcontext(path) if hasattr(path, "write") else open(path, "wb") as fh:
-        np.savez(fh, x=np.asarray(x, dtype=float), meta=np.array(json.dumps(meta)), **arrays)
+    return dict(x=np.asarray(x, dtype=float), meta=np.array(json.dumps(meta)), **arrays)
+
+
+def save(path, x: np.ndarray, load: Load, params: dict, info: dict | None = None,
+         history: ParticleHistory | None = None) -> None:
+    """Write a state file (:func:`contents`)."""
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
+    with open(path, "wb") as fh:
+        np.savez(fh, **contents(x, load, params, info, history))
 
 
 def load(path, expected_params: dict | None = None) -> SavedState:
     """Read a state file; if ``expected_params`` is given it must equal the stored slice."""
     try:
         with np.load(path, allow_pickle=False) as data:
-            x = data["x"].copy()
-            meta = json.loads(str(data["meta"]))
-            history = ParticleHistory.from_arrays(data) if "history_origin" in data.files else None
+            return read({name: data[name] for name in data.files}, path, expected_params)
     except (OSError, ValueError, KeyError, EOFError, zipfile.BadZipFile) as exc:
+        if isinstance(exc, StateMismatch):
+            raise
         raise CorruptState(f"{path} is not a readable state file ({type(exc).__name__}: {exc}); delete it and rerun "
                            "snakemake, which regenerates it with the rule that wrote it") from exc
+
+
+def read(data, source, expected_params: dict | None = None) -> SavedState:
+    """The state held by ``data``, a mapping of the arrays of :func:`contents` (``source`` names it in errors)."""
+    meta = json.loads(str(data["meta"]))
+    history = ParticleHistory.from_arrays(data) if "history_origin" in data else None
     if expected_params is not None and canonical(expected_params) != canonical(meta["params"]):
         diff = _differences(json.loads(canonical(expected_params)), meta["params"])
-        raise StateMismatch(f"{path} was made with different parameters: {'; '.join(diff)}")
+        raise StateMismatch(f"{source} was made with different parameters: {'; '.join(diff)}")
     ld = meta["load"]
     load_ = Load(axial_stretch=ld["axial_stretch"], pressure_kPa=ld["pressure_kPa"], inner_radius=ld["inner_radius"],
                  material=tuple(tuple(kv) for kv in ld["material"]))
-    return SavedState(x=x, load=load_, params=meta["params"], code=meta["code"], info=meta["info"], history=history)
+    return SavedState(x=np.array(data["x"]), load=load_, params=meta["params"], code=meta["code"], info=meta["info"],
+                      history=history)
 
 
 def _differences(expected, stored, prefix=""):
