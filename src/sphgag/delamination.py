@@ -202,7 +202,8 @@ class Result:
 
 
 def onset_measure(model: Model, ev, hist: ParticleHistory, cand: np.ndarray, settings: Settings) -> np.ndarray:
-    """The radial Cauchy stress the onset test compares with sigma_cr, at the candidates (module docstring)."""
+    """The radial Cauchy stress (eq. 2.10, current polar frame) the onset test of eq. (2.28) compares with sigma_cr,
+    at the candidates: the particle's own or its average (module docstring)."""
     srr = measure.cauchy_polar(ev)[0]
     if settings.criterion == "particle":
         return srr[cand]
@@ -297,17 +298,18 @@ def grow(model: Model, start: solver.State, sectors: list[Sector], settings: Set
             # solver's path must be the same)
             model.factorisation = None
 
+    def in_front(state):
+        """Candidates, their pools and onset measures, and the largest of these (the row's tip stress)."""
+        cand, pools = front.candidates(hist)
+        sigma = onset_measure(model, state.evaluation, hist, cand, settings) if cand.size else np.empty(0)
+        return cand, pools, sigma, float(sigma.max()) if sigma.size else np.nan
+
     def level(c, state):
         nonlocal hist, material, dmg, dissipated, onset_c, merge_step, step, max_residual
-        first = True
+        cand, pools, sigma, tip = in_front(state)
+        record(c, tip, state, first_of_level=True)
         while True:
-            cand, pools = front.candidates(hist)
             ev = state.evaluation
-            sigma = onset_measure(model, ev, hist, cand, settings) if cand.size else np.empty(0)
-            tip = float(sigma.max()) if sigma.size else np.nan
-            if first:
-                record(c, tip, state, first_of_level=True)
-                first = False
             stretch = damage.radial_stretch(ev.F, lay.theta)
             radial = np.full(lay.n, -np.inf)
             radial[cand] = sigma
@@ -356,13 +358,12 @@ def grow(model: Model, start: solver.State, sectors: list[Sector], settings: Set
             if merge_step is None and front.merged(hist):
                 merge_step = step
                 log.info("[%s] pools merged at pass %d (c = %g mEq/l)", run, step, c)
-            cand_now = front.candidates(hist)[0]
-            tip_now = float(onset_measure(model, state.evaluation, hist, cand_now, settings).max()) if cand_now.size else np.nan
-            record(c, tip_now, state)
+            cand, pools, sigma, tip = in_front(state)  # also the next pass's onset test
+            record(c, tip, state)
             if ruptured.size:
                 log.info("[%s] pass %d, c = %g mEq/l: %d ruptured (%d converted in all), delaminated %.1f um, "
                          "max onset stress %.1f kPa", run, step, c, ruptured.size, rows[-1].converted[0],
-                         rows[-1].length, tip_now)
+                         rows[-1].length, tip)
             if step >= settings.max_passes:
                 return state, "pass limit"
             if front.extent_deg(hist).max() >= settings.max_extent_deg:
