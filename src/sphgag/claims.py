@@ -266,23 +266,20 @@ def delamination_claims(growth: pd.DataFrame, summary: pd.DataFrame, criteria: l
         per_criterion(rate_text), holds, "rate at the lowest sigma_cr > 2 x the rate at the highest, per pass and "
         "per mEq/l (default criterion)"))
 
-    pairs = summary[summary.case.isin(["low_separation", "high_separation"]) & (summary.criterion == criteria[0])]
+    def pair_runs(c):
+        """``(summary row, growth row at the merge or at the end)`` of every pool-pair run of criterion ``c``."""
+        runs = summary[summary.case.isin(["low_separation", "high_separation"]) & (summary.criterion == c)]
+        for r in runs.itertuples():
+            g = growth[(growth.case == r.case) & (growth.criterion == c)].sort_values("step")
+            yield r, (g[g.pseudo_time <= r.merge_step].iloc[-1] if r.merged else g.iloc[-1])
 
     def merge_text(c):
-        rows = []
-        for r in summary[summary.case.isin(["low_separation", "high_separation"]) & (summary.criterion == c)].itertuples():
-            g = growth[(growth.case == r.case) & (growth.criterion == c)].sort_values("step")
-            at = g[g.pseudo_time <= r.merge_step].iloc[-1] if r.merged else g.iloc[-1]
-            rows.append(f"{r.case} {'merged at pass %d' % r.merge_step if r.merged else 'not merged'}, converted "
-                        f"interior {at.converted_interior:.0f} / exterior {at.converted_exterior:.0f}")
-        return ", ".join(rows)
+        return ", ".join(f"{r.case} {'merged at pass %d' % r.merge_step if r.merged else 'not merged'}, converted "
+                         f"interior {at.converted_interior:.0f} / exterior {at.converted_exterior:.0f}"
+                         for r, at in pair_runs(c))
 
-    ok = False
-    for r in pairs.itertuples():
-        if r.merged:
-            g = growth[(growth.case == r.case) & (growth.criterion == criteria[0])].sort_values("step")
-            at = g[g.pseudo_time <= r.merge_step].iloc[-1]
-            ok = ok or at.converted_exterior > at.converted_interior
+    pairs = list(pair_runs(criteria[0]))
+    ok = any(r.merged and at.converted_exterior > at.converted_interior for r, at in pairs)
     out.append(Claim(
         "C16", "Two nearby pools grow and merge, and at merging their exterior growth exceeds their interior growth",
         "figure 6", per_criterion(merge_text), _yes(ok) if len(pairs) else "n/a",
