@@ -182,13 +182,17 @@ def bilayer_model(p: dict, numerics: dict, name: str = "bilayer", pool=None, gag
     nb = kernel.for_layout(layout, numerics["kernel_support_factor"])
     material = BilayerMaterial(p, layout)
     if pool is not None:
-        sectors = [pool] if isinstance(pool, geometry.Sector) else list(pool)
-        members = [s.members(layout, layer="media") for s in sectors]
-        for s, m in zip(sectors, members):
-            if not m.size:
-                raise ValueError(f"the pool {s} holds no medial particle at dx = {p['dx_um']:g} um: make it larger "
-                                 "than the particle spacing or move it into the media")
-        intact = history.ParticleHistory.intact(layout.n)
-        seeded = intact.seed(members)
-        material = history.HistoryMaterial(material, intact, gag, after=seeded)
+        material = seeding(material, layout, [pool] if isinstance(pool, geometry.Sector) else list(pool), gag)
     return Model(name, layout, nb, material, numerics["hourglass_alpha"])
+
+
+def seeding(base, layout: geometry.Layout, sectors, gag: dict) -> history.HistoryMaterial:
+    """The material path from the intact wall (``base``) to the wall with the medial particles of ``sectors``
+    seeded as GAG pools (pool k = sector k); a sector without a medial particle is an error."""
+    members = [s.members(layout, layer="media") for s in sectors]
+    for s, m in zip(sectors, members):
+        if not m.size:
+            raise ValueError(f"the pool {s} holds no medial particle at dx = {layout.dx:g} um: make it larger "
+                             "than the particle spacing or move it into the media")
+    intact = history.ParticleHistory.intact(layout.n)
+    return history.HistoryMaterial(base, intact, gag, after=intact.seed(members))

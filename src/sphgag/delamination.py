@@ -47,7 +47,7 @@ import numpy as np
 import pandas as pd
 from scipy.spatial import cKDTree
 
-from . import damage, forces, measure, protocols, solver
+from . import artery, damage, forces, measure, protocols, solver
 from . import state as state_io
 from .geometry import Sector
 from .history import DAMAGED, HistoryMaterial, ParticleHistory
@@ -253,13 +253,8 @@ def grow(model: Model, start: solver.State, sectors: list[Sector], settings: Set
     front = Front(model, sectors, settings.candidate_window_deg)
     law = settings.law
     if resume is None:
-        intact = ParticleHistory.intact(lay.n)
-        members = [s.members(lay, layer="media") for s in sectors]
-        empty = [s for s, m in zip(sectors, members) if not m.size]
-        if empty:
-            raise ValueError(f"[{run}] pool(s) {empty} hold no medial particle at dx = {lay.dx:g} um")
-        hist = intact.seed(members)
-        material = HistoryMaterial(base, intact, gag, after=hist)
+        material = artery.seeding(base, lay, sectors, gag)
+        hist = material.history
         model.set_props(material)
         base_load = protocols.swelling_load(start.load, 0.0, 0.0)
         log.info("[%s] seeding %d pool(s) (%d particles) in %d steps at %.1f mmHg; sigma_cr %.0f kPa, %s onset, "
@@ -434,8 +429,6 @@ def convergence_study(dx: float, bilayer: dict, numerics: dict, homeostasis: dic
                       name: str = "delamination_convergence") -> pd.DataFrame:
     """Rows of ``results/delamination/convergence.csv`` for one particle spacing: the single pool at
     ``critical_stress_kPa``, every onset criterion, from the passive wall pressurised at this spacing."""
-    from . import artery
-
     p = dict(bilayer, dx_um=float(dx))
     wall = artery.bilayer_model(p, numerics, name=name)
     h = protocols.homeostasis(wall, numerics, homeostasis)
