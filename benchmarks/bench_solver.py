@@ -50,7 +50,8 @@ def measure(dx: float, config_path: str) -> dict:
     import numba
     import scipy.sparse.linalg as spla
 
-    from sphgag import artery, config, damage, geometry, materials, protocols, solver
+    from sphgag import artery, config, geometry, protocols, solver
+    from sphgag.history import HistoryMaterial
     from sphgag.model import Model
     from sphgag.loading import MMHG_TO_KPA, Load
 
@@ -106,12 +107,10 @@ def measure(dx: float, config_path: str) -> dict:
             times.append(time.perf_counter() - t)
         row[f"state_after_conversion_ms{label}"] = 1e3 * float(np.median(times))
         # the conversion of delamination: a particle whose damage has reached D = 1 ((1 - D) W = 0) becomes GAG
-        intact = model.props(load)
-        ruptured = damage.weaken(intact, np.isin(np.arange(model.n), model.props.converting).astype(float))
-        gag = ruptured.copy()
-        g = cfg["gag"]
-        materials.convert_to_gag(gag, model.props.converting, 1.0, g["shear_modulus_kPa"], g["hourglass_modulus_kPa"],
-                                 lame=g["lame_lambda_kPa"])
+        one, intact = model.props.converting, model.props.before
+        damaged = intact.with_damage(np.isin(np.arange(model.n), one).astype(float), intact.onset_stretch)
+        ruptured = HistoryMaterial(model.props.base, damaged, cfg["gag"])
+        gag = HistoryMaterial(model.props.base, damaged.rupture(one, np.zeros(one.size, dtype=int), 1), cfg["gag"])
         fixed = Model(model.name, model.layout, model.nb, ruptured, model.hourglass_alpha)
         xd, evd, _ = solver.newton(fixed, x, load, **opts)
         times = []
