@@ -24,7 +24,7 @@ from .model import Model
 from .solver import Convergence, Diverged, Inverted, NotConverged, relative_residual
 
 
-@njit(cache=True, fastmath=True, error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def viscous_stress(F, F_old, dt, eta, out):
     """``P_visc = 2 eta J d F^-T`` per particle (section 2.3), into ``out`` (N, 4)."""
     for i in range(F.shape[0]):

@@ -29,7 +29,7 @@ from numba import njit, prange
 from .materials import HG_E, first_piola, local_deformation, strain_energy, tangent_modulus
 
 
-@njit(cache=True, fastmath=True, error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def hourglass_coefficients(V, ptr, nbr, R, w, props, alpha, out):
     """``alpha E_ij V_i V_j xi_ij / (2 |R_ij|^2)`` per entry (eq. 2.14), E_ij the mean of both particles'."""
     n = V.shape[0]
@@ -96,7 +96,7 @@ def evaluate_forces(x, pd: PairData, lz, cth, sth, props, xe, fe, FP, f, extra=N
                                cth, sth, props, extra, xe, fe, FP, f)
 
 
-@njit(cache=True, fastmath=True, error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def _deformation_gradients(xe, pair_ptr, pair_j, pair_a, solo_ptr, solo_j, solo_a, split, FP, n):
     """Pass 1a of :func:`forces_and_stresses`: ``F_i = sum_j (x_j - x_i) (x) a_ij`` (eq. 2.9) and the hourglass
     stencil's ``F~_i`` into ``FP[:, :4]`` and ``FP[:, 8:]``, over the half list of pairs (the separation of a pair
@@ -157,7 +157,7 @@ def _deformation_gradients(xe, pair_ptr, pair_j, pair_a, solo_ptr, solo_j, solo_
                 FP[i, 8 + k] = FP[i, k]
 
 
-@njit(cache=True, fastmath=True, error_model="numpy", parallel=True)
+@njit(cache=True, error_model="numpy", parallel=True)
 def _stresses(lz, cth, sth, props, extra, FP, n):
     """Pass 1b of :func:`forces_and_stresses`: ``P_i`` (eq. 2.10) from ``F_i``, parallel over particles (Numba
     threads); returns the smallest det(F_2D) (NaN stress where det <= 0)."""
@@ -179,7 +179,7 @@ def _stresses(lz, cth, sth, props, extra, FP, n):
     return dmin
 
 
-@njit(cache=True, fastmath=True, error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def forces_and_stresses(x, pair_ptr, pair_j, pair_geo, pair_a, pair_hgc, solo_ptr, solo_j, solo_geo, solo_a, solo_hgc,
                         split, ghost_owner, ghost_mirror, lz, cth, sth, props, extra, xe, fe, FP, f):
     """One force evaluation: F (eq. 2.9), P (eq. 2.10) and the forces of eqs. (2.11), (2.14).
@@ -258,7 +258,7 @@ def forces_and_stresses(x, pair_ptr, pair_j, pair_geo, pair_a, pair_hgc, solo_pt
     return dmin
 
 
-@njit(cache=True, fastmath=True, error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def energy_densities(F, lz, cth, sth, props, W):
     """Strain energy density W_i of every particle (diagnostics and tests)."""
     for i in range(F.shape[0]):
@@ -266,7 +266,7 @@ def energy_densities(F, lz, cth, sth, props, W):
         W[i] = strain_energy(c_rr, c_tt, c_rt, lz, props, i)
 
 
-@njit(cache=True, fastmath=True, error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def pair_force_scale(V, ptr, a, P, out):
     """Per particle ``V_i |P_i| sum_j |a_ij|``: the size of the stress fluxes through its stencil."""
     n = V.shape[0]
@@ -319,7 +319,7 @@ def _pattern_pairs(ptr, nbr, map_ptr, rows, cols):
                 cols[base + p * m + q] = rq
 
 
-@njit(cache=True, fastmath=True, error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def jacobian_blocks(x, V, ptr, nbr, mir, a, s, ah, sh, R, hgc, F, Fh, lz, cth, sth, props, blockmap, map_ptr,
                     data):
     """Add ``d(f_int + f_hg)/dx`` (eqs. 2.11, 2.14-2.15) to the 2 x 2 blocks ``data`` (:func:`block_pattern`).

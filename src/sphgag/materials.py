@@ -131,7 +131,7 @@ def merge_identical_families(props):
 # ---------------------------------------------------------------------------
 
 
-@njit(cache=True, fastmath=True, error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def _fibre_terms(I4, c1p, c2p, c1m, c2m):
     """W(I4), W'(I4), W''(I4) of c1/(4 c2) (exp[c2 (I4-1)^2] - 1) (eqs. 2.18, 2.22)."""
     E = I4 - 1.0
@@ -145,7 +145,7 @@ def _fibre_terms(I4, c1p, c2p, c1m, c2m):
     return 0.25 * c1 / c2 * (ex - 1.0), 0.5 * c1 * E * ex, 0.5 * c1 * ex * (1.0 + 2.0 * c2 * E * E)
 
 
-@njit(cache=True, fastmath=True, error_model="numpy", inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def _fibre_slope(I4, c1p, c2p, c1m, c2m):
     """W'(I4) = c1/2 (I4 - 1) exp[c2 (I4 - 1)^2] alone (eqs. 2.20, 2.22; the stress needs nothing else)."""
     E = I4 - 1.0
@@ -154,7 +154,7 @@ def _fibre_slope(I4, c1p, c2p, c1m, c2m):
     return 0.5 * c1m * E * np.exp(c2m * E * E)
 
 
-@njit(cache=True, fastmath=True, error_model="numpy", inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def _active_tension(lam, tmax, lmax, lmin):
     """Active Cauchy stress T(lambda) of eq. (2.24) and dT/dlambda, clipped at zero."""
     span = lmax - lmin
@@ -165,14 +165,14 @@ def _active_tension(lam, tmax, lmax, lmin):
     return t, tmax * ((1.0 - u * u) + 2.0 * lam * u / span)
 
 
-@njit(cache=True, fastmath=True, error_model="numpy", inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def _fibre_I4(props, i, base, c_tt, lz):
     """I4 = G^2 M.C M of a family with M = [0, sin a, cos a] (eqs. 2.19, 2.22)."""
     s2 = props[i, base + SIN2]
     return props[i, base + GF] ** 2 * (s2 * c_tt + (1.0 - s2) * lz * lz)
 
 
-@njit(cache=True, fastmath=True, error_model="numpy", inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def donnan(J, c0, cb, rt):
     """Donnan pressure of a conserved fixed charge: ``(PI_D, dPI_D/dJ, W_D)`` at volume ratio ``J`` (eq. 2.26).
 
@@ -195,7 +195,7 @@ def donnan(J, c0, cb, rt):
     return pi, dpi, w
 
 
-@njit(cache=True, fastmath=True, error_model="numpy", inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def pk2(c_rr, c_tt, c_rt, lz, props, i):
     """Second Piola-Kirchhoff stress ``(S_rr, S_tt, S_rt)`` of particle ``i``.
 
@@ -225,7 +225,7 @@ def pk2(c_rr, c_tt, c_rt, lz, props, i):
     return s_rr, s_tt, s_rt
 
 
-@njit(cache=True, fastmath=True, error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def material_tangent(c_rr, c_tt, c_rt, lz, props, i, C):
     """Material tangent ``2 dS/dC`` of particle ``i`` into ``C`` (3 x 3, Voigt order rr, tt, rt).
 
@@ -267,7 +267,7 @@ def material_tangent(c_rr, c_tt, c_rt, lz, props, i, C):
         C[1, 2] += sa * i_rt
 
 
-@njit(cache=True, fastmath=True, error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def strain_energy(c_rr, c_tt, c_rt, lz, props, i):
     """Strain energy density W of particle ``i`` (eqs. 2.18, 2.21-2.23, 2.27; active tone has none).
 
@@ -292,7 +292,7 @@ def strain_energy(c_rr, c_tt, c_rt, lz, props, i):
 # ---------------------------------------------------------------------------
 
 
-@njit(cache=True, fastmath=True, error_model="numpy", inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def local_deformation(f00, f01, f10, f11, cth, sth):
     """``F_loc = F Q`` with Q = [e_r, e_theta] of the reference angle, and its ``C_loc``."""
     l00 = f00 * cth + f01 * sth
@@ -302,7 +302,7 @@ def local_deformation(f00, f01, f10, f11, cth, sth):
     return l00, l01, l10, l11, l00 * l00 + l10 * l10, l01 * l01 + l11 * l11, l00 * l01 + l10 * l11
 
 
-@njit(cache=True, fastmath=True, error_model="numpy", inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def first_piola(f00, f01, f10, f11, lz, cth, sth, props, i):
     """First Piola-Kirchhoff stress ``P = F S`` (eq. 2.10) of particle ``i`` in global x-y.
 
@@ -322,7 +322,7 @@ def first_piola(f00, f01, f10, f11, lz, cth, sth, props, i):
 _VOIGT = np.array([[0, 2], [2, 1]])
 
 
-@njit(cache=True, fastmath=True, error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def tangent_modulus(f00, f01, f10, f11, lz, cth, sth, props, i, C, A):
     """First elasticity tensor ``A[2a+B, 2c+D] = dP_aB / dF_cD`` of particle ``i``, global x-y.
 
