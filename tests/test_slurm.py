@@ -21,19 +21,16 @@ import threading
 import time
 from pathlib import Path
 
-import numpy as np
 import pandas as pd
 import pytest
 import yaml
 
-from .conftest import ROOT
+from .conftest import ROOT, project_copy
 
 pytestmark = pytest.mark.pipeline
 
 DAEMONS = ("munged", "slurmctld", "slurmd")
 CLIENTS = ("sinfo", "sbatch", "squeue", "scancel", "srun")
-# columns that hold wall times (issue 10, item 3): never equal between two runs
-TIME_COLUMNS = {"solve_seconds", "wall_s"}
 SUBMITTED = re.compile(r"Job (\d+) has been submitted with SLURM jobid (\d+) \(log: (.+?)\)\.?$", re.M)
 
 
@@ -194,42 +191,16 @@ def wait_for(condition, seconds, what, log, procs):
     pytest.fail(f"waiting for {what} failed:\n{tail(log)}")
 
 
-def project_copy(dest):
-    """The project's files (git-tracked, and new files git does not ignore) in ``dest``, without results."""
-    files = subprocess.run(["git", "ls-files", "-z", "--cached", "--others", "--exclude-standard"], cwd=ROOT,
-                           capture_output=True, text=True)
-    if files.returncode == 0:
-        for name in filter(None, files.stdout.split("\0")):
-            src = ROOT / name
-            if src.is_file():
-                (dest / name).parent.mkdir(parents=True, exist_ok=True)
-                shutil.copy2(src, dest / name)
-    else:  # not a git checkout
-        shutil.copytree(ROOT, dest, dirs_exist_ok=True, ignore=shutil.ignore_patterns(
-            ".git", ".snakemake", "results", "logs", "figures", "__pycache__", "*.egg-info", ".pytest_cache"))
-    return dest
-
-
 def snakemake_cmd(*args):
     return [sys.executable, "-m", "snakemake", "all", "--configfile", "config/ci.yaml", *args]
 
 
 def differences(a, b):
-    """None if two CSV tables agree without their wall-time columns, numeric columns to numpy.allclose with
-    rtol = 1e-9 (and its default atol = 1e-8: residuals of ~1e-7 differ by ~1e-12 between runs); else what differs."""
-    ta, tb = (pd.read_csv(p).drop(columns=TIME_COLUMNS, errors="ignore") for p in (a, b))
+    """The columns in which two CSV tables differ (for the failure message of a byte comparison)."""
+    ta, tb = pd.read_csv(a), pd.read_csv(b)
     if list(ta.columns) != list(tb.columns) or ta.shape != tb.shape:
         return f"columns or shape differ: {list(ta.columns)} {ta.shape} vs {list(tb.columns)} {tb.shape}"
-    bad = []
-    for col in ta.columns:
-        x, y = ta[col], tb[col]
-        if pd.api.types.is_numeric_dtype(x) and pd.api.types.is_numeric_dtype(y):
-            same = np.allclose(x.to_numpy(float), y.to_numpy(float), rtol=1e-9, equal_nan=True)
-        else:
-            same = x.astype(str).equals(y.astype(str))
-        if not same:
-            bad.append(col)
-    return f"columns differ: {bad}" if bad else None
+    return f"columns differ: {[c for c in ta.columns if not ta[c].astype(str).equals(tb[c].astype(str))]}"
 
 
 @pytest.fixture(scope="module")
@@ -284,17 +255,11 @@ def test_the_jobs_ran_as_slurm_jobs(runs, slurm):
 
 
 def test_slurm_and_local_runs_give_the_same_tables(runs):
+    """Same config, same bytes: every result table of the Slurm run equals the local run's byte for byte."""
     local, cluster, _ = runs
     names = sorted(p.relative_to(local).as_posix() for p in (local / "results").rglob("*.csv"))
     assert names and names == sorted(p.relative_to(cluster).as_posix() for p in (cluster / "results").rglob("*.csv"))
-    not_identical, failures = [], []
-    for name in names:
-        if (local / name).read_bytes() == (cluster / name).read_bytes():
-            continue
-        not_identical.append(name)
-        diff = differences(local / name, cluster / name)
-        if diff:
-            failures.append(f"{name}: {diff}")
-    print(f"\n{len(names) - len(not_identical)} of {len(names)} result tables byte-identical; "
-          f"equal up to wall-time columns and rtol 1e-9: {not_identical}")
+    failures = [f"{name}: {differences(local / name, cluster / name)}" for name in names
+                if (local / name).read_bytes() != (cluster / name).read_bytes()]
+    print(f"\n{len(names) - len(failures)} of {len(names)} result tables byte-identical")
     assert not failures, failures

@@ -40,7 +40,6 @@ delaminated area (J/m^2).
 from __future__ import annotations
 
 import logging
-import time
 from dataclasses import dataclass, field, fields
 
 import numpy as np
@@ -63,7 +62,7 @@ GROWTH_COLUMNS = ["case", "sigma_cr_kPa", "criterion", "dx_um", "step", "pseudo_
                   "tip_radial_stress_kPa", "residual"]
 SUMMARY_COLUMNS = ["case", "sigma_cr_kPa", "criterion", "dx_um", "onset_concentration_mEq_l", "final_length_um",
                    "growth_rate_um_per_pseudo_time", "growth_rate_um_per_mEq_l", "merged", "merge_step",
-                   "dissipated_energy_J_m2", "max_residual", "wall_s"]
+                   "dissipated_energy_J_m2", "max_residual"]
 
 
 @dataclass(frozen=True)
@@ -247,7 +246,6 @@ def grow(model: Model, start: solver.State, sectors: list[Sector], settings: Set
     (:func:`load_snapshot`) to continue from instead of seeding; the rows then start there.
     """
     run = run or model.name
-    started = time.time()
     opts = dict(run=run, **protocols.solver_options(numerics))
     lay = model.layout
     front = Front(model, sectors, settings.candidate_window_deg)
@@ -387,33 +385,28 @@ def grow(model: Model, start: solver.State, sectors: list[Sector], settings: Set
                    merged=merge_step is not None, merge_step=merge_step if merge_step is not None else np.nan,
                    dissipated_energy_J_m2=1e-3 * dissipated / length if length > 0 else np.nan,
                    dissipated_energy_kPa_um2=dissipated, stop=stop, passes=step, max_residual=max_residual,
-                   pressure_mmHg=measure.carried_pressure(model, state.evaluation) / MMHG_TO_KPA,
-                   wall_s=time.time() - started)
+                   pressure_mmHg=measure.carried_pressure(model, state.evaluation) / MMHG_TO_KPA)
     if not any(s[0] == step and s[1].load == state.load for s in snapshots):
         snapshots.append((step, state, hist))
     return Result(growth, summary, snapshots, (state, hist))
 
 
 def save_snapshots(path, model: Model, snapshots, params: dict) -> None:
-    """All snapshots of a run in one ``.npz``: per snapshot ``k`` its state file content (positions, load, particle
-    history, :func:`sphgag.state.contents`) under ``s{k}_``, plus its radial Cauchy stress (eq. 2.10, current polar
-    frame); ``steps`` and ``concentrations`` index them. Each snapshot can restart the run (:func:`load_snapshot`)."""
+    """All snapshots of a run in one ``.npz`` (:func:`sphgag.state.save_series`: positions, load, particle history),
+    each with its radial Cauchy stress (eq. 2.10, current polar frame) as ``s{k}_radial_stress_kPa``; ``steps`` and
+    ``concentrations`` index them. Each snapshot can restart the run (:func:`load_snapshot`)."""
     arrays = dict(steps=np.array([s[0] for s in snapshots]),
                   concentrations=np.array([s[1].load.material_value("concentration") for s in snapshots]),
                   X=model.layout.X, volume=model.layout.volume, theta=model.layout.theta)
-    for k, (step, st, hist) in enumerate(snapshots):
-        part = state_io.contents(st.x, st.load, params, info=dict(pseudo_time=int(step)), history=hist)
-        arrays.update({f"s{k}_{name}": value for name, value in part.items()})
-        arrays[f"s{k}_radial_stress_kPa"] = measure.cauchy_polar(st.evaluation)[0]
-    np.savez_compressed(path, **arrays)
+    arrays.update({f"s{k}_radial_stress_kPa": measure.cauchy_polar(st.evaluation)[0]
+                   for k, (_, st, _) in enumerate(snapshots)})
+    state_io.save_series(path, [(st.x, st.load, dict(pseudo_time=int(step)), hist) for step, st, hist in snapshots],
+                         params, arrays)
 
 
 def load_snapshot(path, k: int, expected_params: dict | None = None):
     """``(solver.State, ParticleHistory, pseudo_time)`` of snapshot ``k`` of a :func:`save_snapshots` file."""
-    prefix = f"s{k}_"
-    with np.load(path) as data:
-        part = {name[len(prefix):]: data[name] for name in data.files if name.startswith(prefix)}
-    saved = state_io.read(part, f"{path} (snapshot {k})", expected_params)
+    saved = state_io.load_from_series(path, k, expected_params)
     return solver.State(saved.load, saved.x, None, None), saved.history, int(saved.info["pseudo_time"])
 
 
