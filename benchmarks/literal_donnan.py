@@ -47,8 +47,8 @@ def main():
             model = artery.bilayer_model(p, numerics, name=f"literal_dx{dx:g}_{case}", pool=pool, gag=gag)
             row = dict(dx_um=dx, case=case, particles=model.n)
             try:
-                table = protocols.swell_pool(model, solver.State(start.load, start.x, None, None), pool, numerics,
-                                             sw, gag)
+                states = protocols.swell_pool(model, solver.State(start.load, start.x, None, None), numerics, sw)
+                table = protocols.pool_table(model, states, pool, sw["probe_length_um"], gag)
                 failed_at = None
             except solver.SimulationError as exc:
                 table, failed_at = None, dict(exc.load.material).get("concentration")

@@ -12,7 +12,7 @@ import pandas as pd
 import pytest
 import yaml
 
-from .conftest import ROOT
+from .conftest import ROOT, project_copy
 
 pytestmark = pytest.mark.pipeline
 
@@ -43,7 +43,7 @@ CONTRACT = {
     "results/delamination/summary.csv": [
         "case", "sigma_cr_kPa", "criterion", "dx_um", "onset_concentration_mEq_l", "final_length_um",
         "growth_rate_um_per_pseudo_time", "growth_rate_um_per_mEq_l", "merged", "merge_step",
-        "dissipated_energy_J_m2", "max_residual", "wall_s"],
+        "dissipated_energy_J_m2", "max_residual"],
     "results/delamination/convergence.csv": [
         "case", "sigma_cr_kPa", "criterion", "dx_um", "onset_concentration_mEq_l", "final_length_um", "max_residual"],
 }
@@ -51,10 +51,12 @@ FIGURES = [f"figures/{name}.{ext}" for name in ("fig1", "fig3a_mean", "fig3b", "
                                                "swelling_convergence", "fig5", "fig6", "fig7") for ext in ("pdf", "png")]
 
 
-def snakemake(workdir, *args, configfile=ROOT / "config" / "ci.yaml"):
-    cmd = [sys.executable, "-m", "snakemake", "--snakefile", str(ROOT / "Snakefile"), "--directory", str(workdir),
-           "--configfile", str(configfile), "--cores", "2", *args]
-    return subprocess.run(cmd, capture_output=True, text=True, env=os.environ.copy())
+def snakemake(project, *args, configfile="config/ci.yaml", env=None):
+    """``snakemake *args --configfile X --cores 2`` run in ``project`` (a copy of the project root), as a user
+    does; ``configfile=None`` gives no ``--configfile``."""
+    cmd = [sys.executable, "-m", "snakemake", *args, "--cores", "2"]
+    cmd += ["--configfile", str(configfile)] if configfile is not None else []
+    return subprocess.run(cmd, cwd=project, capture_output=True, text=True, env=dict(os.environ, **(env or {})))
 
 
 def edited_config(tmp_path, ci_config, section, key, value):
@@ -67,9 +69,16 @@ def edited_config(tmp_path, ci_config, section, key, value):
 
 
 @pytest.fixture(scope="module")
-def workdir(tmp_path_factory):
-    wd = tmp_path_factory.mktemp("pipeline")
-    run = snakemake(wd, "all")
+def numba_cache(tmp_path_factory):
+    """An empty Numba cache for the CI run: its jobs compile every kernel themselves, as on a fresh machine."""
+    return tmp_path_factory.mktemp("numba_cache")
+
+
+@pytest.fixture(scope="module")
+def workdir(tmp_path_factory, numba_cache):
+    """A copy of the project root in which the CI configuration ran to the end, from a cold Numba cache."""
+    wd = project_copy(tmp_path_factory.mktemp("pipeline"))
+    run = snakemake(wd, "all", env=dict(NUMBA_CACHE_DIR=str(numba_cache)))
     assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
     yield wd
     shutil.rmtree(wd, ignore_errors=True)
@@ -157,9 +166,59 @@ def test_a_reference_value_reruns_only_the_table_that_shows_it(workdir, ci_confi
     assert planned_jobs(out) == {"homeostasis_target": 1, "all": 1}, out[-3000:]
 
 
-def test_a_bad_config_stops_the_workflow_with_a_named_key(tmp_path, ci_config):
+def test_a_measurement_setting_reruns_the_measurement_not_the_simulations(workdir, ci_config, tmp_path):
+    """``swelling.probe_length_um`` only sets where the pool stresses are measured: the saved swelling states stay."""
+    edited = edited_config(tmp_path, ci_config, "swelling", "probe_length_um", 12.0)
+    run = snakemake(workdir, "-n", "all", configfile=edited)
+    out = run.stdout + run.stderr
+    assert run.returncode == 0, out
+    jobs = planned_jobs(out)
+    print("\nprobe_length_um edit reruns:", jobs)
+    sw = ci_config["swelling"]
+    assert jobs.pop("pool_stresses") == len(sw["models"]) * len(sw["cases"]) * len(sw["pressures_mmHg"])
+    assert "swell" not in jobs and "homeostasis" not in jobs and "delaminate" not in jobs, jobs
+
+
+def edited_copy(workdir, tmp_path, module: str) -> Path:
+    """A copy of the finished run with a comment appended to ``src/sphgag/<module>``."""
+    dest = tmp_path / "copy"
+    shutil.copytree(workdir, dest, symlinks=True)
+    with open(dest / "src" / "sphgag" / module, "a") as fh:
+        fh.write("# a comment\n")
+    return dest
+
+
+def test_a_comment_in_a_module_that_computes_no_number_reruns_nothing(workdir, tmp_path):
+    run = snakemake(edited_copy(workdir, tmp_path, "provenance.py"), "-n", "all")
+    assert run.returncode == 0 and "Nothing to be done" in run.stdout + run.stderr, run.stdout[-3000:]
+
+
+def test_an_edit_of_the_plotting_module_redraws_the_figures_only(workdir, tmp_path):
+    run = snakemake(edited_copy(workdir, tmp_path, "plots.py"), "-n", "all")
+    jobs = planned_jobs(run.stdout + run.stderr)
+    print("\nplots.py edit reruns:", jobs)
+    assert jobs and all(rule.startswith("fig") or rule.endswith("_figure") or rule == "all" for rule in jobs), jobs
+
+
+def test_a_warm_numba_cache_gives_the_bytes_of_a_cold_one(workdir, numba_cache, tmp_path):
+    """Same config, same bytes, whatever the state of the Numba cache: the CI run compiled every kernel itself
+    (cold cache); these jobs, rerun in a copy of it, load them all from that cache (warm)."""
+    warm = tmp_path / "warm"
+    shutil.copytree(workdir, warm, symlinks=True)
+    targets = ["results/calibration/mean_pressure_diameter.csv", "results/homeostasis/summary.csv",
+               "results/swelling/runs/passive_I_103mmHg.csv", "results/delamination/runs/single_30kPa_particle_growth.csv"]
+    run = snakemake(warm, *targets, "--forcerun", "calibrate_mean", "homeostasis", "swell", "pool_stresses",
+                    "delaminate", env=dict(NUMBA_CACHE_DIR=str(numba_cache)))
+    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
+    assert "calibrate_mean" in planned_jobs(run.stdout + run.stderr)
+    for target in targets:
+        assert (warm / target).stat().st_mtime > (workdir / target).stat().st_mtime, target  # really rerun
+        assert (warm / target).read_bytes() == (workdir / target).read_bytes(), target
+
+
+def test_a_bad_config_stops_the_workflow_with_a_named_key(fresh_copy, tmp_path, ci_config):
     edited = edited_config(tmp_path, ci_config, "numerics", "kernel_support_factor", 9.0)
-    run = snakemake(tmp_path, "-n", "all", configfile=edited)
+    run = snakemake(fresh_copy, "-n", "all", configfile=edited)
     assert run.returncode != 0
     assert "numerics.kernel_support_factor = 9.0" in run.stdout + run.stderr
 
@@ -184,50 +243,43 @@ def test_lint_is_clean():
 
 
 @pytest.fixture(scope="module")
-def project_copy(tmp_path_factory):
-    """A copy of the project root (its git-tracked files), where a user runs snakemake."""
-    dest = tmp_path_factory.mktemp("project")
-    files = subprocess.run(["git", "ls-files"], cwd=ROOT, capture_output=True, text=True, check=True).stdout.split()
-    for name in files:
-        if (ROOT / name).is_file():
-            (dest / name).parent.mkdir(parents=True, exist_ok=True)
-            shutil.copy2(ROOT / name, dest / name)
-    return dest
+def fresh_copy(tmp_path_factory):
+    """A copy of the project root before any run."""
+    return project_copy(tmp_path_factory.mktemp("project"))
 
 
 def plan(project, *args):
-    run = subprocess.run([sys.executable, "-m", "snakemake", "-n", "all", *args], cwd=project, capture_output=True,
-                         text=True, env=os.environ.copy())
+    run = snakemake(project, "-n", "all", *args, configfile=None)
     return run, run.stdout + run.stderr
 
 
-def test_a_configfile_stands_alone(project_copy, ci_config):
+def test_a_configfile_stands_alone(fresh_copy, ci_config):
     """--configfile X means X: nothing of config/config.yaml (pools II, III, pressure 145) leaks in."""
-    run, out = plan(project_copy, "--configfile", "config/ci.yaml")
+    run, out = plan(fresh_copy, "--configfile", "config/ci.yaml")
     assert run.returncode == 0, out
     sw = ci_config["swelling"]
     expected = len(sw["models"]) * len(sw["cases"]) * len(sw["pressures_mmHg"])
     swell = [line for line in out.splitlines() if line.startswith("swell ")]
     assert swell and int(swell[0].split()[-1]) == expected, swell
-    run, out = plan(project_copy)  # no --configfile: the full study
+    run, out = plan(fresh_copy)  # no --configfile: the full study
     full = yaml.safe_load((ROOT / "config/config.yaml").read_text())["swelling"]
     assert f"swell {len(full['models']) * len(full['cases']) * len(full['pressures_mmHg'])}".split() in \
         [line.split() for line in out.splitlines()]
 
 
-def test_a_config_missing_a_section_is_rejected_naming_it(project_copy, ci_config, tmp_path):
+def test_a_config_missing_a_section_is_rejected_naming_it(fresh_copy, ci_config, tmp_path):
     cfg = copy.deepcopy(ci_config)
     del cfg["delamination"]
     path = tmp_path / "partial.yaml"
     path.write_text(yaml.safe_dump(cfg, sort_keys=False))
-    run, out = plan(project_copy, "--configfile", str(path))
+    run, out = plan(fresh_copy, "--configfile", str(path))
     assert run.returncode != 0
     assert "missing key 'delamination'" in out, out[-2000:]
 
 
-def test_a_nested_config_override_is_read_as_yaml(project_copy):
+def test_a_nested_config_override_is_read_as_yaml(fresh_copy):
     """``--config numerics='{tolerance: 0.001}'`` (Snakemake passes nested values as text) is a valid override."""
-    run, out = plan(project_copy, "--configfile", "config/ci.yaml", "--config", "numerics={tolerance: 0.001}")
+    run, out = plan(fresh_copy, "--configfile", "config/ci.yaml", "--config", "numerics={tolerance: 0.001}")
     assert run.returncode == 0, out[-2000:]
-    run, out = plan(project_copy, "--configfile", "config/ci.yaml", "--config", "numerics={tolerance: 1e-4}")
+    run, out = plan(fresh_copy, "--configfile", "config/ci.yaml", "--config", "numerics={tolerance: 1e-4}")
     assert run.returncode != 0 and "write 1.0e-4" in out

@@ -62,8 +62,8 @@ def pressurised(ci_config):
 
 def swell(cfg, start, sector):
     model = pool_model(cfg, sector)
-    table = protocols.swell_pool(model, solver.State(start.load, start.x, None, None), sector, cfg["numerics"],
-                                 cfg["swelling"], cfg["gag"])
+    states = protocols.swell_pool(model, solver.State(start.load, start.x, None, None), cfg["numerics"], cfg["swelling"])
+    table = protocols.pool_table(model, states, sector, cfg["swelling"]["probe_length_um"], cfg["gag"])
     return model, table
 
 

@@ -2,8 +2,8 @@
 
 For one particle spacing: the passive homeostatic state (figure 2b), pressurised
 to the study's lumen pressure under pressure control, then every chosen pool
-converted and swollen (:func:`sphgag.protocols.swell_pool`). The rows carry the
-quantities whose convergence the study measures: the tip radial stress averaged
+converted and swollen (:func:`sphgag.protocols.swell_pool`) and measured
+(:func:`sphgag.protocols.pool_table`). The rows carry the quantities whose convergence the study measures: the tip radial stress averaged
 over ``swelling.probe_length_um`` and its particle peak, the top hoop stress and
 the pool's volume change, with the residual of each converged state.
 """
@@ -29,8 +29,8 @@ def study(dx: float, bilayer: dict, numerics: dict, homeostasis: dict, swelling:
     for case, entry in cases.items():
         pool = artery.pool_sector(entry)
         model = artery.bilayer_model(p, numerics, name=f"{name}_{case}", pool=pool, gag=gag)
-        table = protocols.swell_pool(model, solver.State(start.load, start.x, None, None), pool, numerics, swelling,
-                                     gag)
+        states = protocols.swell_pool(model, solver.State(start.load, start.x, None, None), numerics, swelling)
+        table = protocols.pool_table(model, states, pool, swelling["probe_length_um"], gag)
         table = table[table.stage == "converted"].assign(dx_um=float(dx), particles=model.n, case=case)
         tables.append(table)
     out = pd.concat(tables, ignore_index=True)

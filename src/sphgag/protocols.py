@@ -310,7 +310,38 @@ def pool_measurements(model: Model, ev, pool, members: np.ndarray, probe_length:
     )
 
 
-def swell_pool(model: Model, start: solver.State, pool, numerics: dict, sw: dict, gag: dict) -> pd.DataFrame:
+@dataclass(frozen=True)
+class PoolState:
+    """One converged state of the figure 4 protocol: its stage (``intact`` or ``converted``), the GAG
+    concentration [mEq/l], the positions and load, and how the solver reached it."""
+
+    stage: str
+    concentration: float
+    x: np.ndarray
+    load: Load
+    residual: float
+    newton_iterations: int
+    force_evaluations: int
+
+    @classmethod
+    def of(cls, stage: str, concentration: float, state: solver.State) -> "PoolState":
+        c = state.convergence
+        return cls(stage, float(concentration), state.x, state.load, c.residual, c.iterations, c.force_evaluations)
+
+    def info(self) -> dict:
+        """What a state file keeps beside positions and load (:func:`sphgag.state.save_series`)."""
+        return dict(stage=self.stage, concentration_mEq_l=self.concentration, residual=self.residual,
+                    newton_iterations=self.newton_iterations, force_evaluations=self.force_evaluations)
+
+    @classmethod
+    def from_saved(cls, saved) -> "PoolState":
+        """The state of a :class:`sphgag.state.SavedState` written with :meth:`info`."""
+        i = saved.info
+        return cls(i["stage"], i["concentration_mEq_l"], saved.x, saved.load, i["residual"], i["newton_iterations"],
+                   i["force_evaluations"])
+
+
+def swell_pool(model: Model, start: solver.State, numerics: dict, sw: dict) -> list[PoolState]:
     """Figure 4 protocol for one pool, from a converged pressurised state (lumen pressure held).
 
     1. ``intact``: the wall before conversion (the filled markers of figure 4);
@@ -320,36 +351,39 @@ def swell_pool(model: Model, start: solver.State, pool, numerics: dict, sw: dict
     3. raise the fixed-charge concentration from 0 to ``max_concentration_mEq_l``
        (``concentration_points`` converged states, c = 0 included).
     The lumen pressure stays constant throughout: it is a follower pressure load
-    on the inner surface (pressure control), not a prescribed radius.
+    on the inner surface (pressure control), not a prescribed radius. The states
+    are measured by :func:`pool_table`.
     """
-    from .materials import swelling_pressure
-
     run = model.name
     opts = dict(run=run, on_state=log_state(run), **solver_options(numerics))
     base = swelling_load(start.load, 0.0, 0.0)
-    members = model.props.converting  # the seeded pool (history.HistoryMaterial)
-    rows = []
-
-    def record(state, stage, c):
-        row = dict(stage=stage, concentration_mEq_l=c,
-                   swelling_pressure_kPa=float(swelling_pressure(c, gag["bath_concentration_mEq_l"], gag["temperature_K"])),
-                   pressure_mmHg=measure.carried_pressure(model, state.evaluation) / MMHG_TO_KPA)
-        row.update(pool_measurements(model, state.evaluation, pool, members, sw["probe_length_um"]))
-        row.update(residual=state.convergence.residual, newton_iterations=state.convergence.iterations,
-                   force_evaluations=state.convergence.force_evaluations)
-        rows.append(row)
-
     intact = solver.follow_path(model, start.x, base, [base], **opts)[-1]
-    record(intact, "intact", 0.0)
     steps = sw["conversion_steps"]
-    log.info("[%s] converting %d medial particles to GAG in %d steps at %.1f mmHg", run, members.size, steps,
-             base.pressure_mmHg)
+    log.info("[%s] converting %d medial particles to GAG in %d steps at %.1f mmHg", run, model.props.converting.size,
+             steps, base.pressure_mmHg)
     conv = solver.follow_path(model, intact.x, base,
                               [swelling_load(base, f, 0.0) for f in np.linspace(0, 1, steps + 1)[1:]], **opts)[-1]
-    record(conv, "converted", 0.0)
     cs = np.linspace(0.0, sw["max_concentration_mEq_l"], sw["concentration_points"])[1:]
     log.info("[%s] swelling: c = %s mEq/l", run, ", ".join(f"{c:g}" for c in cs))
     states = solver.follow_path(model, conv.x, conv.load, [swelling_load(base, 1.0, c) for c in cs], **opts)
-    for c, s in zip(cs, states):
-        record(s, "converted", float(c))
+    return [PoolState.of("intact", 0.0, intact), PoolState.of("converted", 0.0, conv)] + \
+        [PoolState.of("converted", c, s) for c, s in zip(cs, states)]
+
+
+def pool_table(model: Model, states: list[PoolState], pool, probe_length: float, gag: dict) -> pd.DataFrame:
+    """One row per state of :func:`swell_pool`: the Donnan swelling pressure (eq. 2.26), the carried lumen pressure
+    and the stresses around the pool (:func:`pool_measurements`), with the residual of the state."""
+    from .materials import swelling_pressure
+
+    members = model.props.converting  # the seeded pool (history.HistoryMaterial)
+    rows = []
+    for st in states:
+        ev = model.evaluate(st.x, st.load)
+        row = dict(stage=st.stage, concentration_mEq_l=st.concentration,
+                   swelling_pressure_kPa=float(swelling_pressure(st.concentration, gag["bath_concentration_mEq_l"],
+                                                                 gag["temperature_K"])),
+                   pressure_mmHg=measure.carried_pressure(model, ev) / MMHG_TO_KPA)
+        row.update(pool_measurements(model, ev, pool, members, probe_length))
+        row.update(residual=st.residual, newton_iterations=st.newton_iterations, force_evaluations=st.force_evaluations)
+        rows.append(row)
     return pd.DataFrame(rows)

@@ -68,14 +68,46 @@ def save(path, x: np.ndarray, load: Load, params: dict, info: dict | None = None
         np.savez(fh, **contents(x, load, params, info, history))
 
 
+def save_series(path, states, params: dict, arrays: dict | None = None) -> None:
+    """Several states of one run in one compressed ``.npz``: state ``k``'s :func:`contents` under the prefix
+    ``s{k}_`` (``states`` holds ``(x, load, info, history)`` tuples), ``count``, and shared ``arrays``."""
+    out = dict(arrays or {}, count=np.array(len(states)))
+    for k, (x, load_, info, history) in enumerate(states):
+        out.update({f"s{k}_{name}": value for name, value in contents(x, load_, params, info, history).items()})
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
+    np.savez_compressed(path, **out)
+
+
 def load(path, expected_params: dict | None = None) -> SavedState:
     """Read a state file; if ``expected_params`` is given it must equal the stored slice."""
+    return _read_file(path, lambda data: read(data, path, expected_params))
+
+
+def load_series(path, expected_params: dict | None = None) -> list[SavedState]:
+    """All states of a :func:`save_series` file, in order."""
+    return _read_file(path, lambda data: [read(_part(data, k), f"{path} (state {k})", expected_params)
+                                          for k in range(int(data["count"]))])
+
+
+def load_from_series(path, k: int, expected_params: dict | None = None) -> SavedState:
+    """State ``k`` of a :func:`save_series` file."""
+    return _read_file(path, lambda data: read(_part(data, k), f"{path} (state {k})", expected_params))
+
+
+def _part(data: dict, k: int) -> dict:
+    prefix = f"s{k}_"
+    return {name[len(prefix):]: value for name, value in data.items() if name.startswith(prefix)}
+
+
+def _read_file(path, pick):
+    """``pick`` applied to the arrays of an ``.npz`` state file; an unreadable file raises :class:`CorruptState`
+    naming it and how to regenerate it."""
     try:
-        with np.load(path, allow_pickle=False) as data:
-            return read({name: data[name] for name in data.files}, path, expected_params)
+        with np.load(path, allow_pickle=False) as npz:
+            return pick({name: npz[name] for name in npz.files})
+    except StateMismatch:
+        raise
     except (OSError, ValueError, KeyError, EOFError, zipfile.BadZipFile) as exc:
-        if isinstance(exc, StateMismatch):
-            raise
         raise CorruptState(f"{path} is not a readable state file ({type(exc).__name__}: {exc}); delete it and rerun "
                            "snakemake, which regenerates it with the rule that wrote it") from exc
 

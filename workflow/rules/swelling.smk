@@ -3,7 +3,8 @@ import re
 SW = config["swelling"]
 CASES = list(SW["cases"])
 SWELL_PRESSURES = [f"{p:g}" for p in SW["pressures_mmHg"]]
-SWELL_SETTINGS = {k: v for k, v in SW.items() if k not in ("cases", "models", "pressures_mmHg")}
+# what the simulations depend on; probe_length_um only sets where rule pool_stresses measures
+SWELL_SETTINGS = {k: v for k, v in SW.items() if k not in ("cases", "models", "pressures_mmHg", "probe_length_um")}
 SWELL_RUNS = expand("results/swelling/runs/{model}_{case}_{pressure}mmHg.csv", model=SW["models"], case=CASES,
                     pressure=SWELL_PRESSURES)
 
@@ -14,12 +15,12 @@ wildcard_constraints:
 
 
 rule swell:
-    """One GAG pool ({case}) in the {model} wall at {pressure} mmHg: conversion, then swelling 0-150 mEq/l."""
+    """One GAG pool ({case}) in the {model} wall at {pressure} mmHg: conversion, then swelling 0-150 mEq/l (states)."""
     input:
         code=SPHGAG,
         state="results/states/{model}_{pressure}mmHg.npz",
     output:
-        table="results/swelling/runs/{model}_{case}_{pressure}mmHg.csv",
+        states="results/swelling/states/{model}_{case}_{pressure}mmHg.npz",
         provenance="results/provenance/swell_{model}_{case}_{pressure}mmHg.json",
     params:
         state_slice=lambda wildcards: dict(PRESSURISED_SLICE, model=wildcards.model),
@@ -38,6 +39,34 @@ rule swell:
         mem_mb=1000,
     script:
         "../scripts/swell.py"
+
+
+rule pool_stresses:
+    """The stresses around the pool ({case}, {model} wall, {pressure} mmHg) in every state of its swelling run."""
+    input:
+        code=SPHGAG,
+        states=rules.swell.output.states,
+    output:
+        table="results/swelling/runs/{model}_{case}_{pressure}mmHg.csv",
+        provenance="results/provenance/pool_stresses_{model}_{case}_{pressure}mmHg.json",
+    params:
+        state_slice=lambda wildcards: dict(PRESSURISED_SLICE, model=wildcards.model),
+        pool=lambda wildcards: SW["cases"][wildcards.case],
+        settings=SWELL_SETTINGS,
+        gag=config["gag"],
+        probe_length=SW["probe_length_um"],
+    log:
+        "logs/pool_stresses/{model}_{case}_{pressure}mmHg.log",
+    benchmark:
+        "results/benchmarks/pool_stresses_{model}_{case}_{pressure}mmHg.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
+    script:
+        "../scripts/pool_stresses.py"
 
 
 rule tip_stress:
@@ -73,7 +102,7 @@ rule swelling_convergence_dx:
         bilayer=config["bilayer"],
         numerics=config["numerics"],
         homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
-        settings=SWELL_SETTINGS,
+        settings=dict(SWELL_SETTINGS, probe_length_um=SW["probe_length_um"]),
         gag=config["gag"],
         cases={c: SW["cases"][c] for c in SC["cases"]},
         pressure=SC["pressure_mmHg"],

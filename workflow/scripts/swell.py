@@ -1,4 +1,4 @@
-"""Rule swell: convert one medial pool to GAG and swell it at fixed lumen pressure (figure 4)."""
+"""Rule swell: convert one medial pool to GAG and swell it at fixed lumen pressure (figure 4); saves the states."""
 
 import time
 
@@ -16,17 +16,12 @@ with runlog.run(run, sm.log[0]) as log:
     pool = artery.pool_sector(sm.params.pool)
     model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=run, pool=pool, gag=sm.params.gag)
     saved = state.load(sm.input.state, expected_params=cfg)
-    start = solver.State(saved.load, saved.x, None, None)
-    table = protocols.swell_pool(model, start, pool, cfg["numerics"], sm.params.settings, sm.params.gag)
-    table.insert(0, "model", w.model)
-    table.insert(1, "case", w.case)
-    table.to_csv(sm.output.table, index=False)
-    last = table.iloc[-1]
-    first = table[table.stage == "converted"].iloc[0]
-    log.info("[%s] %d pool particles; tip radial stress %.1f kPa intact, %.1f converted, %.1f at %g mEq/l; "
-             "top hoop stress %.1f -> %.1f -> %.1f kPa", run, int(last.pool_particles), table.tip_radial_stress_kPa.iloc[0],
-             first.tip_radial_stress_kPa, last.tip_radial_stress_kPa, last.concentration_mEq_l,
-             table.top_circ_stress_kPa.iloc[0], first.top_circ_stress_kPa, last.top_circ_stress_kPa)
-    provenance.write_record(sm.output.provenance, rule="swell", params=dict(state=cfg, pool=sm.params.pool,
-                            settings=sm.params.settings, gag=sm.params.gag), outputs=list(sm.output),
-                            summary=dict(max_residual=float(table.residual.max())), started=started)
+    states = protocols.swell_pool(model, solver.State(saved.load, saved.x, None, None), cfg["numerics"],
+                                  sm.params.settings)
+    params = dict(state=cfg, pool=sm.params.pool, settings=sm.params.settings, gag=sm.params.gag)
+    state.save_series(sm.output.states, [(s.x, s.load, s.info(), None) for s in states], params)
+    max_residual = max(s.residual for s in states)
+    log.info("[%s] %d pool particles; %d converged states up to %g mEq/l, largest residual %.2e", run,
+             model.props.converting.size, len(states), states[-1].concentration, max_residual)
+    provenance.write_record(sm.output.provenance, rule="swell", params=params, outputs=list(sm.output),
+                            summary=dict(max_residual=max_residual), started=started)
