@@ -3,9 +3,11 @@
 import copy
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
+import zipfile
 from pathlib import Path
 
 import pandas as pd
@@ -50,6 +52,11 @@ CONTRACT = {
 FIGURES = [f"figures/{name}.{ext}" for name in ("fig1", "fig3a_mean", "fig3b", "fig3", "fig4", "verification_pool",
                                                "swelling_convergence", "fig5", "fig6", "fig7") for ext in ("pdf", "png")]
 
+# the tables of snakemake --report besides the figures' PNGs (report() in workflow/rules/*.smk)
+REPORT_TABLES = ["results/claims.csv", "results/calibration/mean_pressure_diameter.csv",
+                 "results/homeostasis/summary.csv", "results/swelling/tip_stress.csv",
+                 "results/swelling/convergence.csv", "results/verification/elliptic_pool.csv",
+                 "results/delamination/summary.csv", "results/delamination/convergence.csv"]
 
 def snakemake(project, *args, configfile="config/ci.yaml", env=None):
     """``snakemake *args --configfile X --cores 2`` run in ``project`` (a copy of the project root), as a user
@@ -129,6 +136,37 @@ def test_provenance_records_code_and_parameters(workdir, ci_config):
     record = json.loads((workdir / "results/provenance/calibrate_mean.json").read_text())
     assert record["params"]["mean"] == ci_config["mean"]
     assert len(record["code"]["source_sha256"]) == 64
+
+
+def report_variable(html: str, name: str):
+    """The JSON value of ``<script id="{name}"> var ... = {...}; </script>`` in Snakemake's report page."""
+    found = re.search(rf'<script id="{name}">\s*var \w+ = (.*?);\s*</script>', html, re.S)
+    assert found, name
+    return json.loads(found.group(1))
+
+
+def test_the_report_holds_every_figure_and_the_claims_table_first(workdir):
+    report = workdir / "report.zip"
+    run = snakemake(workdir, "--report", str(report))
+    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
+    with zipfile.ZipFile(report) as z:
+        html = z.read("report/report.html").decode()
+        results, categories = report_variable(html, "results"), report_variable(html, "categories")
+        pngs = [f for f in FIGURES if f.endswith(".png")]
+        assert set(pngs + REPORT_TABLES) <= set(results), sorted(set(pngs + REPORT_TABLES) - set(results))
+        for path, entry in results.items():
+            # the file itself, byte for byte, and a caption that docutils rendered without complaint
+            assert z.read(f"report/{entry['data_uri']}") == (workdir / path).read_bytes(), path
+            assert len(entry["caption"]) > 300 and "system-message" not in entry["caption"], path
+        assert all(results[path]["mime_type"] == "image/png" for path in pngs)  # shown inline
+        # the menu sorts the categories by name (localeCompare; the same order as Python's for these names)
+        first = sorted(categories)[0]
+        assert [p for paths in categories[first].values() for p in paths] == ["results/claims.csv"], categories
+        claims = pd.read_csv(workdir / "results/claims.csv")
+        caption = results["results/claims.csv"]["caption"]
+        assert all(f"<td>{claim}</td>" in caption for claim in claims.claim_id)  # the table, rendered
+        description = report_variable(html, "workflow-desc")
+        assert "Ahmadzadeh" in description and "system-message" not in description
 
 
 def test_nothing_to_do_after_a_complete_run(workdir):

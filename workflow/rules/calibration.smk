@@ -3,7 +3,12 @@ rule calibrate_mean:
     input:
         code=SPHGAG,
     output:
-        states="results/calibration/mean_pressure_diameter.csv",
+        states=report(
+            "results/calibration/mean_pressure_diameter.csv",
+            caption="../report/mean_pressure_diameter.rst",
+            category="1 Calibration",
+            labels={"result": "Table: mean model, one state per pressure"},
+        ),
         exact="results/calibration/mean_exact_curve.csv",
         transmural="results/calibration/transmural_mean.csv",
         provenance="results/provenance/calibrate_mean.json",

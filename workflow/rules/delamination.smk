@@ -71,7 +71,12 @@ rule delamination_summary:
     input:
         DE_SUMMARIES,
     output:
-        "results/delamination/summary.csv",
+        report(
+            "results/delamination/summary.csv",
+            caption="../report/delamination_summary.rst",
+            category="5 Delamination",
+            labels={"result": "Table: one row per delamination run"},
+        ),
     log:
         "logs/delamination_summary.log",
     conda:
@@ -112,7 +117,12 @@ rule delamination_convergence:
     input:
         expand(rules.delamination_convergence_dx.output.table, dedx=DE_DX),
     output:
-        "results/delamination/convergence.csv",
+        report(
+            "results/delamination/convergence.csv",
+            caption="../report/delamination_convergence.rst",
+            category="5 Delamination",
+            labels={"result": "Resolution study of delamination (table)"},
+        ),
     log:
         "logs/delamination_convergence.log",
     conda:

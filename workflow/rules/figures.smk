@@ -6,7 +6,12 @@ rule fig3a_mean:
         exact=rules.calibrate_mean.output.exact,
     output:
         pdf="figures/fig3a_mean.pdf",
-        png="figures/fig3a_mean.png",
+        png=report(
+            "figures/fig3a_mean.png",
+            caption="../report/fig3a_mean.rst",
+            category="1 Calibration",
+            labels={"result": "Figure 3a: mean model, pressure-diameter and stress-stretch"},
+        ),
     conda:
         "../envs/sphgag.yaml"
     log:
@@ -26,7 +31,12 @@ rule fig3b:
         profiles=rules.transmural.output[0],
     output:
         pdf="figures/fig3b.pdf",
-        png="figures/fig3b.png",
+        png=report(
+            "figures/fig3b.png",
+            caption="../report/fig3b.rst",
+            category="1 Calibration",
+            labels={"result": "Figure 3b: mean model, stresses across the wall"},
+        ),
     conda:
         "../envs/sphgag.yaml"
     log:
@@ -51,7 +61,12 @@ rule fig3:
         profiles=rules.transmural.output[0],
     output:
         pdf="figures/fig3.pdf",
-        png="figures/fig3.png",
+        png=report(
+            "figures/fig3.png",
+            caption="../report/fig3.rst",
+            category="1 Calibration",
+            labels={"result": "Figure 3, complete: mean and bi-layered models"},
+        ),
     log:
         "logs/fig3.log",
     conda:
@@ -71,7 +86,12 @@ rule fig1:
         particles=rules.homeostasis.output.particles,
     output:
         pdf="figures/fig1.pdf",
-        png="figures/fig1.png",
+        png=report(
+            "figures/fig1.png",
+            caption="../report/fig1.rst",
+            category="2 Homeostasis",
+            labels={"result": "Figure 1: the particle model of the bi-layered wall"},
+        ),
     params:
         mass_fractions=config["bilayer"]["mass_fractions"],
         support_factor=config["numerics"]["kernel_support_factor"],
@@ -96,7 +116,12 @@ rule fig4:
         particles=rules.homeostasis.output.particles,
     output:
         pdf="figures/fig4.pdf",
-        png="figures/fig4.png",
+        png=report(
+            "figures/fig4.png",
+            caption="../report/fig4.rst",
+            category="3 Swelling",
+            labels={"result": "Figure 4: stresses around a swelling GAG pool"},
+        ),
     params:
         cases=config["swelling"]["cases"],
         probe_length=config["swelling"]["probe_length_um"],
@@ -125,7 +150,12 @@ rule claims:
         growth=rules.delamination_growth.output[0],
         delamination=rules.delamination_summary.output[0],
     output:
-        table="results/claims.csv",
+        table=report(
+            "results/claims.csv",
+            caption="../report/claims.rst",
+            category="0 Claims",
+            labels={"result": "The paper's claims against our numbers"},
+        ),
         markdown="figures/claims.md",
     params:
         cases=config["swelling"]["cases"],
@@ -145,7 +175,12 @@ rule swelling_convergence_figure:
         table=rules.swelling_convergence.output[0],
     output:
         pdf="figures/swelling_convergence.pdf",
-        png="figures/swelling_convergence.png",
+        png=report(
+            "figures/swelling_convergence.png",
+            caption="../report/swelling_convergence_figure.rst",
+            category="3 Swelling",
+            labels={"result": "Resolution study of the pool stresses (figure)"},
+        ),
     log:
         "logs/swelling_convergence_figure.log",
     conda:
@@ -175,7 +210,12 @@ rule fig5:
         snapshots=expand(DE_SNAPSHOTS, poolset=["single"], sigma=f"{FIG5_SIGMA:g}", criterion=DE["criteria"]),
     output:
         pdf="figures/fig5.pdf",
-        png="figures/fig5.png",
+        png=report(
+            "figures/fig5.png",
+            caption="../report/fig5.rst",
+            category="5 Delamination",
+            labels={"result": "Figure 5: one pool grown by damage"},
+        ),
     params:
         sigma=FIG5_SIGMA,
         criteria=DE["criteria"],
@@ -201,7 +241,12 @@ rule fig6:
         snapshots=expand(DE_SNAPSHOTS, poolset=FIG6_CASES, sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"]),
     output:
         pdf="figures/fig6.pdf",
-        png="figures/fig6.png",
+        png=report(
+            "figures/fig6.png",
+            caption="../report/fig6.rst",
+            category="5 Delamination",
+            labels={"result": "Figure 6: two pools at the same radius"},
+        ),
     params:
         cases=FIG6_CASES,
         criteria=DE["criteria"],
@@ -227,7 +272,12 @@ rule fig7:
         snapshots=expand(DE_SNAPSHOTS, poolset=["radial_offset"], sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"]),
     output:
         pdf="figures/fig7.pdf",
-        png="figures/fig7.png",
+        png=report(
+            "figures/fig7.png",
+            caption="../report/fig7.rst",
+            category="5 Delamination",
+            labels={"result": "Figure 7: two pools offset in radius"},
+        ),
     params:
         case="radial_offset",
         sigma=DE["critical_stress_kPa"],

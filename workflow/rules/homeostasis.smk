@@ -19,7 +19,12 @@ rule homeostasis:
         code=SPHGAG,
     output:
         state="results/states/homeostatic.npz",
-        summary="results/homeostasis/summary.csv",
+        summary=report(
+            "results/homeostasis/summary.csv",
+            caption="../report/homeostasis_summary.rst",
+            category="2 Homeostasis",
+            labels={"result": "Table: the homeostatic state and the pressure it carries"},
+        ),
         profile="results/homeostasis/profile.csv",
         layers="results/homeostasis/layers.csv",
         particles="results/homeostasis/particles.csv",

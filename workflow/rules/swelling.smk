@@ -74,7 +74,12 @@ rule tip_stress:
     input:
         SWELL_RUNS,
     output:
-        "results/swelling/tip_stress.csv",
+        report(
+            "results/swelling/tip_stress.csv",
+            caption="../report/tip_stress.rst",
+            category="3 Swelling",
+            labels={"result": "Table: every swelling run (figure 4)"},
+        ),
     log:
         "logs/tip_stress.log",
     conda:
@@ -125,7 +130,12 @@ rule swelling_convergence:
     input:
         expand(rules.swelling_convergence_dx.output.table, dx=CONVERGENCE_DX),
     output:
-        "results/swelling/convergence.csv",
+        report(
+            "results/swelling/convergence.csv",
+            caption="../report/swelling_convergence_table.rst",
+            category="3 Swelling",
+            labels={"result": "Resolution study of the pool stresses (table)"},
+        ),
     log:
         "logs/swelling_convergence.log",
     conda:

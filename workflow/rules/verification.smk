@@ -44,7 +44,12 @@ rule verify_pool:
     input:
         expand(rules.verify_pool_ratio.output.table, ratio=ASPECT_RATIOS),
     output:
-        "results/verification/elliptic_pool.csv",
+        report(
+            "results/verification/elliptic_pool.csv",
+            caption="../report/elliptic_pool.rst",
+            category="4 Verification",
+            labels={"result": "Table: the pool verification"},
+        ),
     log:
         "logs/verify_pool.log",
     conda:
@@ -75,7 +80,12 @@ rule verification_pool_figure:
         profiles=rules.verify_pool_profiles.output[0],
     output:
         pdf="figures/verification_pool.pdf",
-        png="figures/verification_pool.png",
+        png=report(
+            "figures/verification_pool.png",
+            caption="../report/verification_pool.rst",
+            category="4 Verification",
+            labels={"result": "Figure: a swelling inclusion against Inglis and Lame"},
+        ),
     log:
         "logs/verification_pool_figure.log",
     conda:
