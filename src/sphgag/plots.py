@@ -10,6 +10,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
+import seaborn as sns  # noqa: E402
 
 from .provenance import figure_metadata  # noqa: E402
 
@@ -26,6 +27,27 @@ def _style():
 
 def pressure_colour(p):
     return PRESSURE_COLOURS.get(round(float(p), 6), None)
+
+
+def palette(levels, colours: dict, label="{:g}".format) -> dict:
+    """Seaborn palette of ``levels``: ``label(level)`` -> ``colours[level]`` where ``colours`` has the level, else
+    the next unused colour of Dark2 (deterministic, in the order of ``levels``)."""
+    spare = iter(c for c in sns.color_palette("Dark2").as_hex() if c not in colours.values())
+    return {label(v): colours.get(v) or next(spare) for v in levels}
+
+
+def long_measures(table: pd.DataFrame, measures: dict, id_vars) -> pd.DataFrame:
+    """``table`` in long form: one row per value of a ``measures`` column (column -> (quantity, statistic)) that
+    ``table`` has, with its ``quantity`` and ``statistic`` (the facets and line styles of a seaborn figure)."""
+    long = table.melt(id_vars=id_vars, value_vars=[c for c in measures if c in table], var_name="column")
+    long["quantity"] = long.column.map(lambda c: measures[c][0])
+    long["statistic"] = long.column.map(lambda c: measures[c][1])
+    return long
+
+
+def style_legend(ax, loc="best", fontsize=7, **kws):
+    """The seaborn legend of ``ax`` without a frame, in small type."""
+    sns.move_legend(ax, loc, frameon=False, fontsize=fontsize, **kws)
 
 
 def save(fig, paths, description: str):
@@ -251,54 +273,60 @@ def pool_geometry_panel(ax, particles: pd.DataFrame, case: dict, probe_length: f
     ax.set_aspect("equal")
 
 
-def swelling_panels(ax_tip, ax_top, runs: pd.DataFrame):
-    """Tip radial and top hoop stress against concentration, one line per pressure; intact values filled."""
-    for P, g in runs.groupby("pressure_mmHg"):
-        c = pressure_colour(P)
-        conv = g[g.stage == "converted"].sort_values("concentration_mEq_l")
-        intact = g[g.stage == "intact"]
-        ax_tip.plot(conv.concentration_mEq_l, conv.tip_radial_stress_kPa, "-o", color=c, ms=2.5, lw=1.0,
-                    label=f"{P:g} mmHg")
-        if "tip_peak_radial_stress_kPa" in conv:
-            ax_tip.plot(conv.concentration_mEq_l, conv.tip_peak_radial_stress_kPa, ":", color=c, lw=0.9)
-        ax_top.plot(conv.concentration_mEq_l, conv.top_circ_stress_kPa, "-o", color=c, ms=2.5, lw=1.0)
-        ax_tip.plot(np.zeros(len(intact)), intact.tip_radial_stress_kPa, "o", color=c, ms=6, clip_on=False)
-        ax_top.plot(np.zeros(len(intact)), intact.top_circ_stress_kPa, "o", color=c, ms=6, clip_on=False)
-    ax_tip.axhline(0.0, color="0.7", lw=0.6)
+GAG_CONCENTRATION = "GAG concentration (mEq/l)"
+TIP, TOP = "tip radial stress (kPa)", "top hoop stress (kPa)"
+POOL_MEASURES = {  # the pool figures' columns (tip_stress.csv, convergence.csv) -> (quantity, statistic)
+    "tip_radial_stress_kPa": (TIP, "region mean"),
+    "tip_peak_radial_stress_kPa": (TIP, "particle peak"),
+    "top_circ_stress_kPa": (TOP, "region mean"),
+    "pool_volume_change": ("pool volume change", "region mean"),
+}
+STATISTIC_LINES = dict(style="statistic", style_order=["region mean", "particle peak"],
+                       dashes={"region mean": "", "particle peak": (1, 1.65)},
+                       markers={"region mean": "o", "particle peak": "."}, markersize=3, markeredgewidth=0)
+
+
+def swelling_lines(data: pd.DataFrame, colours: dict, **_):
+    """One facet of figure 4 (FacetGrid.map_dataframe): a stress against concentration after conversion, a colour
+    per pressure, a line style per statistic; the intact wall's value as a large dot at zero concentration."""
+    ax = plt.gca()
+    conv, intact = data[data.stage == "converted"], data[data.stage == "intact"]
+    sns.lineplot(conv, x="concentration_mEq_l", y="value", hue="pressure", hue_order=list(colours), palette=colours,
+                 estimator=None, lw=1.0, ax=ax, **STATISTIC_LINES)
+    sns.scatterplot(intact, x="concentration_mEq_l", y="value", hue="pressure", palette=colours, s=36, linewidth=0,
+                    clip_on=False, legend=False, ax=ax)
+    if (data.quantity == TIP).any():
+        ax.axhline(0.0, color="0.7", lw=0.6)
 
 
 def fig4(tips: pd.DataFrame, particles: pd.DataFrame, cases: dict, probe_length: float):
-    """Figure 4: (a) the pools; (b) passive and (c) active tip radial and top hoop stress vs concentration."""
+    """Figure 4: (a) the pools; (b) passive and (c) active tip radial and top hoop stress vs concentration (seaborn
+    facets of tip_stress.csv: a row per model and stress, a column per pool, a colour per pressure)."""
     _style()
     names = sorted(cases, key=lambda k: cases[k]["angular_extent_deg"])
     models = [m for m in ("passive", "active") if m in set(tips.model)]
-    nrow = 1 + 2 * len(models)
-    fig, axes = plt.subplots(nrow, len(names), figsize=(3.0 * len(names), 2.3 * nrow), squeeze=False)
-    for j, name in enumerate(names):
-        pool_geometry_panel(axes[0, j], particles, cases[name], probe_length,
+    pressures = palette(sorted(tips.pressure_mmHg.unique()), PRESSURE_COLOURS, "{:g} mmHg".format)
+    long = long_measures(tips.assign(pressure=tips.pressure_mmHg.map("{:g} mmHg".format)),
+                         {c: POOL_MEASURES[c] for c in ("tip_radial_stress_kPa", "tip_peak_radial_stress_kPa",
+                                                        "top_circ_stress_kPa")},
+                         ["model", "case", "stage", "pressure", "concentration_mEq_l"])
+    long = long[(long.stage == "converted") | (long.statistic == "region mean")]  # no peak of the intact wall
+    long["panel"] = long.model.map({m: f"({'bc'[i]}) {m}\n" for i, m in enumerate(models)}) + long.quantity
+    panels = [f"({'bc'[i]}) {m}\n{q}" for i, m in enumerate(models) for q in (TIP, TOP)]
+    grid = sns.FacetGrid(long, row="panel", col="case", row_order=["(a)"] + panels, col_order=names, sharex=False,
+                         sharey="row", height=2.3, aspect=3.0 / 2.3)
+    grid.map_dataframe(swelling_lines, colours=pressures)
+    grid.add_legend()
+    grid.set_titles("")
+    grid.set_axis_labels(GAG_CONCENTRATION, "")
+    for ax, panel in zip(grid.axes[1:, 0], panels):
+        ax.set_ylabel(panel)
+    for ax, name in zip(grid.axes[0], names):
+        pool_geometry_panel(ax, particles, cases[name], probe_length,
                             f"(a) case {name}: {cases[name]['angular_extent_deg']:g} deg")
-    axes[0, 0].set_ylabel("radius (um)")
-    for i, model in enumerate(models):
-        letter = "bc"[i]
-        for j, name in enumerate(names):
-            ax_tip, ax_top = axes[1 + 2 * i, j], axes[2 + 2 * i, j]
-            runs = tips[(tips.model == model) & (tips.case == name)]
-            swelling_panels(ax_tip, ax_top, runs)
-            ax_tip.set_title(f"({letter}) {model}, case {name}")
-            ax_top.set_xlabel("GAG concentration (mEq/l)")
-        axes[1 + 2 * i, 0].set_ylabel("tip radial stress (kPa)")
-        axes[2 + 2 * i, 0].set_ylabel("top hoop stress (kPa)")
-    # shared y-limits per row make the cases comparable
-    for row in axes[1:]:
-        lo = min(ax.get_ylim()[0] for ax in row)
-        hi = max(ax.get_ylim()[1] for ax in row)
-        for ax in row:
-            ax.set_ylim(lo, hi)
-    axes[1, -1].legend(frameon=False, fontsize=7)
-    axes[1, 0].text(0.02, 0.02, "solid: mean over the tip region\ndotted: particle peak", transform=axes[1, 0].transAxes,
-                    fontsize=6.5, va="bottom")
-    fig.tight_layout()
-    return fig
+    grid.axes[0, 0].set_ylabel("radius (um)")
+    grid.tight_layout()
+    return grid.figure
 
 
 RATIO_COLOURS = {1.0: "#1b9e77", 2.0: "#d95f02", 3.0: "#7570b3"}
@@ -307,10 +335,10 @@ RATIO_COLOURS = {1.0: "#1b9e77", 2.0: "#d95f02", 3.0: "#7570b3"}
 def verification_pool(table: pd.DataFrame, profiles: pd.DataFrame):
     """The pool verification: (a) Lamé field of the circle, (b) hoop stress ahead of the tip against Inglis,
     (c) tip error and (d) traction jump and field error against resolution (log-log, observed order)."""
-    from .inclusion import observed_order, tip_fit, TIP_PARTICLES
+    from .inclusion import observed_order, TIP_PARTICLES
 
     _style()
-    fig, axes = plt.subplots(1, 4, figsize=(13.5, 3.1))
+    fig, axes = plt.subplots(1, 4, figsize=(16.0, 3.1))
     Pi = float(table.pressure_kPa.iloc[0])
     colour = lambda r: RATIO_COLOURS.get(float(r), "k")  # noqa: E731
     ax = axes[0]
@@ -344,51 +372,61 @@ def verification_pool(table: pd.DataFrame, profiles: pd.DataFrame):
     ax.text(0.98, 0.97, f"* fit of the first {TIP_PARTICLES} particles\n- Inglis Pi (2a/b - 1)",
             transform=ax.transAxes, ha="right", va="top", fontsize=6.5)
     ax.legend(frameon=False, fontsize=6.5, loc="center right")
-    ax = axes[2]
-    for ratio, g in table.groupby("aspect_ratio"):
-        h = g.dx_um / g.semi_axis_b_um
-        ax.loglog(h, g.rel_error.abs(), "o-", color=colour(ratio), ms=3,
-                  label=f"a/b = {ratio:g}: order {observed_order(g.dx_um, g.rel_error):.2f}")
-        ax.loglog(h, g.first_particle_rel_error.abs(), "x:", color=colour(ratio), ms=3, lw=0.7)
-    ax.axhline(0.05, color="0.6", lw=0.6, ls="--")
-    ax.set(xlabel="dx / b", ylabel="|relative error|", title="(c) tip stress (o) and first particle (x)")
-    ax.legend(frameon=False, fontsize=6.5)
-    ax = axes[3]
-    for ratio, g in table.groupby("aspect_ratio"):
-        h = g.dx_um / g.semi_axis_b_um
-        ax.loglog(h, g.field_rms_error_kPa / Pi, "o-", color=colour(ratio), ms=3, label=f"a/b = {ratio:g}")
-        ax.loglog(h, np.maximum(g.traction_jump_kPa / Pi, 1e-4), "s--", color=colour(ratio), ms=3, mfc="none", lw=0.7)
-    ax.set(xlabel="dx / b", ylabel="/ Pi", title="(d) field rms error (o), traction jump (s)")
-    ax.legend(frameon=False, fontsize=6.5)
+    ratios = sorted(table.aspect_ratio.unique())
+    errors = table.assign(tip=table.rel_error.abs(), first=table.first_particle_rel_error.abs(),
+                          field=table.field_rms_error_kPa / Pi, jump=np.maximum(table.traction_jump_kPa / Pi, 1e-4))
+    orders = {r: observed_order(g.dx_um, g.rel_error) for r, g in table.groupby("aspect_ratio")}
+    resolution_panel(axes[2], errors, {"tip": ("tip stress", "o", ""), "first": ("first particle", "X", (1, 1.65))},
+                     palette(ratios, RATIO_COLOURS, lambda r: f"a/b = {r:g}: order {orders[r]:.2f}"))
+    axes[2].axhline(0.05, color="0.6", lw=0.6, ls="--")
+    axes[2].set(ylabel="|relative error|", title="(c) tip stress and first particle")
+    resolution_panel(axes[3], errors, {"field": ("field rms error", "o", ""),
+                                       "jump": ("traction jump", "s", (3.7, 1.6))},
+                     palette(ratios, RATIO_COLOURS, "a/b = {:g}".format))
+    axes[3].set(ylabel="/ Pi", title="(d) field rms error, traction jump")
     fig.tight_layout()
     return fig
+
+
+def resolution_panel(ax, errors: pd.DataFrame, measures: dict, ratios: dict):
+    """Errors of the pool verification against dx / b, log-log (seaborn): a colour per aspect ratio (``ratios``:
+    legend label -> colour, in the order of the sorted ratios), a marker and line style per ``measures`` column
+    (column -> (name, marker, dashes)); the legend beside the axes."""
+    labels = dict(zip(sorted(errors.aspect_ratio.unique()), ratios))
+    long = errors.assign(dx_over_b=errors.dx_um / errors.semi_axis_b_um, ratio=errors.aspect_ratio.map(labels))
+    long = long.melt(id_vars=["ratio", "dx_over_b"], value_vars=list(measures), var_name="measure")
+    long["measure"] = long.measure.map(lambda c: measures[c][0])
+    sns.lineplot(long, x="dx_over_b", y="value", hue="ratio", hue_order=list(ratios), palette=ratios,
+                 style="measure", style_order=[name for name, _, _ in measures.values()],
+                 markers={name: marker for name, marker, _ in measures.values()},
+                 dashes={name: dashes for name, _, dashes in measures.values()}, estimator=None, lw=1.0, markersize=4,
+                 ax=ax)
+    ax.set(xscale="log", yscale="log", xlabel="dx / b")
+    style_legend(ax, "upper left", fontsize=6.5, bbox_to_anchor=(1.0, 1.0))
 
 
 def swelling_convergence(table: pd.DataFrame):
-    """Resolution study: tip radial stress (mean over the probe, and particle peak), top hoop stress and pool
-    volume change against concentration, one line per particle spacing, one column per pool."""
+    """Resolution study (seaborn facets of convergence.csv): tip radial stress (mean over the probe, and particle
+    peak), top hoop stress and pool volume change against concentration, a colour per particle spacing, a column
+    per pool."""
     _style()
-    cases = list(dict.fromkeys(table.case))
-    fig, axes = plt.subplots(3, len(cases), figsize=(3.4 * len(cases), 7.0), squeeze=False)
     spacings = sorted(table.dx_um.unique(), reverse=True)
-    shades = plt.cm.viridis(np.linspace(0.1, 0.85, len(spacings)))
-    for j, case in enumerate(cases):
-        for dx, colour in zip(spacings, shades):
-            g = table[(table.case == case) & (table.dx_um == dx)].sort_values("concentration_mEq_l")
-            c = g.concentration_mEq_l
-            axes[0, j].plot(c, g.tip_radial_stress_kPa, "-o", ms=2.5, color=colour, label=f"dx = {dx:g} um")
-            axes[0, j].plot(c, g.tip_peak_radial_stress_kPa, ":", color=colour, lw=0.9)
-            axes[1, j].plot(c, g.top_circ_stress_kPa, "-o", ms=2.5, color=colour)
-            axes[2, j].plot(c, g.pool_volume_change, "-o", ms=2.5, color=colour)
-        axes[0, j].set_title(f"case {case}")
-        axes[0, j].axhline(0.0, color="0.7", lw=0.6)
-        axes[2, j].set_xlabel("GAG concentration (mEq/l)")
-    axes[0, 0].set_ylabel("tip radial stress (kPa)\n(solid: probe mean, dotted: peak)")
-    axes[1, 0].set_ylabel("top hoop stress (kPa)")
-    axes[2, 0].set_ylabel("pool volume change")
-    axes[0, -1].legend(frameon=False, fontsize=7)
-    fig.tight_layout()
-    return fig
+    shades = dict(zip([f"{dx:g} um" for dx in spacings], plt.cm.viridis(np.linspace(0.1, 0.85, len(spacings)))))
+    long = long_measures(table.assign(dx=table.dx_um.map("{:g} um".format)), POOL_MEASURES,
+                         ["case", "dx", "concentration_mEq_l"])
+    quantities = list(dict.fromkeys(q for q, _ in POOL_MEASURES.values()))
+    grid = sns.relplot(long, kind="line", x="concentration_mEq_l", y="value", hue="dx", hue_order=list(shades),
+                       palette=shades, row="quantity", row_order=quantities, col="case", estimator=None, lw=1.0,
+                       height=7.0 / 3, aspect=3.4 / (7.0 / 3), facet_kws=dict(sharey=False, margin_titles=True),
+                       **STATISTIC_LINES)
+    grid.set_titles(row_template="", col_template="case {col_name}")
+    grid.set_axis_labels(GAG_CONCENTRATION, "")
+    for ax, quantity in zip(grid.axes[:, 0], quantities):
+        ax.set_ylabel(quantity)
+    for ax in grid.axes[0]:
+        ax.axhline(0.0, color="0.7", lw=0.6)
+    grid.tight_layout()
+    return grid.figure
 
 
 # --- delamination (figures 5-7) ---------------------------------------------------------------------------------------
@@ -397,7 +435,7 @@ SEEDED, CONVERTED = 1, 2  # history origin codes (sphgag.history): a seeded GAG 
 MATERIAL_COLOURS = {"media": "0.84", "adventitia": "0.62", SEEDED: LAYER_COLOURS["GAG"], CONVERTED: "#2166ac"}
 DAMAGE_CMAP = matplotlib.colors.LinearSegmentedColormap.from_list("damage", ["#ffd300", "#f47b20", "#7f2704"])
 SIDE_COLOURS = {"interior": "#1b9e77", "exterior": "#7570b3"}
-CRITERION_LS = ("-", "--")  # the default onset criterion, the other one
+CRITERION_DASHES = ("", (3.7, 1.6))  # the default onset criterion (solid), the other one (dashed)
 CRITERION_COLOURS = ("k", "#d95f02")
 PSEUDO_TIME = "pseudo-time (concentration levels + damage passes)"
 
@@ -508,15 +546,6 @@ def run_note(summary: pd.DataFrame, **labels) -> str:
     return note + (f", stop: {s.stop}" if s.stop != "arrested" else "")
 
 
-def growth_series(ax, run: pd.DataFrame, column: str, colour, ls="-", label=None, mark_ruptures=True):
-    """One run's ``column`` against pseudo-time; a cross after every pass in which particles were converted."""
-    run = run.sort_values("step")
-    ax.plot(run.step, run[column], ls=ls, color=colour, lw=1.0, label=label)
-    if mark_ruptures:
-        burst = run.converted_particles.diff().fillna(0.0).to_numpy() > 0
-        ax.plot(run.step[burst], run[column][burst], "x", color=colour, ms=4)
-
-
 def no_growth_note(ax, runs: pd.DataFrame):
     """Say so in the panel if none of ``runs`` converted a single particle."""
     if runs.converted_particles.max() == 0:
@@ -525,14 +554,18 @@ def no_growth_note(ax, runs: pd.DataFrame):
 
 
 def converted_panel(ax, growth: pd.DataFrame, summary: pd.DataFrame, case: str, criteria, title: str):
-    """Particles converted on the interior (between the pools) and exterior side against pseudo-time, one line
-    style per onset criterion; a dotted line where the pools merged."""
-    runs = growth[growth.case == case]
-    for criterion, ls in zip(criteria, CRITERION_LS):
-        run = runs[runs.criterion == criterion]
-        for side, colour in SIDE_COLOURS.items():
-            growth_series(ax, run, f"converted_{side}", colour, ls, f"{side}, {criterion}", mark_ruptures=False)
+    """Particles converted on the interior (between the pools) and exterior side against pseudo-time (seaborn: a
+    colour per side, a line style per onset criterion); a dotted line where the pools merged."""
+    runs = growth[growth.case == case].sort_values("step")
+    long = runs.melt(id_vars=["criterion", "step"], value_vars=[f"converted_{side}" for side in SIDE_COLOURS],
+                     var_name="side", value_name="converted")
+    long["side"] = long.side.str.removeprefix("converted_")
+    sns.lineplot(long, x="step", y="converted", hue="side", hue_order=list(SIDE_COLOURS), palette=SIDE_COLOURS,
+                 style="criterion", style_order=list(criteria), dashes=dict(zip(criteria, CRITERION_DASHES)),
+                 estimator=None, sort=False, lw=1.0, ax=ax)
+    for criterion in criteria:
         merged = summary[(summary.case == case) & (summary.criterion == criterion) & summary.merged.astype(bool)]
+        run = runs[runs.criterion == criterion]
         for step in merged.merge_step:
             row = run.step[run.pseudo_time >= step].min()
             ax.axvline(row, color="0.3", ls=":", lw=0.8)
@@ -542,23 +575,31 @@ def converted_panel(ax, growth: pd.DataFrame, summary: pd.DataFrame, case: str, 
     ax.set(xlabel=PSEUDO_TIME, ylabel="converted particles", title=title)
     ax.set_ylim(-0.5, max(ax.get_ylim()[1], 2.0))
     ax.yaxis.set_major_locator(matplotlib.ticker.MaxNLocator(integer=True))
-    ax.legend(frameon=False, fontsize=7)
+    style_legend(ax)
 
 
-def tip_stress_panel(ax, runs, sigma_colours: dict, title: str):
-    """The largest onset-measure radial stress in front of the pools against pseudo-time (the sawtooth of figure 5b),
-    ``runs``: ``(growth rows, colour, line style, label)``; a dashed line at each sigma_cr of ``sigma_colours``."""
-    for run, colour, ls, label in runs:
-        growth_series(ax, run, "tip_radial_stress_kPa", colour, ls, label)
+def tip_stress_panel(ax, runs: pd.DataFrame, by: str, labels: dict, colours: dict, sigma_colours: dict, title: str,
+                     dashes=None):
+    """The largest onset-measure radial stress in front of the pools against pseudo-time (the sawtooth of figure
+    5b), seaborn: one line per value of ``runs[by]`` (legend ``labels``, ``colours``, optionally ``dashes``), a
+    cross after every pass in which particles were converted; a dashed line at each sigma_cr of ``sigma_colours``."""
+    runs = runs.sort_values("step").assign(run=runs[by].map(labels))
+    lines = dict(hue="run", hue_order=list(labels.values()), palette={labels[k]: colours[k] for k in labels})
+    style = {} if dashes is None else dict(style="run", dashes={labels[k]: dashes[k] for k in labels})
+    sns.lineplot(runs, x="step", y="tip_radial_stress_kPa", estimator=None, sort=False, lw=1.0, ax=ax, **lines,
+                 **style)
+    burst = runs.groupby(by).converted_particles.diff().fillna(0.0) > 0  # after a pass that converted particles
+    sns.scatterplot(runs[burst], x="step", y="tip_radial_stress_kPa", marker="x", s=16, linewidth=1.0,
+                    legend=False, ax=ax, **lines)
     for sigma, colour in sigma_colours.items():
         ax.axhline(sigma, color=colour, ls=(0, (4, 3)), lw=0.8)
         ax.text(1.0, sigma, f" {sigma:g}", transform=ax.get_yaxis_transform(), color=colour, fontsize=7,
                 va="center", ha="left")
     ax.axhline(0.0, color="0.7", lw=0.6)
     lo, hi = ax.get_ylim()
-    ax.set_ylim(lo, hi + 0.12 * len(runs) * (hi - lo))  # room for the legend above the curves
+    ax.set_ylim(lo, hi + 0.12 * len(labels) * (hi - lo))  # room for the legend above the curves
     ax.set(xlabel=PSEUDO_TIME, ylabel="tip radial stress (kPa)", title=title)
-    ax.legend(frameon=False, fontsize=7, loc="upper left")
+    style_legend(ax, "upper left", title=None)
 
 
 def snapshot_grid(fig, spec, columns, media_outer_um):
@@ -610,19 +651,20 @@ def fig5(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, sigma: fl
     for j, criterion in enumerate(criteria):
         ax = fig.add_subplot(bottom[j], sharey=tip_axes[0] if tip_axes else None)
         runs = single[single.criterion == criterion]
-        tip_stress_panel(ax, [(runs[runs.sigma_cr_kPa == s], colours[s], "-",
-                               f"{s:g} kPa: {run_note(summary, case='single', sigma_cr_kPa=s, criterion=criterion)}")
-                              for s in sigmas], colours, f"(b) {criterion} onset measure, single pool")
+        notes = {s: f"{s:g} kPa: {run_note(summary, case='single', sigma_cr_kPa=s, criterion=criterion)}"
+                 for s in sigmas}
+        tip_stress_panel(ax, runs, "sigma_cr_kPa", notes, colours, colours,
+                         f"(b) {criterion} onset measure, single pool")
         no_growth_note(ax, runs)
         tip_axes.append(ax)
     ax = fig.add_subplot(bottom[-1])
-    for (sigma_cr, criterion), run in single.groupby(["sigma_cr_kPa", "criterion"]):
-        run = run.sort_values("step")
-        ax.plot(run.concentration_mEq_l, run.delaminated_length_um, ls=CRITERION_LS[list(criteria).index(criterion)],
-                color=colours[sigma_cr], lw=1.0, label=f"{sigma_cr:g} kPa, {criterion}")
+    sns.lineplot(single.sort_values("step").assign(sigma_cr=single.sigma_cr_kPa.map("{:g} kPa".format)),
+                 x="concentration_mEq_l", y="delaminated_length_um", hue="sigma_cr",
+                 palette=palette(sigmas, colours, "{:g} kPa".format), style="criterion", style_order=list(criteria),
+                 dashes=dict(zip(criteria, CRITERION_DASHES)), estimator=None, sort=False, lw=1.0, ax=ax)
     no_growth_note(ax, single)
-    ax.set(xlabel="GAG concentration (mEq/l)", ylabel="delaminated length (um)", title="(c) growth, single pool")
-    ax.legend(frameon=False, fontsize=7, loc="upper left")
+    ax.set(xlabel=GAG_CONCENTRATION, ylabel="delaminated length (um)", title="(c) growth, single pool")
+    style_legend(ax, "upper left")
     fit_particle_sizes(fig)
     return fig
 
@@ -659,9 +701,9 @@ def fig7(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, case: str
     bottom = lower.subgridspec(1, 2)
     runs = growth[growth.case == case]
     ax = fig.add_subplot(bottom[0])
-    tip_stress_panel(ax, [(runs[runs.criterion == c], colour, ls, f"{c}: {run_note(summary, case=case, criterion=c)}")
-                          for c, ls, colour in zip(criteria, CRITERION_LS, CRITERION_COLOURS)], {sigma: "0.45"},
-                     f"(b) {case}: tip radial stress, sigma_cr = {sigma:g} kPa")
+    notes = {c: f"{c}: {run_note(summary, case=case, criterion=c)}" for c in criteria}
+    tip_stress_panel(ax, runs, "criterion", notes, dict(zip(criteria, CRITERION_COLOURS)), {sigma: "0.45"},
+                     f"(b) {case}: tip radial stress, sigma_cr = {sigma:g} kPa", dict(zip(criteria, CRITERION_DASHES)))
     no_growth_note(ax, runs)
     converted_panel(fig.add_subplot(bottom[1]), growth, summary, case, criteria, f"(c) {case}: converted particles")
     fit_particle_sizes(fig)
