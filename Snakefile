@@ -57,6 +57,7 @@ include: "workflow/rules/figures.smk"
 
 
 rule all:
+    default_target: True
     input:
         rules.calibrate_mean.output,
         rules.homeostasis.output,
@@ -79,4 +80,3 @@ rule all:
         rules.fig5.output,
         rules.fig6.output,
         rules.fig7.output,
-    default_target: True

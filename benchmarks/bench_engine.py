@@ -53,14 +53,18 @@ def main():
     cfg = config.validate(config.load_yaml(args.config), ROOT / "config" / "schema.yaml")
     p, numerics = cfg["mean"], cfg["numerics"]
     model = artery.mean_model(p, numerics, name="bench")
-    out = {"particles": model.n, "neighbour_entries": model.nb.n_entries,
-           "kernel_support_factor": numerics["kernel_support_factor"]}
+    out = {
+        "particles": model.n,
+        "neighbour_entries": model.nb.n_entries,
+        "kernel_support_factor": numerics["kernel_support_factor"],
+    }
 
     # a representative pressurised state: 103 mmHg
     lz = p["axial_stretch"]
     load = Load(lz, 103 * MMHG_TO_KPA)
-    states = protocols.solver.follow_path(model, model.layout.X, Load(1.0, 0.0),
-                                          [Load(lz, 0.0), load], **protocols.solver_options(numerics))
+    states = protocols.solver.follow_path(
+        model, model.layout.X, Load(1.0, 0.0), [Load(lz, 0.0), load], **protocols.solver_options(numerics)
+    )
     x = states[-1].x
     props, _, pairs = model.material(load)
     n = model.n
@@ -90,9 +94,24 @@ def main():
     if not args.no_rule:
         with tempfile.TemporaryDirectory() as wd:
             t = time.perf_counter()
-            run = subprocess.run([sys.executable, "-m", "snakemake", "-s", str(ROOT / "Snakefile"), "--directory", wd,
-                                  "--configfile", args.config, "--cores", "1", "calibrate_mean"],
-                                 capture_output=True, text=True)
+            run = subprocess.run(
+                [
+                    sys.executable,
+                    "-m",
+                    "snakemake",
+                    "-s",
+                    str(ROOT / "Snakefile"),
+                    "--directory",
+                    wd,
+                    "--configfile",
+                    args.config,
+                    "--cores",
+                    "1",
+                    "calibrate_mean",
+                ],
+                capture_output=True,
+                text=True,
+            )
             out["calibration_rule_wall_s"] = time.perf_counter() - t
             if run.returncode:
                 print(run.stderr[-2000:], file=sys.stderr)

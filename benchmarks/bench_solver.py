@@ -52,8 +52,8 @@ def measure(dx: float, config_path: str) -> dict:
 
     from sphgag import artery, config, geometry, protocols, solver
     from sphgag.history import HistoryMaterial
-    from sphgag.model import Model
     from sphgag.loading import MMHG_TO_KPA, Load
+    from sphgag.model import Model
 
     numba.set_num_threads(1)
     cfg = config.validate(config.load_yaml(config_path), ROOT / "config" / "schema.yaml")
@@ -137,18 +137,25 @@ def main():
         return
     rows = []
     for dx in args.dx:  # one process per size: its peak memory is its own
-        out = subprocess.run([sys.executable, __file__, "--config", args.config, "--one", str(dx)],
-                             capture_output=True, text=True, check=True)
+        out = subprocess.run(
+            [sys.executable, __file__, "--config", args.config, "--one", str(dx)],
+            capture_output=True,
+            text=True,
+            check=True,
+        )
         rows.append(json.loads(out.stdout.strip().splitlines()[-1]))
         r = rows[-1]
-        print(f"{r['particles']:>6} particles: force {r['force_evaluation_ms']:.2f} ms, Jacobian "
-              f"{r['jacobian_ms']:.1f} ms, LU {r['factorisation_ms']:.0f} ms, solve {r['solve_ms']:.1f} ms, "
-              f"state after +1 mmHg {r['state_after_load_step_ms']:.0f} ms "
-              f"(fresh Newton {r['state_after_load_step_ms_fresh_newton']:.0f}), after one conversion "
-              f"{r['state_after_conversion_ms']:.0f} ms (fresh {r['state_after_conversion_ms_fresh_newton']:.0f}), "
-              f"after a ruptured particle becomes GAG {r['state_after_ruptured_conversion_ms']:.0f} ms "
-              f"(fresh {r['state_after_ruptured_conversion_ms_fresh_newton']:.0f}), "
-              f"peak {r['peak_memory_mb']:.0f} MB", flush=True)
+        print(
+            f"{r['particles']:>6} particles: force {r['force_evaluation_ms']:.2f} ms, Jacobian "
+            f"{r['jacobian_ms']:.1f} ms, LU {r['factorisation_ms']:.0f} ms, solve {r['solve_ms']:.1f} ms, "
+            f"state after +1 mmHg {r['state_after_load_step_ms']:.0f} ms "
+            f"(fresh Newton {r['state_after_load_step_ms_fresh_newton']:.0f}), after one conversion "
+            f"{r['state_after_conversion_ms']:.0f} ms (fresh {r['state_after_conversion_ms_fresh_newton']:.0f}), "
+            f"after a ruptured particle becomes GAG {r['state_after_ruptured_conversion_ms']:.0f} ms "
+            f"(fresh {r['state_after_ruptured_conversion_ms_fresh_newton']:.0f}), "
+            f"peak {r['peak_memory_mb']:.0f} MB",
+            flush=True,
+        )
     dest = ROOT / "benchmarks" / "out"
     dest.mkdir(exist_ok=True)
     (dest / "solver.json").write_text(json.dumps(rows, indent=1) + "\n")

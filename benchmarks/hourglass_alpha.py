@@ -35,8 +35,14 @@ def main():
     numba.set_num_threads(1)
     cfg = config.validate(config.load_yaml(args.config), ROOT / "config" / "schema.yaml")
     vp, bil = cfg["verification"]["pool"], cfg["bilayer"]
-    mat = inclusion.Materials(bil["elastin_shear_modulus_kPa"], bil["lame_lambda_kPa"], cfg["gag"]["shear_modulus_kPa"],
-                              0.0, bil["hourglass_modulus_kPa"], cfg["gag"]["hourglass_modulus_kPa"])
+    mat = inclusion.Materials(
+        bil["elastin_shear_modulus_kPa"],
+        bil["lame_lambda_kPa"],
+        cfg["gag"]["shear_modulus_kPa"],
+        0.0,
+        bil["hourglass_modulus_kPa"],
+        cfg["gag"]["hourglass_modulus_kPa"],
+    )
     b, Pi = vp["semi_axis_b_um"], vp["swelling_pressure_kPa"]
     a = args.ratio * b
     rows = []
@@ -54,11 +60,19 @@ def main():
                     rows.append(dict(scheme=scheme, alpha=alpha, b_over_dx=res, failed=str(exc)))
                     continue
                 r = inclusion.measure_state(model, state, Pi, mat)
-                rows.append(dict(scheme=scheme, alpha=alpha, b_over_dx=res, tip_rel_error=r["rel_error"],
-                                 first_particle_rel_error=r["first_particle_rel_error"],
-                                 field_rms_error_per_Pi=r["field_rms_error_kPa"] / Pi,
-                                 traction_jump_per_Pi=r["traction_jump_kPa"] / Pi, residual=r["residual"],
-                                 seconds=time.time() - t0))
+                rows.append(
+                    dict(
+                        scheme=scheme,
+                        alpha=alpha,
+                        b_over_dx=res,
+                        tip_rel_error=r["rel_error"],
+                        first_particle_rel_error=r["first_particle_rel_error"],
+                        field_rms_error_per_Pi=r["field_rms_error_kPa"] / Pi,
+                        traction_jump_per_Pi=r["traction_jump_kPa"] / Pi,
+                        residual=r["residual"],
+                        seconds=time.time() - t0,
+                    )
+                )
                 print(pd.DataFrame(rows[-1:]).round(4).to_string(index=False, header=len(rows) == 1), flush=True)
     dest = ROOT / "benchmarks" / "out"
     dest.mkdir(exist_ok=True)

@@ -39,8 +39,9 @@ def main():
     for dx in args.dx:
         p = dict(cfg["bilayer"], dx_um=dx)
         wall = artery.bilayer_model(p, numerics, name=f"literal_dx{dx:g}")
-        start = protocols.pressurise(wall, protocols.homeostasis(wall, numerics, cfg["homeostasis"]).state, 103.0,
-                                     numerics)
+        start = protocols.pressurise(
+            wall, protocols.homeostasis(wall, numerics, cfg["homeostasis"]).state, 103.0, numerics
+        )
         for case in args.cases:
             t0 = time.time()
             pool = artery.pool_sector(sw["cases"][case])
@@ -54,9 +55,11 @@ def main():
                 table, failed_at = None, dict(exc.load.material).get("concentration")
             if table is not None:
                 last = table.iloc[-1]
-                row.update(last_concentration_mEq_l=last.concentration_mEq_l,
-                           pool_volume_change=last.pool_volume_change,
-                           tip_radial_stress_kPa=last.tip_radial_stress_kPa)
+                row.update(
+                    last_concentration_mEq_l=last.concentration_mEq_l,
+                    pool_volume_change=last.pool_volume_change,
+                    tip_radial_stress_kPa=last.tip_radial_stress_kPa,
+                )
             row.update(no_equilibrium_at_mEq_l=failed_at, seconds=time.time() - t0)
             rows.append(row)
             print(pd.DataFrame(rows[-1:]).round(3).to_string(index=False, header=len(rows) == 1), flush=True)

@@ -69,7 +69,7 @@ def pattern_regex(pattern: str) -> re.Pattern:
     name = Path(pattern).name
     parts, last = [], 0
     for m in WILDCARD.finditer(name):
-        parts += [re.escape(name[last:m.start()]), r"[^/]+?"]
+        parts += [re.escape(name[last : m.start()]), r"[^/]+?"]
         last = m.end()
     parts.append(re.escape(name[last:]))
     return re.compile("".join(parts) + r"\Z")
@@ -115,16 +115,36 @@ def main(argv=None) -> int:
 
     rules = declared_rules(args.rules)
     meas = measured(rules, args.benchmarks)
-    header = ["rule", "jobs", "max s", "max_rss MB", "threads", "runtime min", "mem_mb", "runtime/s", "mem/rss",
-              "suggested"]
+    header = [
+        "rule",
+        "jobs",
+        "max s",
+        "max_rss MB",
+        "threads",
+        "runtime min",
+        "mem_mb",
+        "runtime/s",
+        "mem/rss",
+        "suggested",
+    ]
     rows, low = [], []
     for name, r in rules.items():
         res, m = r["resources"], meas.get(name)
         if m is None and not res:
             continue  # no measurement, no declaration: the profile's default-resources
         runtime, mem = res.get("runtime"), res.get("mem_mb")
-        row = [name, "-", "-", "-", str(r.get("threads", "-")), str(runtime or "default"), str(mem or "default"),
-               "-", "-", "-"]
+        row = [
+            name,
+            "-",
+            "-",
+            "-",
+            str(r.get("threads", "-")),
+            str(runtime or "default"),
+            str(mem or "default"),
+            "-",
+            "-",
+            "-",
+        ]
         if m is not None:
             row[1:4] = [str(m["jobs"]), f"{m['s']:.1f}", f"{m['max_rss']:.0f}"]
             if runtime:

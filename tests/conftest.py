@@ -15,8 +15,12 @@ ROOT = Path(__file__).resolve().parents[1]
 
 def project_copy(dest):
     """The project's files (git-tracked, and new files git does not ignore) in ``dest``, without results."""
-    files = subprocess.run(["git", "ls-files", "-z", "--cached", "--others", "--exclude-standard"], cwd=ROOT,
-                           capture_output=True, text=True)
+    files = subprocess.run(
+        ["git", "ls-files", "-z", "--cached", "--others", "--exclude-standard"],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+    )
     if files.returncode == 0:
         for name in filter(None, files.stdout.split("\0")):
             src = ROOT / name
@@ -24,8 +28,14 @@ def project_copy(dest):
                 (dest / name).parent.mkdir(parents=True, exist_ok=True)
                 shutil.copy2(src, dest / name)
     else:  # not a git checkout
-        shutil.copytree(ROOT, dest, dirs_exist_ok=True, ignore=shutil.ignore_patterns(
-            ".git", ".snakemake", "results", "logs", "figures", "__pycache__", "*.egg-info", ".pytest_cache"))
+        shutil.copytree(
+            ROOT,
+            dest,
+            dirs_exist_ok=True,
+            ignore=shutil.ignore_patterns(
+                ".git", ".snakemake", "results", "logs", "figures", "__pycache__", "*.egg-info", ".pytest_cache"
+            ),
+        )
     return dest
 
 

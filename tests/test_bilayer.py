@@ -82,8 +82,9 @@ def sweeps(ci):
     out = {}
     for label in ("passive", "active"):
         tube = artery.bilayer_tube(cfg["bilayer"], active=label == "active")
-        out[label] = protocols.bilayer_pressure_diameter(model, tube, h.state, cfg["numerics"], cal,
-                                                         active=label == "active", label=label)
+        out[label] = protocols.bilayer_pressure_diameter(
+            model, tube, h.state, cfg["numerics"], cal, active=label == "active", label=label
+        )
     return out
 
 

@@ -81,17 +81,20 @@ def test_all_problems_are_reported_at_once(full_config):
 # -- inputs a schema alone lets through (issue 10) ----------------------------------------------------------------
 
 
-@pytest.mark.parametrize("path, value, expected", [
-    (("bilayer", "inner_radius_um"), float("nan"), "bilayer.inner_radius_um = nan is not a finite number"),
-    (("mean", "shear_modulus_kPa"), float("inf"), "mean.shear_modulus_kPa = inf is not a finite number"),
-    (("numerics", "tolerance"), float("nan"), "numerics.tolerance = nan is not a finite number"),
-    (("numerics", "max_newton_iterations"), 30.0, "numerics.max_newton_iterations = 30.0 is invalid"),
-    (("numerics", "reuse_factorisation"), 1, "numerics.reuse_factorisation = 1 is invalid"),
-    (("numerics", "tolerance"), "1e-4", "write 1.0e-4"),
-    (("swelling", "pressures_mmHg"), [103.0, 103.0], "swelling.pressures_mmHg = [103.0, 103.0] is invalid"),
-    (("swelling", "cases", "I", "angular_extent_deg"), 0, "swelling.cases.I.angular_extent_deg = 0 is invalid"),
-    (("bilayer_calibration", "state_pressures_mmHg"), [103.0, 103.0000001, 200.0], "all give the file name '103'"),
-])
+@pytest.mark.parametrize(
+    "path, value, expected",
+    [
+        (("bilayer", "inner_radius_um"), float("nan"), "bilayer.inner_radius_um = nan is not a finite number"),
+        (("mean", "shear_modulus_kPa"), float("inf"), "mean.shear_modulus_kPa = inf is not a finite number"),
+        (("numerics", "tolerance"), float("nan"), "numerics.tolerance = nan is not a finite number"),
+        (("numerics", "max_newton_iterations"), 30.0, "numerics.max_newton_iterations = 30.0 is invalid"),
+        (("numerics", "reuse_factorisation"), 1, "numerics.reuse_factorisation = 1 is invalid"),
+        (("numerics", "tolerance"), "1e-4", "write 1.0e-4"),
+        (("swelling", "pressures_mmHg"), [103.0, 103.0], "swelling.pressures_mmHg = [103.0, 103.0] is invalid"),
+        (("swelling", "cases", "I", "angular_extent_deg"), 0, "swelling.cases.I.angular_extent_deg = 0 is invalid"),
+        (("bilayer_calibration", "state_pressures_mmHg"), [103.0, 103.0000001, 200.0], "all give the file name '103'"),
+    ],
+)
 def test_inputs_the_schema_alone_misses_are_rejected_by_name(ci_config, path, value, expected):
     assert expected in bad(ci_config, path, value)
 

@@ -11,12 +11,10 @@ missing and unknown keys, pools moved outside the media.
 import copy
 import math
 
-import pytest
+import numpy as np
 import yaml
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-
-import numpy as np
 
 from sphgag import artery, config
 from sphgag.loading import Load
@@ -48,12 +46,20 @@ def leaves(node, path=()):
 
 PATHS = sorted(leaves(BASE), key=str)
 SCHEMA_DICT = config.load_yaml(SCHEMA)
-NUMBERS = [p for p in PATHS if not any("dx" in str(k) for k in p)
-           and type(eval_leaf(BASE, p)) in (int, float)]
+NUMBERS = [p for p in PATHS if not any("dx" in str(k) for k in p) and type(eval_leaf(BASE, p)) in (int, float)]
 MAPPINGS = sorted({p[:-1] for p in PATHS if p and isinstance(p[-1], str)}, key=str)
-ODD = st.one_of(st.just(float("nan")), st.just(float("inf")), st.just(-float("inf")), st.just("text"), st.just(None),
-                st.just([1, 2]), st.just({"a": 1}), st.booleans(), st.integers(-10**6, 10**6),
-                st.floats(-1e9, 1e9, allow_nan=False))
+ODD = st.one_of(
+    st.just(float("nan")),
+    st.just(float("inf")),
+    st.just(-float("inf")),
+    st.just("text"),
+    st.just(None),
+    st.just([1, 2]),
+    st.just({"a": 1}),
+    st.booleans(),
+    st.integers(-(10**6), 10**6),
+    st.floats(-1e9, 1e9, allow_nan=False),
+)
 
 
 def get(cfg, path):
@@ -117,13 +123,19 @@ def test_a_mutated_config_is_rejected_by_name_or_really_valid(case):
     for p in leaves(cfg):
         v = get(cfg, p)
         assert not (isinstance(v, float) and not math.isfinite(v)), p
+
     def particles(r_in, r_out, dx):
-        return 0.25 * np.pi * (r_out ** 2 - r_in ** 2) / dx ** 2
+        return 0.25 * np.pi * (r_out**2 - r_in**2) / dx**2
 
     b, m = cfg["bilayer"], cfg["mean"]
     outer = b["inner_radius_um"] + b["media_thickness_um"] + b["adventitia_thickness_um"]
-    if max(particles(b["inner_radius_um"], outer, b["dx_um"]),
-           particles(m["inner_radius_um"], m["outer_radius_um"], m["dx_um"])) > 20000:
+    if (
+        max(
+            particles(b["inner_radius_um"], outer, b["dx_um"]),
+            particles(m["inner_radius_um"], m["outer_radius_um"], m["dx_um"]),
+        )
+        > 20000
+    ):
         TRIED["too_large"] += 1  # valid, but too big to build in a unit test
         return
     for case in cfg["swelling"]["cases"].values():  # each pool is its own run
@@ -133,5 +145,7 @@ def test_a_mutated_config_is_rejected_by_name_or_really_valid(case):
 
 
 def teardown_module():
-    print(f"\nconfig fuzz: {TRIED['mutations']} mutations, {TRIED['rejected']} rejected by name, "
-          f"{TRIED['accepted']} accepted ({TRIED['too_large']} too large to build here, the rest built)")
+    print(
+        f"\nconfig fuzz: {TRIED['mutations']} mutations, {TRIED['rejected']} rejected by name, "
+        f"{TRIED['accepted']} accepted ({TRIED['too_large']} too large to build here, the rest built)"
+    )

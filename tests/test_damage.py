@@ -68,6 +68,7 @@ def test_damaged_stress_and_tangent_are_one_minus_d_times_the_intact_ones(D):
         mt.tangent_modulus(F[0, 0], F[0, 1], F[1, 0], F[1, 1], 1.1, c, s, weak, 0, Cw, Aw)
         assert np.allclose(Aw, (1.0 - D) * A, rtol=1e-12, atol=1e-12)
         cl = mt.local_deformation(F[0, 0], F[0, 1], F[1, 0], F[1, 1], c, s)[4:]
-        assert mt.strain_energy(*cl, 1.1, weak, 0) == pytest.approx((1.0 - D) * mt.strain_energy(*cl, 1.1, intact, 0),
-                                                                    rel=1e-12, abs=1e-12)
+        assert mt.strain_energy(*cl, 1.1, weak, 0) == pytest.approx(
+            (1.0 - D) * mt.strain_energy(*cl, 1.1, intact, 0), rel=1e-12, abs=1e-12
+        )
     assert weak[0, mt.HG_E] == intact[0, mt.HG_E]

@@ -31,8 +31,7 @@ def settings(ci_config, **changes):
 
 def grow(ci_config, wall, sectors, st, **kwargs):
     model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-grow")
-    result = delamination.grow(model, wall, sectors, st, ci_config["numerics"], ci_config["gag"], model.props,
-                               **kwargs)
+    result = delamination.grow(model, wall, sectors, st, ci_config["numerics"], ci_config["gag"], model.props, **kwargs)
     return model, result
 
 
@@ -113,8 +112,13 @@ def test_a_huge_critical_stress_gives_no_growth_and_the_swelling_state(ci_config
     # the same equilibrium as the figure 4 protocol at the highest concentration
     sw = dict(ci_config["swelling"], concentration_points=4, max_concentration_mEq_l=st.max_concentration_mEq_l)
     seeded = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], pool=pool, gag=ci_config["gag"])
-    table = protocols.pool_table(seeded, protocols.swell_pool(seeded, wall, ci_config["numerics"], sw), pool,
-                                 sw["probe_length_um"], ci_config["gag"])
+    table = protocols.pool_table(
+        seeded,
+        protocols.swell_pool(seeded, wall, ci_config["numerics"], sw),
+        pool,
+        sw["probe_length_um"],
+        ci_config["gag"],
+    )
     final, hist = result.final
     members = np.flatnonzero(hist.gag)
     ours = protocols.pool_measurements(model, final.evaluation, pool, members, sw["probe_length_um"])

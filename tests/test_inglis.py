@@ -119,8 +119,12 @@ def test_displacement_single_valued_and_decays(ratio):
     a, b = A, A / ratio
     # continuity across the axes (where sqrt(z^2 - 4 R^2 m) changes branch)
     eps = 1e-9 * a
-    for x0, y0, dxv, dyv in ((0.0, 2.0 * b, eps, 0.0), (0.0, -1.5 * b, eps, 0.0),
-                             (-2.0 * a, 0.0, 0.0, eps), (1.2 * a, 0.0, 0.0, eps)):
+    for x0, y0, dxv, dyv in (
+        (0.0, 2.0 * b, eps, 0.0),
+        (0.0, -1.5 * b, eps, 0.0),
+        (-2.0 * a, 0.0, 0.0, eps),
+        (1.2 * a, 0.0, 0.0, eps),
+    ):
         f1 = inglis.field(np.array([x0 + dxv]), np.array([y0 + dyv]), a, b, P, MU, NU)
         f2 = inglis.field(np.array([x0 - dxv]), np.array([y0 - dyv]), a, b, P, MU, NU)
         for k in ("ux", "uy", "sxx", "syy", "sxy"):

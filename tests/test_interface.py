@@ -109,6 +109,7 @@ def test_ellipse_layout_volumes_and_interface(ratio):
     gaps = np.linalg.norm(np.diff(lay.X[ring], axis=0), axis=1)
     assert np.all((gaps > 0.8 * dx) & (gaps < 1.25 * dx))
 
+
 MATRIX = dict(shear_modulus_kPa=89.71, lame_lambda_kPa=10000.0, hourglass_modulus_kPa=89.71)
 GAG = dict(shear_modulus_kPa=0.1, hourglass_modulus_kPa=89.71)
 
@@ -161,7 +162,9 @@ def test_without_the_interface_treatment_the_interface_rings(ci_config):
     scheme) violates traction continuity by more than Pi: the check above can fail."""
     vp = ci_config["verification"]["pool"]
     mat = inclusion.Materials(89.71, 10000.0, 0.1, 0.0, 89.71, 89.71)
-    model = inclusion.inclusion_model(15.0, 15.0, 15.0 / 8, 45.0, mat, dict(ci_config["numerics"], hourglass_alpha=50.0))
+    model = inclusion.inclusion_model(
+        15.0, 15.0, 15.0 / 8, 45.0, mat, dict(ci_config["numerics"], hourglass_alpha=50.0)
+    )
     material = model.props
     material.table[:, materials.TISSUE] = 1.0
     state = inclusion.swell(model, vp["swelling_pressure_kPa"], ci_config["numerics"])

@@ -103,7 +103,6 @@ def test_tangent_is_the_derivative_of_the_stress(name):
 
 
 def test_both_sides_of_the_tension_compression_switch_are_exercised():
-    p = mixture_props()
     I4_circ = []
     for _ in range(50):
         F = random_F(0.25)
@@ -151,7 +150,8 @@ def test_gag_cauchy_stress_is_eq_2_27():
 
 
 def test_diluting_gag_pressure_is_eq_2_26_at_the_current_concentration():
-    """sigma = -PI(c0 / J) I (+ the small neo-Hookean and bulk terms, removed here): J = 1 gives PI(c0), J = 2 PI(c0/2)."""
+    """sigma = -PI(c0 / J) I (+ the small neo-Hookean and bulk terms, removed here):
+    J = 1 gives PI(c0), J = 2 PI(c0/2)."""
     p = diluting_gag_props()
     p[:, mt.MU] = p[:, mt.LAM] = 0.0
     for J, c in ((1.0, 150.0), (2.0, 75.0), (0.8, 187.5)):

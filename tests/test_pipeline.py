@@ -20,43 +20,137 @@ pytestmark = pytest.mark.pipeline
 
 CONTRACT = {
     "results/calibration/mean_pressure_diameter.csv": [
-        "pressure_mmHg", "outer_diameter_um", "inner_diameter_um", "mean_circ_stress_kPa", "mean_circ_stretch",
-        "residual"],
+        "pressure_mmHg",
+        "outer_diameter_um",
+        "inner_diameter_um",
+        "mean_circ_stress_kPa",
+        "mean_circ_stretch",
+        "residual",
+    ],
     "results/calibration/transmural.csv": [
-        "model", "pressure_mmHg", "radius_um", "layer", "radial_stress_kPa", "circ_stress_kPa"],
+        "model",
+        "pressure_mmHg",
+        "radius_um",
+        "layer",
+        "radial_stress_kPa",
+        "circ_stress_kPa",
+    ],
     "results/calibration/bilayer_pressure_diameter.csv": [
-        "model", "pressure_mmHg", "outer_diameter_um", "inner_diameter_um", "residual"],
+        "model",
+        "pressure_mmHg",
+        "outer_diameter_um",
+        "inner_diameter_um",
+        "residual",
+    ],
     "results/homeostasis/summary.csv": [
-        "model", "carried_pressure_mmHg", "inner_radius_um", "outer_radius_um", "residual"],
+        "model",
+        "carried_pressure_mmHg",
+        "inner_radius_um",
+        "outer_radius_um",
+        "residual",
+    ],
     "results/swelling/tip_stress.csv": [
-        "model", "case", "pressure_mmHg", "stage", "concentration_mEq_l", "swelling_pressure_kPa",
-        "tip_radial_stress_kPa", "top_circ_stress_kPa", "residual"],
+        "model",
+        "case",
+        "pressure_mmHg",
+        "stage",
+        "concentration_mEq_l",
+        "swelling_pressure_kPa",
+        "tip_radial_stress_kPa",
+        "top_circ_stress_kPa",
+        "residual",
+    ],
     "results/claims.csv": ["claim_id", "statement", "paper_value", "our_value", "holds"],
     "results/verification/elliptic_pool.csv": [
-        "dx_um", "semi_axis_a_um", "semi_axis_b_um", "pressure_kPa", "tip_stress_kPa", "reference_kPa", "rel_error",
-        "traction_jump_kPa", "residual"],
+        "dx_um",
+        "semi_axis_a_um",
+        "semi_axis_b_um",
+        "pressure_kPa",
+        "tip_stress_kPa",
+        "reference_kPa",
+        "rel_error",
+        "traction_jump_kPa",
+        "residual",
+    ],
     "results/swelling/convergence.csv": [
-        "dx_um", "particles", "case", "concentration_mEq_l", "tip_radial_stress_kPa", "tip_peak_radial_stress_kPa",
-        "top_circ_stress_kPa", "pool_volume_change", "residual"],
+        "dx_um",
+        "particles",
+        "case",
+        "concentration_mEq_l",
+        "tip_radial_stress_kPa",
+        "tip_peak_radial_stress_kPa",
+        "top_circ_stress_kPa",
+        "pool_volume_change",
+        "residual",
+    ],
     "results/delamination/growth.csv": [
-        "case", "sigma_cr_kPa", "criterion", "dx_um", "step", "pseudo_time", "concentration_mEq_l",
-        "converted_particles", "converted_interior", "converted_exterior", "delaminated_length_um",
-        "tip_radial_stress_kPa", "residual"],
+        "case",
+        "sigma_cr_kPa",
+        "criterion",
+        "dx_um",
+        "step",
+        "pseudo_time",
+        "concentration_mEq_l",
+        "converted_particles",
+        "converted_interior",
+        "converted_exterior",
+        "delaminated_length_um",
+        "tip_radial_stress_kPa",
+        "residual",
+    ],
     "results/delamination/summary.csv": [
-        "case", "sigma_cr_kPa", "criterion", "dx_um", "onset_concentration_mEq_l", "final_length_um",
-        "growth_rate_um_per_pseudo_time", "growth_rate_um_per_mEq_l", "merged", "merge_step",
-        "dissipated_energy_J_m2", "max_residual"],
+        "case",
+        "sigma_cr_kPa",
+        "criterion",
+        "dx_um",
+        "onset_concentration_mEq_l",
+        "final_length_um",
+        "growth_rate_um_per_pseudo_time",
+        "growth_rate_um_per_mEq_l",
+        "merged",
+        "merge_step",
+        "dissipated_energy_J_m2",
+        "max_residual",
+    ],
     "results/delamination/convergence.csv": [
-        "case", "sigma_cr_kPa", "criterion", "dx_um", "onset_concentration_mEq_l", "final_length_um", "max_residual"],
+        "case",
+        "sigma_cr_kPa",
+        "criterion",
+        "dx_um",
+        "onset_concentration_mEq_l",
+        "final_length_um",
+        "max_residual",
+    ],
 }
-FIGURES = [f"figures/{name}.{ext}" for name in ("fig1", "fig3a_mean", "fig3b", "fig3", "fig4", "verification_pool",
-                                               "swelling_convergence", "fig5", "fig6", "fig7") for ext in ("pdf", "png")]
+FIGURES = [
+    f"figures/{name}.{ext}"
+    for name in (
+        "fig1",
+        "fig3a_mean",
+        "fig3b",
+        "fig3",
+        "fig4",
+        "verification_pool",
+        "swelling_convergence",
+        "fig5",
+        "fig6",
+        "fig7",
+    )
+    for ext in ("pdf", "png")
+]
 
 # the tables of snakemake --report besides the figures' PNGs (report() in workflow/rules/*.smk)
-REPORT_TABLES = ["results/claims.csv", "results/calibration/mean_pressure_diameter.csv",
-                 "results/homeostasis/summary.csv", "results/swelling/tip_stress.csv",
-                 "results/swelling/convergence.csv", "results/verification/elliptic_pool.csv",
-                 "results/delamination/summary.csv", "results/delamination/convergence.csv"]
+REPORT_TABLES = [
+    "results/claims.csv",
+    "results/calibration/mean_pressure_diameter.csv",
+    "results/homeostasis/summary.csv",
+    "results/swelling/tip_stress.csv",
+    "results/swelling/convergence.csv",
+    "results/verification/elliptic_pool.csv",
+    "results/delamination/summary.csv",
+    "results/delamination/convergence.csv",
+]
+
 
 def snakemake(project, *args, configfile="config/ci.yaml", env=None):
     """``snakemake *args --configfile X --cores 2`` run in ``project`` (a copy of the project root), as a user
@@ -96,20 +190,30 @@ def test_outputs_follow_the_data_contracts(workdir, ci_config):
         table = pd.read_csv(workdir / path)
         assert set(columns) <= set(table.columns), path
         assert len(table) > 0
-    for table in ("calibration/mean_pressure_diameter.csv", "calibration/bilayer_pressure_diameter.csv",
-                  "homeostasis/summary.csv", "swelling/tip_stress.csv", "swelling/convergence.csv",
-                  "verification/elliptic_pool.csv"):
+    for table in (
+        "calibration/mean_pressure_diameter.csv",
+        "calibration/bilayer_pressure_diameter.csv",
+        "homeostasis/summary.csv",
+        "swelling/tip_stress.csv",
+        "swelling/convergence.csv",
+        "verification/elliptic_pool.csv",
+    ):
         states = pd.read_csv(workdir / "results" / table)
         assert (states.residual < ci_config["numerics"]["tolerance"]).all(), table
     for table in ("delamination/summary.csv", "delamination/convergence.csv"):
         assert (pd.read_csv(workdir / "results" / table).max_residual < ci_config["numerics"]["tolerance"]).all()
-    assert (pd.read_csv(workdir / "results/delamination/growth.csv").residual < ci_config["numerics"]["tolerance"]).all()
+    assert (
+        pd.read_csv(workdir / "results/delamination/growth.csv").residual < ci_config["numerics"]["tolerance"]
+    ).all()
     de = ci_config["delamination"]
     summary = pd.read_csv(workdir / "results/delamination/summary.csv")
     assert set(summary.case) == set(de["pool_sets"]) and set(summary.criterion) == set(de["criteria"])
     transmural = pd.read_csv(workdir / "results/calibration/transmural.csv")
     assert set(transmural.model) == {"mean", "passive", "active"}
-    assert set(pd.read_csv(workdir / "results/calibration/bilayer_pressure_diameter.csv").model) == {"passive", "active"}
+    assert set(pd.read_csv(workdir / "results/calibration/bilayer_pressure_diameter.csv").model) == {
+        "passive",
+        "active",
+    }
     tips = pd.read_csv(workdir / "results/swelling/tip_stress.csv")
     sw = ci_config["swelling"]
     runs = tips.groupby(["model", "case", "pressure_mmHg"])
@@ -243,10 +347,23 @@ def test_a_warm_numba_cache_gives_the_bytes_of_a_cold_one(workdir, numba_cache, 
     (cold cache); these jobs, rerun in a copy of it, load them all from that cache (warm)."""
     warm = tmp_path / "warm"
     shutil.copytree(workdir, warm, symlinks=True)
-    targets = ["results/calibration/mean_pressure_diameter.csv", "results/homeostasis/summary.csv",
-               "results/swelling/runs/passive_I_103mmHg.csv", "results/delamination/runs/single_30kPa_particle_growth.csv"]
-    run = snakemake(warm, *targets, "--forcerun", "calibrate_mean", "homeostasis", "swell", "pool_stresses",
-                    "delaminate", env=dict(NUMBA_CACHE_DIR=str(numba_cache)))
+    targets = [
+        "results/calibration/mean_pressure_diameter.csv",
+        "results/homeostasis/summary.csv",
+        "results/swelling/runs/passive_I_103mmHg.csv",
+        "results/delamination/runs/single_30kPa_particle_growth.csv",
+    ]
+    run = snakemake(
+        warm,
+        *targets,
+        "--forcerun",
+        "calibrate_mean",
+        "homeostasis",
+        "swell",
+        "pool_stresses",
+        "delaminate",
+        env=dict(NUMBA_CACHE_DIR=str(numba_cache)),
+    )
     assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
     assert "calibrate_mean" in planned_jobs(run.stdout + run.stderr)
     for target in targets:
@@ -267,16 +384,27 @@ def test_a_later_rule_refuses_a_state_from_another_configuration(workdir, ci_con
     edited = edited_config(tmp_path, ci_config, "bilayer", "dx_um", 7.0)
     copy_dir = tmp_path / "copy"
     shutil.copytree(workdir, copy_dir)
-    run = snakemake(copy_dir, "results/calibration/bilayer_passive.csv", "--forcerun", "bilayer_pressure_diameter",
-                    "--rerun-triggers", "mtime", configfile=edited)
+    run = snakemake(
+        copy_dir,
+        "results/calibration/bilayer_passive.csv",
+        "--forcerun",
+        "bilayer_pressure_diameter",
+        "--rerun-triggers",
+        "mtime",
+        configfile=edited,
+    )
     assert run.returncode != 0
     log = (copy_dir / "logs/bilayer_pressure_diameter_passive.log").read_text()
     assert "StateMismatch" in log and "bilayer.dx_um: expected 7.0, file has 6.0" in log
 
 
 def test_lint_is_clean():
-    run = subprocess.run([sys.executable, "-m", "snakemake", "--snakefile", str(ROOT / "Snakefile"), "--lint"],
-                         capture_output=True, text=True, cwd=ROOT)
+    run = subprocess.run(
+        [sys.executable, "-m", "snakemake", "--snakefile", str(ROOT / "Snakefile"), "--lint"],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+    )
     assert "Congratulations" in run.stdout + run.stderr, run.stdout[-2000:]
 
 
@@ -301,8 +429,9 @@ def test_a_configfile_stands_alone(fresh_copy, ci_config):
     assert swell and int(swell[0].split()[-1]) == expected, swell
     run, out = plan(fresh_copy)  # no --configfile: the full study
     full = yaml.safe_load((ROOT / "config/config.yaml").read_text())["swelling"]
-    assert f"swell {len(full['models']) * len(full['cases']) * len(full['pressures_mmHg'])}".split() in \
-        [line.split() for line in out.splitlines()]
+    assert f"swell {len(full['models']) * len(full['cases']) * len(full['pressures_mmHg'])}".split() in [
+        line.split() for line in out.splitlines()
+    ]
 
 
 def test_a_config_missing_a_section_is_rejected_naming_it(fresh_copy, ci_config, tmp_path):

@@ -140,8 +140,9 @@ def slurm(tmp_path_factory, request):
                 subprocess.run([which("scancel"), *ids], env=env, capture_output=True)
                 deadline = time.time() + 30
                 while time.time() < deadline:
-                    active = subprocess.run([which("squeue"), "-h", "-t", "PD,R,CG", "-o", "%i"], env=env,
-                                            capture_output=True, text=True).stdout.split()
+                    active = subprocess.run(
+                        [which("squeue"), "-h", "-t", "PD,R,CG", "-o", "%i"], env=env, capture_output=True, text=True
+                    ).stdout.split()
                     if not active:
                         break
                     time.sleep(1)
@@ -159,15 +160,25 @@ def slurm(tmp_path_factory, request):
 
     def start(name, *args):
         log = open(tmp / f"{name}.out", "w")
-        procs.append(subprocess.Popen([which(name), *args], env=env, stdout=log, stderr=subprocess.STDOUT,
-                                      stdin=subprocess.DEVNULL))
+        procs.append(
+            subprocess.Popen(
+                [which(name), *args], env=env, stdout=log, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL
+            )
+        )
         log.close()
 
     key = tmp / "munge.key"
     key.write_bytes(os.urandom(1024))
     key.chmod(0o600)
-    start("munged", "--foreground", f"--key-file={key}", f"--socket={sock}",
-          f"--pid-file={tmp}/munged.pid", f"--log-file={tmp}/munged.log", f"--seed-file={tmp}/munged.seed")
+    start(
+        "munged",
+        "--foreground",
+        f"--key-file={key}",
+        f"--socket={sock}",
+        f"--pid-file={tmp}/munged.pid",
+        f"--log-file={tmp}/munged.log",
+        f"--seed-file={tmp}/munged.seed",
+    )
     wait_for(sock.exists, 20, "munged", tmp / "munged.out", procs)
     start("slurmctld", "-D", "-f", str(conf))
     start("slurmd", "-D", "-f", str(conf))
@@ -222,9 +233,19 @@ def runs(slurm, tmp_path_factory):
     try:
         # first status check 2 s after a submission (the plugin's default of 40 s suits a busy cluster, not a test)
         run_cluster = subprocess.run(
-            snakemake_cmd("--profile", "profiles/slurm", "--slurm-keep-successful-logs",
-                          "--slurm-init-seconds-before-status-checks", "2"),
-            cwd=cluster, env=slurm, capture_output=True, text=True, timeout=900)
+            snakemake_cmd(
+                "--profile",
+                "profiles/slurm",
+                "--slurm-keep-successful-logs",
+                "--slurm-init-seconds-before-status-checks",
+                "2",
+            ),
+            cwd=cluster,
+            env=slurm,
+            capture_output=True,
+            text=True,
+            timeout=900,
+        )
         t1 = time.time()
         waiter.join(timeout=900)
     finally:
@@ -245,8 +266,9 @@ def test_the_jobs_ran_as_slurm_jobs(runs, slurm):
     assert steps, out[-2000:]
     # every job but the target rule `all` (no action, run by Snakemake itself) went to Slurm
     assert len({slurm_id for _, slurm_id, _ in submitted}) == int(steps[-1][1]) - 1
-    states = subprocess.run(["squeue", "-h", "--states=all", "-o", "%i|%T"], env=slurm, capture_output=True,
-                            text=True).stdout
+    states = subprocess.run(
+        ["squeue", "-h", "--states=all", "-o", "%i|%T"], env=slurm, capture_output=True, text=True
+    ).stdout
     state = dict(line.split("|") for line in states.split())
     for _, slurm_id, log in submitted:
         assert state.get(slurm_id) == "COMPLETED", (slurm_id, states)
@@ -259,7 +281,10 @@ def test_slurm_and_local_runs_give_the_same_tables(runs):
     local, cluster, _ = runs
     names = sorted(p.relative_to(local).as_posix() for p in (local / "results").rglob("*.csv"))
     assert names and names == sorted(p.relative_to(cluster).as_posix() for p in (cluster / "results").rglob("*.csv"))
-    failures = [f"{name}: {differences(local / name, cluster / name)}" for name in names
-                if (local / name).read_bytes() != (cluster / name).read_bytes()]
+    failures = [
+        f"{name}: {differences(local / name, cluster / name)}"
+        for name in names
+        if (local / name).read_bytes() != (cluster / name).read_bytes()
+    ]
     print(f"\n{len(names) - len(failures)} of {len(names)} result tables byte-identical")
     assert not failures, failures

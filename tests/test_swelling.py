@@ -44,8 +44,9 @@ def test_converted_unswollen_pool_in_an_unloaded_wall_is_in_equilibrium(ci_confi
     sector = artery.pool_sector(ci_config["swelling"]["cases"]["IV"])
     model = pool_model(ci_config, sector)
     assert model.props.converting.size > 0
-    load = Load(1.0, 0.0, material=(("activation", 0.0), ("concentration", 0.0), ("transition", 1.0),
-                                    ("prestretch", 0.0)))
+    load = Load(
+        1.0, 0.0, material=(("activation", 0.0), ("concentration", 0.0), ("transition", 1.0), ("prestretch", 0.0))
+    )
     x, ev, conv = solver.newton(model, model.layout.X, load, tol=1e-6)
     assert conv.iterations == 0
     assert np.abs(ev.f_int).max() < 1e-9
@@ -62,7 +63,9 @@ def pressurised(ci_config):
 
 def swell(cfg, start, sector):
     model = pool_model(cfg, sector)
-    states = protocols.swell_pool(model, solver.State(start.load, start.x, None, None), cfg["numerics"], cfg["swelling"])
+    states = protocols.swell_pool(
+        model, solver.State(start.load, start.x, None, None), cfg["numerics"], cfg["swelling"]
+    )
     table = protocols.pool_table(model, states, sector, cfg["swelling"]["probe_length_um"], cfg["gag"])
     return model, table
 
@@ -100,13 +103,26 @@ def test_refining_changes_the_pool_state_at_150_mEq_l_by_less_than_the_measured_
     45 kPa and 30 %. (The full study's bar, < 10 % between its two finest spacings, is in the README.)"""
     sc = ci_config["swelling_convergence"]
     cases = {c: ci_config["swelling"]["cases"][c] for c in sc["cases"]}
-    table = pd.concat([convergence.study(dx, ci_config["bilayer"], ci_config["numerics"], ci_config["homeostasis"],
-                                         ci_config["swelling"], ci_config["gag"], cases, sc["pressure_mmHg"])
-                       for dx in sc["dx_um"]], ignore_index=True)
-    assert list(table.columns[:len(convergence.COLUMNS)]) == convergence.COLUMNS
+    table = pd.concat(
+        [
+            convergence.study(
+                dx,
+                ci_config["bilayer"],
+                ci_config["numerics"],
+                ci_config["homeostasis"],
+                ci_config["swelling"],
+                ci_config["gag"],
+                cases,
+                sc["pressure_mmHg"],
+            )
+            for dx in sc["dx_um"]
+        ],
+        ignore_index=True,
+    )
+    assert list(table.columns[: len(convergence.COLUMNS)]) == convergence.COLUMNS
     assert (table.residual < ci_config["numerics"]["tolerance"]).all()
     last = table[table.concentration_mEq_l == ci_config["swelling"]["max_concentration_mEq_l"]]
-    for case, g in last.groupby("case"):
+    for _, g in last.groupby("case"):
         tip, dv = g.set_index("dx_um").tip_radial_stress_kPa, g.set_index("dx_um").pool_volume_change
         assert abs(tip[8.0] - tip[6.0]) < 45.0
         assert abs(dv[8.0] - dv[6.0]) < 0.30 * dv[6.0]

@@ -106,8 +106,15 @@ def test_inversion_is_reported_with_the_run_name(coarse_mean_model):
 
 def test_no_convergence_is_reported_with_the_run_name(coarse_mean_model):
     with pytest.raises(solver.NotConverged, match=r"\[named-run\].*P=200 mmHg"):
-        solver.follow_path(coarse_mean_model, coarse_mean_model.layout.X, Load(1.0, 0.0),
-                           [Load(1.62, 200 * MMHG_TO_KPA)], max_iter=2, max_bisections=0, run="named-run")
+        solver.follow_path(
+            coarse_mean_model,
+            coarse_mean_model.layout.X,
+            Load(1.0, 0.0),
+            [Load(1.62, 200 * MMHG_TO_KPA)],
+            max_iter=2,
+            max_bisections=0,
+            run="named-run",
+        )
 
 
 def test_nan_is_reported(coarse_mean_model):

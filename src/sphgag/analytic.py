@@ -174,5 +174,6 @@ class ThickWallTube:
             stt_all.append(srr + law.hoop_minus_radial(r / R, self.lz))
             names += [name] * n_per_layer
         r = np.concatenate(R_all)
-        return ThickWallState(P, r_in, float(r[-1]), r, np.concatenate(srr_all), np.concatenate(stt_all),
-                              np.array(names))
+        return ThickWallState(
+            P, r_in, float(r[-1]), r, np.concatenate(srr_all), np.concatenate(stt_all), np.array(names)
+        )

@@ -70,13 +70,23 @@ def bilayer_families(p: dict, layer: str):
     a0 = col["angle_deg"]
 
     def collagen(phi, alpha):
-        return analytic.Family(phi, alpha, col["c1_kPa"], col["c2"], col["c1_compression_kPa"],
-                               col["c2_compression"], pre["collagen"])
+        return analytic.Family(
+            phi, alpha, col["c1_kPa"], col["c2"], col["c1_compression_kPa"], col["c2_compression"], pre["collagen"]
+        )
 
     fams = []
     if layer == "media":
-        fams.append(analytic.Family(frac["smc"], 90.0, smc["c1_kPa"], smc["c2"], smc["c1_compression_kPa"],
-                                    smc["c2_compression"], pre["smc"]))
+        fams.append(
+            analytic.Family(
+                frac["smc"],
+                90.0,
+                smc["c1_kPa"],
+                smc["c2"],
+                smc["c1_compression_kPa"],
+                smc["c2_compression"],
+                pre["smc"],
+            )
+        )
     else:
         fams.append(collagen(frac["collagen"] * beta["circumferential"], 90.0))
     fams.append(collagen(frac["collagen"] * beta["axial"], 0.0))
@@ -99,17 +109,25 @@ def bilayer_law(p: dict, layer: str, active: bool) -> analytic.Mixture:
     act = p["active"]
     return analytic.Mixture(
         mu=p["mass_fractions"][layer]["elastin"] * p["elastin_shear_modulus_kPa"],
-        families=bilayer_families(p, layer), Gr=gr, Gt=gt,
+        families=bilayer_families(p, layer),
+        Gr=gr,
+        Gt=gt,
         tmax=act["max_stress_kPa"] if (active and layer == "media") else 0.0,
-        lmax=act["stretch_max"], lmin=act["stretch_min"],
+        lmax=act["stretch_max"],
+        lmin=act["stretch_min"],
     )
 
 
 def bilayer_tube(p: dict, active: bool) -> analytic.ThickWallTube:
     """Semi-analytical incompressible bi-layered tube (same constituents and pre-stretches)."""
     r0, rb, r1 = bilayer_interfaces(p)
-    return analytic.ThickWallTube([(r0, rb, bilayer_law(p, "media", active), "media"),
-                                   (rb, r1, bilayer_law(p, "adventitia", active), "adventitia")], lz=1.0)
+    return analytic.ThickWallTube(
+        [
+            (r0, rb, bilayer_law(p, "media", active), "media"),
+            (rb, r1, bilayer_law(p, "adventitia", active), "adventitia"),
+        ],
+        lz=1.0,
+    )
 
 
 class BilayerMaterial:
@@ -154,16 +172,18 @@ class BilayerMaterial:
 
 def pool_sector(case: dict) -> geometry.Sector:
     """A GAG pool from its configuration entry (centre, radial and angular extent)."""
-    return geometry.Sector(case["centre_radius_um"], case["centre_angle_deg"], case["radial_extent_um"],
-                           case["angular_extent_deg"])
+    return geometry.Sector(
+        case["centre_radius_um"], case["centre_angle_deg"], case["radial_extent_um"], case["angular_extent_deg"]
+    )
 
 
 def bilayer_layout(p: dict) -> geometry.Layout:
     """Particles of the bi-layered wall: media (with ``aligned_radii_um`` as cell boundaries) and adventitia."""
     r0, border, r1 = bilayer_interfaces(p)
     aligned = sorted(r for r in p["aligned_radii_um"] if r0 < r < border)
-    return geometry.quarter_annulus([r0, *aligned, border, r1], p["dx_um"],
-                                    layer_names=["media"] * (len(aligned) + 1) + ["adventitia"])
+    return geometry.quarter_annulus(
+        [r0, *aligned, border, r1], p["dx_um"], layer_names=["media"] * (len(aligned) + 1) + ["adventitia"]
+    )
 
 
 def bilayer_model(p: dict, numerics: dict, name: str = "bilayer", pool=None, gag: dict | None = None) -> Model:
@@ -192,7 +212,9 @@ def seeding(base, layout: geometry.Layout, sectors, gag: dict) -> history.Histor
     members = [s.members(layout, layer="media") for s in sectors]
     for s, m in zip(sectors, members):
         if not m.size:
-            raise ValueError(f"the pool {s} holds no medial particle at dx = {layout.dx:g} um: make it larger "
-                             "than the particle spacing or move it into the media")
+            raise ValueError(
+                f"the pool {s} holds no medial particle at dx = {layout.dx:g} um: make it larger "
+                "than the particle spacing or move it into the media"
+            )
     intact = history.ParticleHistory.intact(layout.n)
     return history.HistoryMaterial(base, intact, gag, after=intact.seed(members))

@@ -34,37 +34,60 @@ def _hoop_range(profile: pd.DataFrame) -> float:
     return float((s.max() - s.min()) / s.mean())
 
 
-def calibration_claims(mean: pd.DataFrame, bilayer: pd.DataFrame, activation: pd.DataFrame,
-                       homeostasis_layers: pd.DataFrame, transmural: pd.DataFrame) -> list[Claim]:
+def calibration_claims(
+    mean: pd.DataFrame,
+    bilayer: pd.DataFrame,
+    activation: pd.DataFrame,
+    homeostasis_layers: pd.DataFrame,
+    transmural: pd.DataFrame,
+) -> list[Claim]:
     out = []
     m_err = mean.loc[mean.pressure_mmHg >= 10, "od_rel_error"].abs().max()
     b = bilayer[(bilayer.pressure_mmHg >= 60) & (bilayer.pressure_mmHg <= 200)]
     b_err = b.groupby("model").od_rel_error.apply(lambda s: s.abs().max())
-    out.append(Claim(
-        "C1", "SPH pressure-outer diameter of the mean and bi-layered models agrees with the analytical solution",
-        "'agree well' (figure 3a)",
-        f"largest OD error: mean {100 * m_err:.2f} % (10-200 mmHg); bi-layered "
-        + ", ".join(f"{k} {100 * v:.2f} %" for k, v in b_err.items()) + " (60-200 mmHg)",
-        _yes(m_err < 0.01 and (b_err < 0.015).all()), "mean < 1 %, bi-layered < 1.5 %"))
+    out.append(
+        Claim(
+            "C1",
+            "SPH pressure-outer diameter of the mean and bi-layered models agrees with the analytical solution",
+            "'agree well' (figure 3a)",
+            f"largest OD error: mean {100 * m_err:.2f} % (10-200 mmHg); bi-layered "
+            + ", ".join(f"{k} {100 * v:.2f} %" for k, v in b_err.items())
+            + " (60-200 mmHg)",
+            _yes(m_err < 0.01 and (b_err < 0.015).all()),
+            "mean < 1 %, bi-layered < 1.5 %",
+        )
+    )
 
     sph = activation[activation.source == "sph"].iloc[0]
     red = sph.od_reduction
-    out.append(Claim(
-        "C2", "Full SMC activation reduces the outer diameter by about 20 % at the homeostatic pressure",
-        "about 20 %", f"{100 * red:.1f} % at {sph.pressure_mmHg:g} mmHg", _yes(0.15 <= red <= 0.25),
-        "within 15-25 %"))
+    out.append(
+        Claim(
+            "C2",
+            "Full SMC activation reduces the outer diameter by about 20 % at the homeostatic pressure",
+            "about 20 %",
+            f"{100 * red:.1f} % at {sph.pressure_mmHg:g} mmHg",
+            _yes(0.15 <= red <= 0.25),
+            "within 15-25 %",
+        )
+    )
 
     passive = homeostasis_layers[homeostasis_layers.model == "passive"]
     worst = passive.circ_variation.max()
     t = transmural[transmural.source == "sph"]
     mean103 = t[(t.model == "mean") & (np.isclose(t.pressure_mmHg, 103.0))]
     mean_var = _hoop_range(mean103) if len(mean103) else np.nan
-    out.append(Claim(
-        "C3", "The bi-layered homeostatic state has near-uniform hoop stress within each layer, the mean model "
-        "a highly non-uniform one", "near uniform per layer (figure 3c) vs highly non-uniform (figure 3b)",
-        f"bi-layered (max - min)/mean per layer <= {100 * worst:.1f} %; mean model across the wall at 103 mmHg "
-        f"{100 * mean_var:.0f} %", _yes(worst < 0.10 and mean_var > 0.5),
-        "bi-layered < 10 % in every layer and mean model > 50 %"))
+    out.append(
+        Claim(
+            "C3",
+            "The bi-layered homeostatic state has near-uniform hoop stress within each layer, the mean model "
+            "a highly non-uniform one",
+            "near uniform per layer (figure 3c) vs highly non-uniform (figure 3b)",
+            f"bi-layered (max - min)/mean per layer <= {100 * worst:.1f} %; mean model across the wall at 103 mmHg "
+            f"{100 * mean_var:.0f} %",
+            _yes(worst < 0.10 and mean_var > 0.5),
+            "bi-layered < 10 % in every layer and mean model > 50 %",
+        )
+    )
 
     def layer_mean(model, P, layer):
         d = t[(t.model == model) & np.isclose(t.pressure_mmHg, P) & (t.layer == layer)]
@@ -75,24 +98,33 @@ def calibration_claims(mean: pd.DataFrame, bilayer: pd.DataFrame, activation: pd
         lo, hi = pressures[0], pressures[-1]
         r_lo = layer_mean("passive", lo, "adventitia") / layer_mean("passive", lo, "media")
         r_hi = layer_mean("passive", hi, "adventitia") / layer_mean("passive", hi, "media")
-        out.append(Claim(
-            "C4", "At elevated pressure the adventitia shields the media (passive model)",
-            "adventitia carries increasingly more load (figure 3c)",
-            f"adventitia/media hoop stress {r_lo:.2f} at {lo:g} mmHg, {r_hi:.2f} at {hi:g} mmHg", _yes(r_hi > r_lo),
-            "the ratio grows with pressure"))
+        out.append(
+            Claim(
+                "C4",
+                "At elevated pressure the adventitia shields the media (passive model)",
+                "adventitia carries increasingly more load (figure 3c)",
+                f"adventitia/media hoop stress {r_lo:.2f} at {lo:g} mmHg, {r_hi:.2f} at {hi:g} mmHg",
+                _yes(r_hi > r_lo),
+                "the ratio grows with pressure",
+            )
+        )
         shares, adv = [], []
         for P in pressures:
             sp = layer_mean("passive", P, "media") / layer_mean("passive", P, "adventitia")
             sa = layer_mean("active", P, "media") / layer_mean("active", P, "adventitia")
             shares.append((P, sp, sa))
             adv.append(layer_mean("active", P, "adventitia") < layer_mean("passive", P, "adventitia"))
-        out.append(Claim(
-            "C5", "SMC activation shifts load to the media and lowers the adventitial hoop stress at fixed pressure",
-            "media bears more load, adventitial stress reduced (figure 3c)",
-            "media/adventitia hoop stress passive -> active: "
-            + ", ".join(f"{sp:.2f} -> {sa:.2f} ({P:g} mmHg)" for P, sp, sa in shares),
-            _yes(all(sa > sp for _, sp, sa in shares) and all(adv)),
-            "ratio larger when active and adventitial hoop stress lower, at every profiled pressure"))
+        out.append(
+            Claim(
+                "C5",
+                "SMC activation shifts load to the media and lowers the adventitial hoop stress at fixed pressure",
+                "media bears more load, adventitial stress reduced (figure 3c)",
+                "media/adventitia hoop stress passive -> active: "
+                + ", ".join(f"{sp:.2f} -> {sa:.2f} ({P:g} mmHg)" for P, sp, sa in shares),
+                _yes(all(sa > sp for _, sp, sa in shares) and all(adv)),
+                "ratio larger when active and adventitial hoop stress lower, at every profiled pressure",
+            )
+        )
     return out
 
 
@@ -118,54 +150,100 @@ def swelling_claims(tips: pd.DataFrame, cases: dict) -> list[Claim]:
     c_max = tips.concentration_mEq_l.max()
     top = tips[(tips.stage == "converted") & np.isclose(tips.concentration_mEq_l, c_max)]
     key = ["model", "pressure_mmHg", "case"]
-    d = conv0.set_index(key)[["tip_radial_stress_kPa", "top_circ_stress_kPa"]] - \
-        intact.set_index(key)[["tip_radial_stress_kPa", "top_circ_stress_kPa"]]
+    d = (
+        conv0.set_index(key)[["tip_radial_stress_kPa", "top_circ_stress_kPa"]]
+        - intact.set_index(key)[["tip_radial_stress_kPa", "top_circ_stress_kPa"]]
+    )
     signs = (d.tip_radial_stress_kPa < 0) & (d.top_circ_stress_kPa > 0)
-    grow, groups = _monotone_groups(d.reset_index(), ordered, lambda g: np.all(np.diff(-g.tip_radial_stress_kPa) >= 0)
-                                    and np.all(np.diff(g.top_circ_stress_kPa) >= 0))
-    out.append(Claim(
-        "C6", "Converting the pool (no swelling) makes the tip radial stress compressive and raises the top hoop "
-        "(tensile) stress", "figure 4b,c at c = 0",
-        f"tip change {d.tip_radial_stress_kPa.min():.0f} to {d.tip_radial_stress_kPa.max():.0f} kPa, top change "
-        f"+{d.top_circ_stress_kPa.min():.0f} to +{d.top_circ_stress_kPa.max():.0f} kPa; signs right in "
-        f"{int(signs.sum())}/{len(signs)} runs", _yes(signs.all()), "tip more compressive and top more tensile "
-        "than intact in every run"))
-    out.append(Claim(
-        "C7", "... in proportion to the pool size (text); the caption says the concentrations tend to decrease as "
-        "the pool enlarges", "grow with size (text) / decrease with size (caption)",
-        f"both changes grow with pool size in {grow}/{groups} model-pressure groups; top change at 103 mmHg "
-        "(passive): " + ", ".join(f"{c} +{d.loc[('passive', 103.0, c), 'top_circ_stress_kPa']:.0f}"
-                                  for c in ordered if ("passive", 103.0, c) in d.index),
-        _yes(grow == groups) if groups else "n/a", "monotone growth in size in every group (the text's reading)"))
+    grow, groups = _monotone_groups(
+        d.reset_index(),
+        ordered,
+        lambda g: np.all(np.diff(-g.tip_radial_stress_kPa) >= 0) and np.all(np.diff(g.top_circ_stress_kPa) >= 0),
+    )
+    out.append(
+        Claim(
+            "C6",
+            "Converting the pool (no swelling) makes the tip radial stress compressive and raises the top hoop "
+            "(tensile) stress",
+            "figure 4b,c at c = 0",
+            f"tip change {d.tip_radial_stress_kPa.min():.0f} to {d.tip_radial_stress_kPa.max():.0f} kPa, top change "
+            f"+{d.top_circ_stress_kPa.min():.0f} to +{d.top_circ_stress_kPa.max():.0f} kPa; signs right in "
+            f"{int(signs.sum())}/{len(signs)} runs",
+            _yes(signs.all()),
+            "tip more compressive and top more tensile than intact in every run",
+        )
+    )
+    out.append(
+        Claim(
+            "C7",
+            "... in proportion to the pool size (text); the caption says the concentrations tend to decrease as "
+            "the pool enlarges",
+            "grow with size (text) / decrease with size (caption)",
+            f"both changes grow with pool size in {grow}/{groups} model-pressure groups; top change at 103 mmHg "
+            "(passive): "
+            + ", ".join(
+                f"{c} +{d.loc[('passive', 103.0, c), 'top_circ_stress_kPa']:.0f}"
+                for c in ordered
+                if ("passive", 103.0, c) in d.index
+            ),
+            _yes(grow == groups) if groups else "n/a",
+            "monotone growth in size in every group (the text's reading)",
+        )
+    )
 
     high = tips[(tips.stage == "converted") & (tips.concentration_mEq_l > 100 - 1e-9)]
     frac_tensile = (top.tip_radial_stress_kPa > 0).mean()
     frac_50 = (high.tip_radial_stress_kPa > 50).mean()
-    out.append(Claim(
-        "C8", "Swelling turns the tip radial stress from compressive to tensile, typically above ~50 kPa for "
-        "concentrations over 100 mEq/l", "> ~50 kPa above 100 mEq/l",
-        f"at {c_max:g} mEq/l: {top.tip_radial_stress_kPa.min():.0f} to {top.tip_radial_stress_kPa.max():.0f} kPa, "
-        f"tensile in {100 * frac_tensile:.0f} % of runs; > 50 kPa in {100 * frac_50:.0f} % of states above 100 mEq/l",
-        _yes(frac_tensile == 1 and frac_50 >= 0.5), "tensile in every run at the highest concentration and "
-        "> 50 kPa in most states above 100 mEq/l"))
+    out.append(
+        Claim(
+            "C8",
+            "Swelling turns the tip radial stress from compressive to tensile, typically above ~50 kPa for "
+            "concentrations over 100 mEq/l",
+            "> ~50 kPa above 100 mEq/l",
+            f"at {c_max:g} mEq/l: {top.tip_radial_stress_kPa.min():.0f} to {top.tip_radial_stress_kPa.max():.0f} kPa, "
+            f"tensile in {100 * frac_tensile:.0f} % of runs; "
+            f"> 50 kPa in {100 * frac_50:.0f} % of states above 100 mEq/l",
+            _yes(frac_tensile == 1 and frac_50 >= 0.5),
+            "tensile in every run at the highest concentration and > 50 kPa in most states above 100 mEq/l",
+        )
+    )
 
     mono, groups = _monotone_groups(top, ordered, lambda g: np.all(np.diff(g.tip_radial_stress_kPa) <= 0))
-    out.append(Claim(
-        "C9", "Smaller pools give higher tip stress", "figure 4, section 3",
-        f"tip radial stress at {c_max:g} mEq/l decreases with pool size in {mono}/{groups} model-pressure groups",
-        _yes(groups > 0 and mono == groups) if groups else "n/a", "monotone in every group"))
+    out.append(
+        Claim(
+            "C9",
+            "Smaller pools give higher tip stress",
+            "figure 4, section 3",
+            f"tip radial stress at {c_max:g} mEq/l decreases with pool size in {mono}/{groups} model-pressure groups",
+            _yes(groups > 0 and mono == groups) if groups else "n/a",
+            "monotone in every group",
+        )
+    )
 
     passive = tips[(tips.model == "passive") & (tips.stage == "converted") & (tips.concentration_mEq_l > 75 - 1e-9)]
     if passive.pressure_mmHg.nunique() > 1:
         spread = passive.groupby(["case", "concentration_mEq_l"]).tip_radial_stress_kPa.agg(np.ptp)
-        out.append(Claim(
-            "C10", "In the passive wall the tip stress hardly changes with lumen pressure above 75 mEq/l",
-            "does not change appreciably", f"largest spread over pressures {spread.max():.1f} kPa (median "
-            f"{spread.median():.1f} kPa)", _yes(spread.max() <= 10.0), "spread <= 10 kPa at every case and "
-            "concentration >= 75 mEq/l"))
+        out.append(
+            Claim(
+                "C10",
+                "In the passive wall the tip stress hardly changes with lumen pressure above 75 mEq/l",
+                "does not change appreciably",
+                f"largest spread over pressures {spread.max():.1f} kPa (median {spread.median():.1f} kPa)",
+                _yes(spread.max() <= 10.0),
+                "spread <= 10 kPa at every case and concentration >= 75 mEq/l",
+            )
+        )
     else:
-        out.append(Claim("C10", "In the passive wall the tip stress hardly changes with lumen pressure above 75 mEq/l",
-                         "does not change appreciably", "needs more than one pressure", "n/a", "-"))
+        out.append(
+            Claim(
+                "C10",
+                "In the passive wall the tip stress hardly changes with lumen pressure above 75 mEq/l",
+                "does not change appreciably",
+                "needs more than one pressure",
+                "n/a",
+                "-",
+            )
+        )
 
     both = top.pivot_table(index=["case", "pressure_mmHg"], columns="model", values="tip_radial_stress_kPa")
     if {"passive", "active"} <= set(both.columns):
@@ -173,17 +251,30 @@ def swelling_claims(tips: pd.DataFrame, cases: dict) -> list[Claim]:
         top_p = diff.pressure_mmHg.max()
         low = diff[diff.pressure_mmHg < top_p]
         high_p = diff[(diff.pressure_mmHg == top_p) & diff.case.isin(ordered[:2])]
-        out.append(Claim(
-            "C11", "Activation lowers the tip stress at 103 and 145 mmHg", "lower (section 3)",
-            f"active - passive at {c_max:g} mEq/l: " + ", ".join(
-                f"{r.case}@{r.pressure_mmHg:g}: {r.active_minus_passive:+.0f}" for r in low.itertuples()) + " kPa",
-            _yes(len(low) and (low.active_minus_passive < 0).all()) if len(low) else "n/a", "negative for every case"))
-        out.append(Claim(
-            "C12", "... but raises it for the two smallest pools at 200 mmHg", "higher for cases I-II (section 3)",
-            f"active - passive at {c_max:g} mEq/l: " + ", ".join(
-                f"{r.case}@{r.pressure_mmHg:g}: {r.active_minus_passive:+.0f}" for r in high_p.itertuples()) + " kPa",
-            _yes((high_p.active_minus_passive > 0).all()) if len(high_p) else "n/a",
-            "positive for the two smallest pools"))
+        out.append(
+            Claim(
+                "C11",
+                "Activation lowers the tip stress at 103 and 145 mmHg",
+                "lower (section 3)",
+                f"active - passive at {c_max:g} mEq/l: "
+                + ", ".join(f"{r.case}@{r.pressure_mmHg:g}: {r.active_minus_passive:+.0f}" for r in low.itertuples())
+                + " kPa",
+                _yes(len(low) and (low.active_minus_passive < 0).all()) if len(low) else "n/a",
+                "negative for every case",
+            )
+        )
+        out.append(
+            Claim(
+                "C12",
+                "... but raises it for the two smallest pools at 200 mmHg",
+                "higher for cases I-II (section 3)",
+                f"active - passive at {c_max:g} mEq/l: "
+                + ", ".join(f"{r.case}@{r.pressure_mmHg:g}: {r.active_minus_passive:+.0f}" for r in high_p.itertuples())
+                + " kPa",
+                _yes((high_p.active_minus_passive > 0).all()) if len(high_p) else "n/a",
+                "positive for the two smallest pools",
+            )
+        )
     return out
 
 
@@ -193,8 +284,10 @@ def _ruptures(g: pd.DataFrame) -> pd.DataFrame:
 
 
 def _runs(growth: pd.DataFrame, case: str, criterion: str):
-    return {s: g.sort_values("step") for s, g in growth[(growth.case == case) & (growth.criterion == criterion)]
-            .groupby("sigma_cr_kPa")}
+    return {
+        s: g.sort_values("step")
+        for s, g in growth[(growth.case == case) & (growth.criterion == criterion)].groupby("sigma_cr_kPa")
+    }
 
 
 def delamination_claims(growth: pd.DataFrame, summary: pd.DataFrame, criteria: list) -> list[Claim]:
@@ -217,16 +310,24 @@ def delamination_claims(growth: pd.DataFrame, summary: pd.DataFrame, criteria: l
         return found
 
     def spont_text(c):
-        return ", ".join(f"{s:g} kPa {n} rupture passes (at most {m} at one concentration)"
-                         for s, (n, m) in spontaneous(c).items())
+        return ", ".join(
+            f"{s:g} kPa {n} rupture passes (at most {m} at one concentration)" for s, (n, m) in spontaneous(c).items()
+        )
 
     default = spontaneous(criteria[0])
     grew = [v for v in default.values() if v[0] > 0]
-    out.append(Claim(
-        "C13", "Propagation is spontaneous: once the tip stress first exceeds sigma_cr, the pool keeps growing at "
-        "fixed concentration", "section 3, figure 5", per_criterion(spont_text),
-        _yes(grew and all(m >= 2 for _, m in grew)), "in every single-pool run (default criterion) the pool grows, "
-        "and ruptures recur at least twice at one concentration"))
+    out.append(
+        Claim(
+            "C13",
+            "Propagation is spontaneous: once the tip stress first exceeds sigma_cr, the pool keeps growing at "
+            "fixed concentration",
+            "section 3, figure 5",
+            per_criterion(spont_text),
+            _yes(grew and all(m >= 2 for _, m in grew)),
+            "in every single-pool run (default criterion) the pool grows, "
+            "and ruptures recur at least twice at one concentration",
+        )
+    )
 
     def sawtooth(c):
         drops = {}
@@ -236,11 +337,16 @@ def delamination_claims(growth: pd.DataFrame, summary: pd.DataFrame, criteria: l
         return drops
 
     saw = sawtooth(criteria[0])
-    out.append(Claim(
-        "C14", "The tip stress rises and drops repeatedly (a sawtooth)", "figure 5b",
-        per_criterion(lambda c: ", ".join(f"{s:g} kPa {n} drops" for s, n in sawtooth(c).items())),
-        _yes(saw and all(n >= 2 for n in saw.values())), "at least two drops by > 10 % of sigma_cr in every "
-        "single-pool run (default criterion)"))
+    out.append(
+        Claim(
+            "C14",
+            "The tip stress rises and drops repeatedly (a sawtooth)",
+            "figure 5b",
+            per_criterion(lambda c: ", ".join(f"{s:g} kPa {n} drops" for s, n in sawtooth(c).items())),
+            _yes(saw and all(n >= 2 for n in saw.values())),
+            "at least two drops by > 10 % of sigma_cr in every single-pool run (default criterion)",
+        )
+    )
 
     def rates(c):
         s = summary[(summary.case == "single") & (summary.criterion == c)].set_index("sigma_cr_kPa")
@@ -248,23 +354,35 @@ def delamination_claims(growth: pd.DataFrame, summary: pd.DataFrame, criteria: l
 
     def rate_text(c):
         s = rates(c)
-        return ", ".join(f"{k:g} kPa {r.growth_rate_um_per_pseudo_time:.3g} um/pass, {r.growth_rate_um_per_mEq_l:.3g} "
-                         f"um/(mEq/l)" for k, r in s.iterrows())
+        return ", ".join(
+            f"{k:g} kPa {r.growth_rate_um_per_pseudo_time:.3g} um/pass, {r.growth_rate_um_per_mEq_l:.3g} um/(mEq/l)"
+            for k, r in s.iterrows()
+        )
 
     s = rates(criteria[0])
     lo, hi = (s.index.min(), s.index.max()) if len(s) else (None, None)
     if lo is not None and lo < hi:
         a, b = s.loc[lo], s.loc[hi]
-        slows = all(x > 0 and (y == 0 or x / y > 2) for x, y in (
-            (a.growth_rate_um_per_pseudo_time, b.growth_rate_um_per_pseudo_time),
-            (a.growth_rate_um_per_mEq_l, b.growth_rate_um_per_mEq_l)))
+        slows = all(
+            x > 0 and (y == 0 or x / y > 2)
+            for x, y in (
+                (a.growth_rate_um_per_pseudo_time, b.growth_rate_um_per_pseudo_time),
+                (a.growth_rate_um_per_mEq_l, b.growth_rate_um_per_mEq_l),
+            )
+        )
         holds = _yes(slows)
     else:
         holds = "n/a"
-    out.append(Claim(
-        "C15", "Raising sigma_cr from 30 to 60 kPa slows propagation more than twofold", "section 3, figure 5",
-        per_criterion(rate_text), holds, "rate at the lowest sigma_cr > 2 x the rate at the highest, per pass and "
-        "per mEq/l (default criterion)"))
+    out.append(
+        Claim(
+            "C15",
+            "Raising sigma_cr from 30 to 60 kPa slows propagation more than twofold",
+            "section 3, figure 5",
+            per_criterion(rate_text),
+            holds,
+            "rate at the lowest sigma_cr > 2 x the rate at the highest, per pass and per mEq/l (default criterion)",
+        )
+    )
 
     def pair_runs(c):
         """``(summary row, growth row at the merge or at the end)`` of every pool-pair run of criterion ``c``."""
@@ -274,26 +392,43 @@ def delamination_claims(growth: pd.DataFrame, summary: pd.DataFrame, criteria: l
             yield r, (g[g.pseudo_time <= r.merge_step].iloc[-1] if r.merged else g.iloc[-1])
 
     def merge_text(c):
-        return ", ".join(f"{r.case} {'merged at pass %d' % r.merge_step if r.merged else 'not merged'}, converted "
-                         f"interior {at.converted_interior:.0f} / exterior {at.converted_exterior:.0f}"
-                         for r, at in pair_runs(c))
+        return ", ".join(
+            f"{r.case} {f'merged at pass {r.merge_step:.0f}' if r.merged else 'not merged'}, converted "
+            f"interior {at.converted_interior:.0f} / exterior {at.converted_exterior:.0f}"
+            for r, at in pair_runs(c)
+        )
 
     pairs = list(pair_runs(criteria[0]))
     ok = any(r.merged and at.converted_exterior > at.converted_interior for r, at in pairs)
-    out.append(Claim(
-        "C16", "Two nearby pools grow and merge, and at merging their exterior growth exceeds their interior growth",
-        "figure 6", per_criterion(merge_text), _yes(ok) if len(pairs) else "n/a",
-        "a pool pair merges and has more exterior than interior converted particles at the merge (default "
-        "criterion)"))
+    out.append(
+        Claim(
+            "C16",
+            "Two nearby pools grow and merge, and at merging their exterior growth exceeds their interior growth",
+            "figure 6",
+            per_criterion(merge_text),
+            _yes(ok) if len(pairs) else "n/a",
+            "a pool pair merges and has more exterior than interior converted particles at the merge (default "
+            "criterion)",
+        )
+    )
 
     off = summary[(summary.case == "radial_offset")]
-    out.append(Claim(
-        "C17", "Radially offset pools link up", "figure 7",
-        per_criterion(lambda c: ", ".join(f"{'merged at pass %d' % r.merge_step if r.merged else 'not merged'} "
-                                          f"({r.final_length_um:.1f} um delaminated)"
-                                          for r in off[off.criterion == c].itertuples())),
-        _yes(off[off.criterion == criteria[0]].merged.any()) if len(off) else "n/a",
-        "the radially offset pair merges (default criterion)"))
+    out.append(
+        Claim(
+            "C17",
+            "Radially offset pools link up",
+            "figure 7",
+            per_criterion(
+                lambda c: ", ".join(
+                    f"{f'merged at pass {r.merge_step:.0f}' if r.merged else 'not merged'} "
+                    f"({r.final_length_um:.1f} um delaminated)"
+                    for r in off[off.criterion == c].itertuples()
+                )
+            ),
+            _yes(off[off.criterion == criteria[0]].merged.any()) if len(off) else "n/a",
+            "the radially offset pair merges (default criterion)",
+        )
+    )
     return out
 
 
@@ -302,11 +437,17 @@ def table(claims: list[Claim]) -> pd.DataFrame:
 
 
 def markdown(df: pd.DataFrame) -> str:
-    lines = ["# The paper's claims against our numbers", "",
-             "Generated by the `claims` rule from the pipeline's CSV tables. `holds` follows the criterion "
-             "in the last column; nothing was tuned to make a claim hold.", "",
-             "| id | claim | paper | ours | holds | criterion |", "|---|---|---|---|---|---|"]
+    lines = [
+        "# The paper's claims against our numbers",
+        "",
+        "Generated by the `claims` rule from the pipeline's CSV tables. `holds` follows the criterion "
+        "in the last column; nothing was tuned to make a claim hold.",
+        "",
+        "| id | claim | paper | ours | holds | criterion |",
+        "|---|---|---|---|---|---|",
+    ]
     for r in df.itertuples():
-        lines.append(f"| {r.claim_id} | {r.statement} | {r.paper_value} | {r.our_value} | **{r.holds}** | "
-                     f"{r.criterion} |")
+        lines.append(
+            f"| {r.claim_id} | {r.statement} | {r.paper_value} | {r.our_value} | **{r.holds}** | {r.criterion} |"
+        )
     return "\n".join(lines) + "\n"

@@ -28,8 +28,9 @@ class _UniqueKeyLoader(yaml.SafeLoader):
         for key_node, _ in node.value:
             key = self.construct_object(key_node, deep=deep)
             if key in seen:
-                raise ConfigError(f"duplicate key {key!r} at line {key_node.start_mark.line + 1} of "
-                                  f"{key_node.start_mark.name}")
+                raise ConfigError(
+                    f"duplicate key {key!r} at line {key_node.start_mark.line + 1} of {key_node.start_mark.name}"
+                )
             seen.add(key)
         return super().construct_mapping(node, deep)
 
@@ -94,8 +95,10 @@ def _describe(error: jsonschema.ValidationError, schema: dict) -> str:
         else:
             if "e" in error.instance.lower() and "." not in error.instance.lower().partition("e")[0]:
                 # YAML 1.1 reads 1e-4 (no dot in the mantissa) as text
-                hint = f" (YAML reads {error.instance} as text, not as the number {value!r}: write " \
-                       f"{_yaml_float(error.instance)})"
+                hint = (
+                    f" (YAML reads {error.instance} as text, not as the number {value!r}: write "
+                    f"{_yaml_float(error.instance)})"
+                )
             else:
                 hint = f" (the number {value!r} was given as text: write it without quotes)"
     return f"{key} = {error.instance!r} is invalid: {error.message}{hint}{allowed}{desc}"
@@ -136,10 +139,12 @@ def canonical(config):
 
 # JSON Schema's "integer" accepts 30.0 and its "number" accepts True; in a config they are mistakes
 # (``range(30.0)`` fails long after validation), so only Python ints are integers and bools are neither.
-_TYPES = jsonschema.Draft202012Validator.TYPE_CHECKER.redefine_many({
-    "integer": lambda _, v: isinstance(v, int) and not isinstance(v, bool),
-    "number": lambda _, v: isinstance(v, (int, float)) and not isinstance(v, bool),
-})
+_TYPES = jsonschema.Draft202012Validator.TYPE_CHECKER.redefine_many(
+    {
+        "integer": lambda _, v: isinstance(v, int) and not isinstance(v, bool),
+        "number": lambda _, v: isinstance(v, (int, float)) and not isinstance(v, bool),
+    }
+)
 _Validator = jsonschema.validators.extend(jsonschema.Draft202012Validator, type_checker=_TYPES)
 
 
@@ -183,8 +188,12 @@ def _empty_pools(config: dict) -> list[str]:
     bil, out, layouts = config["bilayer"], [], {}
     sw, de = config.get("swelling", {}), config.get("delamination", {})
     runs = [(f"swelling.cases.{n}", pool, bil["dx_um"]) for n, pool in sw.get("cases", {}).items()]
-    runs += [(f"swelling.cases.{n}", sw["cases"][n], dx) for n in config.get("swelling_convergence", {}).get("cases", [])
-             for dx in config["swelling_convergence"]["dx_um"] if n in sw.get("cases", {})]
+    runs += [
+        (f"swelling.cases.{n}", sw["cases"][n], dx)
+        for n in config.get("swelling_convergence", {}).get("cases", [])
+        for dx in config["swelling_convergence"]["dx_um"]
+        if n in sw.get("cases", {})
+    ]
     for name, pools in de.get("pool_sets", {}).items():
         spacings = [bil["dx_um"]] + (de["convergence"]["dx_um"] if name == "single" else [])
         runs += [(f"delamination.pool_sets.{name}[{k}]", pool, dx) for k, pool in enumerate(pools) for dx in spacings]
@@ -192,9 +201,11 @@ def _empty_pools(config: dict) -> list[str]:
         if dx not in layouts:
             layouts[dx] = artery.bilayer_layout(dict(bil, dx_um=dx))
         if not artery.pool_sector(pool).members(layouts[dx], layer="media").size:
-            out.append(f"{name}: the pool holds no medial particle at dx = {dx:g} um (it is "
-                       f"{pool['radial_extent_um']:g} um by {pool['angular_extent_deg']:g} deg): make it larger than "
-                       "the particle spacing")
+            out.append(
+                f"{name}: the pool holds no medial particle at dx = {dx:g} um (it is "
+                f"{pool['radial_extent_um']:g} um by {pool['angular_extent_deg']:g} deg): make it larger than "
+                "the particle spacing"
+            )
     return sorted(set(out))
 
 
@@ -203,10 +214,15 @@ def _consistency(config: dict) -> list[str]:
     problems = []
     m = config.get("mean", {})
     if m.get("outer_radius_um", 0) <= m.get("inner_radius_um", 0):
-        problems.append(f"mean.outer_radius_um = {m.get('outer_radius_um')} must exceed "
-                        f"mean.inner_radius_um = {m.get('inner_radius_um')}")
-    for section, key in (("calibration", "transmural_pressures_mmHg"), ("bilayer_calibration", "state_pressures_mmHg"),
-                         ("bilayer_calibration", "activation_pressure_mmHg")):
+        problems.append(
+            f"mean.outer_radius_um = {m.get('outer_radius_um')} must exceed "
+            f"mean.inner_radius_um = {m.get('inner_radius_um')}"
+        )
+    for section, key in (
+        ("calibration", "transmural_pressures_mmHg"),
+        ("bilayer_calibration", "state_pressures_mmHg"),
+        ("bilayer_calibration", "activation_pressure_mmHg"),
+    ):
         cal = config.get(section, {})
         top = cal.get("max_pressure_mmHg", 0)
         values = cal.get(key, [])
@@ -217,8 +233,9 @@ def _consistency(config: dict) -> list[str]:
     bil = config.get("bilayer", {})
     for layer, beta in bil.get("orientations", {}).items():
         if abs(sum(beta.values()) - 1.0) > 1e-6:
-            problems.append(f"bilayer.orientations.{layer} must sum to 1 (beta factors of Table 2), "
-                            f"got {sum(beta.values()):.6g}")
+            problems.append(
+                f"bilayer.orientations.{layer} must sum to 1 (beta factors of Table 2), got {sum(beta.values()):.6g}"
+            )
     for layer, frac in bil.get("mass_fractions", {}).items():
         if abs(sum(frac.values()) - 1.0) > 1e-6:
             problems.append(f"bilayer.mass_fractions.{layer} must sum to 1, got {sum(frac.values()):.6g}")
@@ -226,16 +243,24 @@ def _consistency(config: dict) -> list[str]:
     saved = config.get("bilayer_calibration", {}).get("state_pressures_mmHg", [])
     for k, p in enumerate(sw.get("pressures_mmHg", [])):
         if p not in saved:
-            problems.append(f"swelling.pressures_mmHg[{k}] = {p} has no saved state: it must be one of "
-                            f"bilayer_calibration.state_pressures_mmHg = {saved}")
+            problems.append(
+                f"swelling.pressures_mmHg[{k}] = {p} has no saved state: it must be one of "
+                f"bilayer_calibration.state_pressures_mmHg = {saved}"
+            )
     for k, name in enumerate(config.get("swelling_convergence", {}).get("cases", [])):
         if name not in sw.get("cases", {}):
-            problems.append(f"swelling_convergence.cases[{k}] = {name!r} is not a pool of swelling.cases "
-                            f"({', '.join(sw.get('cases', {}))})")
+            problems.append(
+                f"swelling_convergence.cases[{k}] = {name!r} is not a pool of swelling.cases "
+                f"({', '.join(sw.get('cases', {}))})"
+            )
     # values that name files ({pressure}mmHg, dx{dx}, {sigma}kPa) must give distinct names
-    named = [("bilayer_calibration", "state_pressures_mmHg"), ("calibration", "transmural_pressures_mmHg"),
-             ("swelling", "pressures_mmHg"), ("swelling_convergence", "dx_um"),
-             ("delamination", "critical_stresses_kPa")]
+    named = [
+        ("bilayer_calibration", "state_pressures_mmHg"),
+        ("calibration", "transmural_pressures_mmHg"),
+        ("swelling", "pressures_mmHg"),
+        ("swelling_convergence", "dx_um"),
+        ("delamination", "critical_stresses_kPa"),
+    ]
     for section, key in named:
         values = config.get(section, {}).get(key, [])
         names = [f"{v:g}" for v in values]
@@ -248,12 +273,16 @@ def _consistency(config: dict) -> list[str]:
     de = config.get("delamination", {})
     if de:
         if de["pressure_mmHg"] not in saved:
-            problems.append(f"delamination.pressure_mmHg = {de['pressure_mmHg']} has no saved state: it must be one "
-                            f"of bilayer_calibration.state_pressures_mmHg = {saved}")
+            problems.append(
+                f"delamination.pressure_mmHg = {de['pressure_mmHg']} has no saved state: it must be one "
+                f"of bilayer_calibration.state_pressures_mmHg = {saved}"
+            )
         coarsest = max([bil.get("dx_um", 0)] + de["convergence"]["dx_um"])
         if "averaged" in de["criteria"] and de["averaging_length_um"] < coarsest:
-            problems.append(f"delamination.averaging_length_um = {de['averaging_length_um']} is below the coarsest "
-                            f"particle spacing ({coarsest:g} um): the average would be a single particle's value")
+            problems.append(
+                f"delamination.averaging_length_um = {de['averaging_length_um']} is below the coarsest "
+                f"particle spacing ({coarsest:g} um): the average would be a single particle's value"
+            )
     pools = {f"swelling.cases.{name}": pool for name, pool in sw.get("cases", {}).items()}
     for name, members in de.get("pool_sets", {}).items():
         pools.update({f"delamination.pool_sets.{name}[{k}]": pool for k, pool in enumerate(members)})
@@ -270,12 +299,16 @@ def _consistency(config: dict) -> list[str]:
                 problems.append(f"{name}: radii {lo:g}-{hi:g} um leave the media ({r_in:g}-{border:g} um)")
             half = pool["angular_extent_deg"] / 2
             if pool["centre_angle_deg"] - half <= 0 or pool["centre_angle_deg"] + half >= 90:
-                problems.append(f"{name}: angles {pool['centre_angle_deg'] - half:g}-"
-                                f"{pool['centre_angle_deg'] + half:g} deg reach a symmetry edge (0 or 90 deg)")
+                problems.append(
+                    f"{name}: angles {pool['centre_angle_deg'] - half:g}-"
+                    f"{pool['centre_angle_deg'] + half:g} deg reach a symmetry edge (0 or 90 deg)"
+                )
     if not problems and bil:
         problems += _empty_pools(config)
     act = bil.get("active", {})
     if act and act.get("stretch_min", 0) >= act.get("stretch_max", 1):
-        problems.append(f"bilayer.active.stretch_min = {act.get('stretch_min')} must be below "
-                        f"bilayer.active.stretch_max = {act.get('stretch_max')}")
+        problems.append(
+            f"bilayer.active.stretch_min = {act.get('stretch_min')} must be below "
+            f"bilayer.active.stretch_max = {act.get('stretch_max')}"
+        )
     return problems

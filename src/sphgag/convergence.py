@@ -3,7 +3,8 @@
 For one particle spacing: the passive homeostatic state (figure 2b), pressurised
 to the study's lumen pressure under pressure control, then every chosen pool
 converted and swollen (:func:`sphgag.protocols.swell_pool`) and measured
-(:func:`sphgag.protocols.pool_table`). The rows carry the quantities whose convergence the study measures: the tip radial stress averaged
+(:func:`sphgag.protocols.pool_table`). The rows carry the quantities whose
+convergence the study measures: the tip radial stress averaged
 over ``swelling.probe_length_um`` and its particle peak, the top hoop stress and
 the pool's volume change, with the residual of each converged state.
 """
@@ -14,12 +15,30 @@ import pandas as pd
 
 from . import artery, protocols, solver
 
-COLUMNS = ["dx_um", "particles", "case", "concentration_mEq_l", "tip_radial_stress_kPa", "tip_peak_radial_stress_kPa",
-           "top_circ_stress_kPa", "pool_volume_change", "residual"]
+COLUMNS = [
+    "dx_um",
+    "particles",
+    "case",
+    "concentration_mEq_l",
+    "tip_radial_stress_kPa",
+    "tip_peak_radial_stress_kPa",
+    "top_circ_stress_kPa",
+    "pool_volume_change",
+    "residual",
+]
 
 
-def study(dx: float, bilayer: dict, numerics: dict, homeostasis: dict, swelling: dict, gag: dict, cases: dict,
-          pressure_mmHg: float, name: str = "convergence") -> pd.DataFrame:
+def study(
+    dx: float,
+    bilayer: dict,
+    numerics: dict,
+    homeostasis: dict,
+    swelling: dict,
+    gag: dict,
+    cases: dict,
+    pressure_mmHg: float,
+    name: str = "convergence",
+) -> pd.DataFrame:
     """Rows of ``results/swelling/convergence.csv`` for one particle spacing ``dx`` [um] (converted stage only)."""
     p = dict(bilayer, dx_um=float(dx))
     wall = artery.bilayer_model(p, numerics, name=name)

@@ -69,7 +69,7 @@ class DamageState:
     onset_stretch: np.ndarray
 
     @classmethod
-    def intact(cls, n: int) -> "DamageState":
+    def intact(cls, n: int) -> DamageState:
         return cls(np.zeros(n), np.full(n, np.nan))
 
     @property

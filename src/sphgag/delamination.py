@@ -57,12 +57,35 @@ log = logging.getLogger("sphgag")
 
 CRITERIA = ("particle", "averaged")
 
-GROWTH_COLUMNS = ["case", "sigma_cr_kPa", "criterion", "dx_um", "step", "pseudo_time", "concentration_mEq_l",
-                  "converted_particles", "converted_interior", "converted_exterior", "delaminated_length_um",
-                  "tip_radial_stress_kPa", "residual"]
-SUMMARY_COLUMNS = ["case", "sigma_cr_kPa", "criterion", "dx_um", "onset_concentration_mEq_l", "final_length_um",
-                   "growth_rate_um_per_pseudo_time", "growth_rate_um_per_mEq_l", "merged", "merge_step",
-                   "dissipated_energy_J_m2", "max_residual"]
+GROWTH_COLUMNS = [
+    "case",
+    "sigma_cr_kPa",
+    "criterion",
+    "dx_um",
+    "step",
+    "pseudo_time",
+    "concentration_mEq_l",
+    "converted_particles",
+    "converted_interior",
+    "converted_exterior",
+    "delaminated_length_um",
+    "tip_radial_stress_kPa",
+    "residual",
+]
+SUMMARY_COLUMNS = [
+    "case",
+    "sigma_cr_kPa",
+    "criterion",
+    "dx_um",
+    "onset_concentration_mEq_l",
+    "final_length_um",
+    "growth_rate_um_per_pseudo_time",
+    "growth_rate_um_per_mEq_l",
+    "merged",
+    "merge_step",
+    "dissipated_energy_J_m2",
+    "max_residual",
+]
 
 
 @dataclass(frozen=True)
@@ -86,7 +109,7 @@ class Settings:
             raise ValueError(f"criterion must be one of {CRITERIA}, got {self.criterion!r}")
 
     @classmethod
-    def from_config(cls, de: dict, critical_stress_kPa: float, criterion: str) -> "Settings":
+    def from_config(cls, de: dict, critical_stress_kPa: float, criterion: str) -> Settings:
         """The settings of one run from the ``delamination`` configuration section."""
         keys = [f.name for f in fields(cls) if f.name not in ("critical_stress_kPa", "criterion")]
         return cls(critical_stress_kPa=float(critical_stress_kPa), criterion=criterion, **{k: de[k] for k in keys})
@@ -236,8 +259,18 @@ def intact_energy(model: Model, ev, base_props: np.ndarray) -> np.ndarray:
     return W
 
 
-def grow(model: Model, start: solver.State, sectors: list[Sector], settings: Settings, numerics: dict,
-         gag: dict, base, snapshot_steps=(), run: str | None = None, resume: tuple | None = None) -> Result:
+def grow(
+    model: Model,
+    start: solver.State,
+    sectors: list[Sector],
+    settings: Settings,
+    numerics: dict,
+    gag: dict,
+    base,
+    snapshot_steps=(),
+    run: str | None = None,
+    resume: tuple | None = None,
+) -> Result:
     """Seed the pools of ``sectors`` in the wall at the converged pressurised state ``start`` and grow them.
 
     ``base``: the intact wall's material (``load -> props``, e.g. :class:`sphgag.artery.BilayerMaterial`).
@@ -255,12 +288,25 @@ def grow(model: Model, start: solver.State, sectors: list[Sector], settings: Set
         hist = material.history
         model.set_props(material)
         base_load = protocols.swelling_load(start.load, 0.0, 0.0)
-        log.info("[%s] seeding %d pool(s) (%d particles) in %d steps at %.1f mmHg; sigma_cr %.0f kPa, %s onset, "
-                 "rupture at +%.3g radial stretch", run, len(sectors), int(hist.gag.sum()), settings.conversion_steps,
-                 base_load.pressure_mmHg, law.critical_stress_kPa, settings.criterion, law.rupture_stretch_increment)
-        state = solver.follow_path(model, start.x, base_load,
-                                   [protocols.swelling_load(base_load, f, 0.0)
-                                    for f in np.linspace(0, 1, settings.conversion_steps + 1)[1:]], **opts)[-1]
+        log.info(
+            "[%s] seeding %d pool(s) (%d particles) in %d steps at %.1f mmHg; sigma_cr %.0f kPa, %s onset, "
+            "rupture at +%.3g radial stretch",
+            run,
+            len(sectors),
+            int(hist.gag.sum()),
+            settings.conversion_steps,
+            base_load.pressure_mmHg,
+            law.critical_stress_kPa,
+            settings.criterion,
+            law.rupture_stretch_increment,
+        )
+        state = solver.follow_path(
+            model,
+            start.x,
+            base_load,
+            [protocols.swelling_load(base_load, f, 0.0) for f in np.linspace(0, 1, settings.conversion_steps + 1)[1:]],
+            **opts,
+        )[-1]
         material = material.settled()
         step, c_from = 0, 0.0
     else:
@@ -332,13 +378,20 @@ def grow(model: Model, start: solver.State, sectors: list[Sector], settings: Set
             model.set_props(path)
             load = ev.load
             try:
-                state = solver.follow_path(model, state.x, load.with_material(transition=0.0),
-                                           [load.with_material(transition=1.0)], **opts)[-1]
+                state = solver.follow_path(
+                    model, state.x, load.with_material(transition=0.0), [load.with_material(transition=1.0)], **opts
+                )[-1]
             except solver.NotConverged as exc:
                 # no equilibrium along the path to the new history: the growth is unstable (a snap) at this
                 # concentration; the run ends at the last converged state, with the reason in the summary
-                log.warning("[%s] pass %d, c = %g mEq/l: %s; growth is unstable here, the run stops at the last "
-                            "converged state", run, step, c, exc.reason)
+                log.warning(
+                    "[%s] pass %d, c = %g mEq/l: %s; growth is unstable here, the run stops at the last "
+                    "converged state",
+                    run,
+                    step,
+                    c,
+                    exc.reason,
+                )
                 step -= 1
                 dmg.D = D_old
                 model.set_props(material)
@@ -354,9 +407,17 @@ def grow(model: Model, start: solver.State, sectors: list[Sector], settings: Set
             cand, pools, sigma, tip = in_front(state)  # also the next pass's onset test
             record(c, tip, state)
             if ruptured.size:
-                log.info("[%s] pass %d, c = %g mEq/l: %d ruptured (%d converted in all), delaminated %.1f um, "
-                         "max onset stress %.1f kPa", run, step, c, ruptured.size, rows[-1].converted[0],
-                         rows[-1].length, tip)
+                log.info(
+                    "[%s] pass %d, c = %g mEq/l: %d ruptured (%d converted in all), delaminated %.1f um, "
+                    "max onset stress %.1f kPa",
+                    run,
+                    step,
+                    c,
+                    ruptured.size,
+                    rows[-1].converted[0],
+                    rows[-1].length,
+                    tip,
+                )
             if step >= settings.max_passes:
                 return state, "pass limit"
             if front.extent_deg(hist).max() >= settings.max_extent_deg:
@@ -374,18 +435,38 @@ def grow(model: Model, start: solver.State, sectors: list[Sector], settings: Set
         if stop != "arrested":
             break
     length = rows[-1].length
-    growth = pd.DataFrame([dict(step=k, pseudo_time=r.step, concentration_mEq_l=r.concentration,
-                                converted_particles=r.converted[0], converted_interior=r.converted[1],
-                                converted_exterior=r.converted[2], delaminated_length_um=r.length,
-                                tip_radial_stress_kPa=r.tip_stress, residual=r.residual) for k, r in enumerate(rows)])
+    growth = pd.DataFrame(
+        [
+            dict(
+                step=k,
+                pseudo_time=r.step,
+                concentration_mEq_l=r.concentration,
+                converted_particles=r.converted[0],
+                converted_interior=r.converted[1],
+                converted_exterior=r.converted[2],
+                delaminated_length_um=r.length,
+                tip_radial_stress_kPa=r.tip_stress,
+                residual=r.residual,
+            )
+            for k, r in enumerate(rows)
+        ]
+    )
     rate_t, rate_c = growth_rates(growth, settings.concentration_step_mEq_l)
-    summary = dict(onset_concentration_mEq_l=onset_c, final_length_um=length,
-                   max_tip_radial_stress_kPa=float(growth.tip_radial_stress_kPa.max()),
-                   growth_rate_um_per_pseudo_time=rate_t, growth_rate_um_per_mEq_l=rate_c,
-                   merged=merge_step is not None, merge_step=merge_step if merge_step is not None else np.nan,
-                   dissipated_energy_J_m2=1e-3 * dissipated / length if length > 0 else np.nan,
-                   dissipated_energy_kPa_um2=dissipated, stop=stop, passes=step, max_residual=max_residual,
-                   pressure_mmHg=measure.carried_pressure(model, state.evaluation) / MMHG_TO_KPA)
+    summary = dict(
+        onset_concentration_mEq_l=onset_c,
+        final_length_um=length,
+        max_tip_radial_stress_kPa=float(growth.tip_radial_stress_kPa.max()),
+        growth_rate_um_per_pseudo_time=rate_t,
+        growth_rate_um_per_mEq_l=rate_c,
+        merged=merge_step is not None,
+        merge_step=merge_step if merge_step is not None else np.nan,
+        dissipated_energy_J_m2=1e-3 * dissipated / length if length > 0 else np.nan,
+        dissipated_energy_kPa_um2=dissipated,
+        stop=stop,
+        passes=step,
+        max_residual=max_residual,
+        pressure_mmHg=measure.carried_pressure(model, state.evaluation) / MMHG_TO_KPA,
+    )
     if not any(s[0] == step and s[1].load == state.load for s in snapshots):
         snapshots.append((step, state, hist))
     return Result(growth, summary, snapshots, (state, hist))
@@ -395,13 +476,19 @@ def save_snapshots(path, model: Model, snapshots, params: dict) -> None:
     """All snapshots of a run in one ``.npz`` (:func:`sphgag.state.save_series`: positions, load, particle history),
     each with its radial Cauchy stress (eq. 2.10, current polar frame) as ``s{k}_radial_stress_kPa``; ``steps`` and
     ``concentrations`` index them. Each snapshot can restart the run (:func:`load_snapshot`)."""
-    arrays = dict(steps=np.array([s[0] for s in snapshots]),
-                  concentrations=np.array([s[1].load.material_value("concentration") for s in snapshots]),
-                  X=model.layout.X, volume=model.layout.volume, theta=model.layout.theta)
-    arrays.update({f"s{k}_radial_stress_kPa": measure.cauchy_polar(st.evaluation)[0]
-                   for k, (_, st, _) in enumerate(snapshots)})
-    state_io.save_series(path, [(st.x, st.load, dict(pseudo_time=int(step)), hist) for step, st, hist in snapshots],
-                         params, arrays)
+    arrays = dict(
+        steps=np.array([s[0] for s in snapshots]),
+        concentrations=np.array([s[1].load.material_value("concentration") for s in snapshots]),
+        X=model.layout.X,
+        volume=model.layout.volume,
+        theta=model.layout.theta,
+    )
+    arrays.update(
+        {f"s{k}_radial_stress_kPa": measure.cauchy_polar(st.evaluation)[0] for k, (_, st, _) in enumerate(snapshots)}
+    )
+    state_io.save_series(
+        path, [(st.x, st.load, dict(pseudo_time=int(step)), hist) for step, st, hist in snapshots], params, arrays
+    )
 
 
 def load_snapshot(path, k: int, expected_params: dict | None = None):
@@ -418,8 +505,15 @@ def labelled(result: Result, case: str, settings: Settings, dx: float) -> tuple[
     return growth, summary[SUMMARY_COLUMNS + [c for c in summary.columns if c not in SUMMARY_COLUMNS]]
 
 
-def convergence_study(dx: float, bilayer: dict, numerics: dict, homeostasis: dict, de: dict, gag: dict,
-                      name: str = "delamination_convergence") -> pd.DataFrame:
+def convergence_study(
+    dx: float,
+    bilayer: dict,
+    numerics: dict,
+    homeostasis: dict,
+    de: dict,
+    gag: dict,
+    name: str = "delamination_convergence",
+) -> pd.DataFrame:
     """Rows of ``results/delamination/convergence.csv`` for one particle spacing: the single pool at
     ``critical_stress_kPa``, every onset criterion, from the passive wall pressurised at this spacing."""
     p = dict(bilayer, dx_um=float(dx))
@@ -431,7 +525,8 @@ def convergence_study(dx: float, bilayer: dict, numerics: dict, homeostasis: dic
     for criterion in de["criteria"]:
         settings = Settings.from_config(de, de["critical_stress_kPa"], criterion)
         model = artery.bilayer_model(p, numerics, name=f"{name}_{criterion}")
-        result = grow(model, solver.State(start.load, start.x, None, None), sectors, settings, numerics, gag,
-                      model.props)
+        result = grow(
+            model, solver.State(start.load, start.x, None, None), sectors, settings, numerics, gag, model.props
+        )
         rows.append(labelled(result, "single", settings, dx)[1].assign(particles=model.n))
     return pd.concat(rows, ignore_index=True)

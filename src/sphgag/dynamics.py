@@ -50,9 +50,20 @@ def viscous_stress(F, F_old, dt, eta, out):
         out[i, 3] = c * (s01 * g10 + s11 * g11)
 
 
-def relax(model: Model, x0: np.ndarray, load: Load, *, density: float, dt: float = 1.0, eta: float = 0.0,
-          kinetic_damping: bool = True, tol: float = 1e-4, max_steps: int = 200_000, check_every: int = 50,
-          run: str | None = None):
+def relax(
+    model: Model,
+    x0: np.ndarray,
+    load: Load,
+    *,
+    density: float,
+    dt: float = 1.0,
+    eta: float = 0.0,
+    kinetic_damping: bool = True,
+    tol: float = 1e-4,
+    max_steps: int = 200_000,
+    check_every: int = 50,
+    run: str | None = None,
+):
     """Leapfrog relaxation (eq. 2.13) to the equilibrium at ``load``; returns ``(x, evaluation, convergence)``."""
     run = run or model.name
     t0 = time.perf_counter()
@@ -88,5 +99,8 @@ def relax(model: Model, x0: np.ndarray, load: Load, *, density: float, dt: float
             rel = relative_residual(model, ev)
             if rel < tol:
                 return x, ev, Convergence(rel, step, step + 1, 0, time.perf_counter() - t0)
-    raise NotConverged(run, load, f"relaxation did not converge in {max_steps} steps "
-                                  f"(relative residual {relative_residual(model, ev):.3g})")
+    raise NotConverged(
+        run,
+        load,
+        f"relaxation did not converge in {max_steps} steps (relative residual {relative_residual(model, ev):.3g})",
+    )

@@ -76,10 +76,21 @@ class PairData:
         solo_geo = np.column_stack([V[owner[se], None] * nb.a[se], nb.R[se]])
         pair_a = np.column_stack([nb.a[pe], nb.a[pr], ah[pe], ah[pr]])
         solo_a = np.column_stack([nb.a[se], ah[se]])
-        return cls(nb.pair_ptr, nb.ext[pe].copy(), np.ascontiguousarray(pair_geo), np.ascontiguousarray(pair_a),
-                   hgc[pe].copy(), nb.solo_ptr, nb.ext[se].copy(), np.ascontiguousarray(solo_geo),
-                   np.ascontiguousarray(solo_a), hgc[se].copy(), not np.array_equal(ah, nb.a), nb.ghost_owner,
-                   nb.ghost_mirror)
+        return cls(
+            nb.pair_ptr,
+            nb.ext[pe].copy(),
+            np.ascontiguousarray(pair_geo),
+            np.ascontiguousarray(pair_a),
+            hgc[pe].copy(),
+            nb.solo_ptr,
+            nb.ext[se].copy(),
+            np.ascontiguousarray(solo_geo),
+            np.ascontiguousarray(solo_a),
+            hgc[se].copy(),
+            not np.array_equal(ah, nb.a),
+            nb.ghost_owner,
+            nb.ghost_mirror,
+        )
 
 
 NO_EXTRA_STRESS = np.empty((0, 4))
@@ -91,9 +102,31 @@ def evaluate_forces(x, pd: PairData, lz, cth, sth, props, xe, fe, FP, f, extra=N
     ``extra`` (N, 4), if given, is added to every particle's P before the forces
     are formed (the viscous stress of section 2.3 in :mod:`sphgag.dynamics`).
     """
-    return forces_and_stresses(x, pd.pair_ptr, pd.pair_j, pd.pair_geo, pd.pair_a, pd.pair_hgc, pd.solo_ptr,
-                               pd.solo_j, pd.solo_geo, pd.solo_a, pd.solo_hgc, pd.split, pd.ghost_owner, pd.ghost_mirror, lz,
-                               cth, sth, props, extra, xe, fe, FP, f)
+    return forces_and_stresses(
+        x,
+        pd.pair_ptr,
+        pd.pair_j,
+        pd.pair_geo,
+        pd.pair_a,
+        pd.pair_hgc,
+        pd.solo_ptr,
+        pd.solo_j,
+        pd.solo_geo,
+        pd.solo_a,
+        pd.solo_hgc,
+        pd.split,
+        pd.ghost_owner,
+        pd.ghost_mirror,
+        lz,
+        cth,
+        sth,
+        props,
+        extra,
+        xe,
+        fe,
+        FP,
+        f,
+    )
 
 
 @njit(cache=True, error_model="numpy")
@@ -180,8 +213,31 @@ def _stresses(lz, cth, sth, props, extra, FP, n):
 
 
 @njit(cache=True, error_model="numpy")
-def forces_and_stresses(x, pair_ptr, pair_j, pair_geo, pair_a, pair_hgc, solo_ptr, solo_j, solo_geo, solo_a, solo_hgc,
-                        split, ghost_owner, ghost_mirror, lz, cth, sth, props, extra, xe, fe, FP, f):
+def forces_and_stresses(
+    x,
+    pair_ptr,
+    pair_j,
+    pair_geo,
+    pair_a,
+    pair_hgc,
+    solo_ptr,
+    solo_j,
+    solo_geo,
+    solo_a,
+    solo_hgc,
+    split,
+    ghost_owner,
+    ghost_mirror,
+    lz,
+    cth,
+    sth,
+    props,
+    extra,
+    xe,
+    fe,
+    FP,
+    f,
+):
     """One force evaluation: F (eq. 2.9), P (eq. 2.10) and the forces of eqs. (2.11), (2.14).
 
     Pass 1: ``F_i = sum_j (x_j - x_i) (x) a_ij`` and the hourglass deformation gradient
@@ -320,8 +376,7 @@ def _pattern_pairs(ptr, nbr, map_ptr, rows, cols):
 
 
 @njit(cache=True, error_model="numpy")
-def jacobian_blocks(x, V, ptr, nbr, mir, a, s, ah, sh, R, hgc, F, Fh, lz, cth, sth, props, blockmap, map_ptr,
-                    data):
+def jacobian_blocks(x, V, ptr, nbr, mir, a, s, ah, sh, R, hgc, F, Fh, lz, cth, sth, props, blockmap, map_ptr, data):
     """Add ``d(f_int + f_hg)/dx`` (eqs. 2.11, 2.14-2.15) to the 2 x 2 blocks ``data`` (:func:`block_pattern`).
 
     Elastic part: ``-sum_i V_i B_i^T A_i B_i`` with ``F_i = sum_p (M_p x_p) (x) b_p``

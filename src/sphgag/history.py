@@ -24,8 +24,8 @@ A GAG particle carries its pool's fixed-charge density, the load's
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, fields, replace
-from typing import Callable
 
 import numpy as np
 
@@ -62,7 +62,7 @@ class ParticleHistory:
             object.__setattr__(self, name, value)
 
     @classmethod
-    def intact(cls, n: int) -> "ParticleHistory":
+    def intact(cls, n: int) -> ParticleHistory:
         return cls(np.zeros(n), np.full(n, -1), np.zeros(n), np.full(n, np.nan), np.full(n, -1))
 
     @property
@@ -77,7 +77,7 @@ class ParticleHistory:
     def members(self, pool: int) -> np.ndarray:
         return np.flatnonzero(self.pool == pool)
 
-    def seed(self, pools) -> "ParticleHistory":
+    def seed(self, pools) -> ParticleHistory:
         """The GAG pools of the configuration: ``pools[k]`` are the indices of pool ``k``'s particles."""
         origin, pool, step = self.origin.copy(), self.pool.copy(), self.converted_step.copy()
         for k, idx in enumerate(pools):
@@ -87,14 +87,14 @@ class ParticleHistory:
             origin[idx], pool[idx], step[idx] = SEEDED, k, 0
         return replace(self, origin=origin, pool=pool, converted_step=step)
 
-    def with_damage(self, D, onset_stretch) -> "ParticleHistory":
+    def with_damage(self, D, onset_stretch) -> ParticleHistory:
         """The same history with new damage; refuses to let D decrease (eq. 2.28 is irreversible)."""
         D = np.asarray(D, dtype=float)
         if np.any(D < self.D):
             raise ValueError("damage never decreases")
         return replace(self, D=D, onset_stretch=onset_stretch)
 
-    def rupture(self, idx, pools, step: int) -> "ParticleHistory":
+    def rupture(self, idx, pools, step: int) -> ParticleHistory:
         """Particles ``idx`` (tissue) become GAG particles of pools ``pools`` at damage pass ``step``."""
         idx = np.asarray(idx, dtype=np.int64)
         if np.any(self.gag[idx]):
@@ -109,12 +109,14 @@ class ParticleHistory:
         return {f"history_{f.name}": getattr(self, f.name) for f in fields(self)}
 
     @classmethod
-    def from_arrays(cls, data) -> "ParticleHistory":
+    def from_arrays(cls, data) -> ParticleHistory:
         return cls(**{f.name: data[f"history_{f.name}"] for f in fields(cls)})
 
-    def equals(self, other: "ParticleHistory") -> bool:
-        return all(np.array_equal(getattr(self, f.name), getattr(other, f.name), equal_nan=f.name in ("D", "onset_stretch"))
-                   for f in fields(self))
+    def equals(self, other: ParticleHistory) -> bool:
+        return all(
+            np.array_equal(getattr(self, f.name), getattr(other, f.name), equal_nan=f.name in ("D", "onset_stretch"))
+            for f in fields(self)
+        )
 
 
 class HistoryMaterial:
@@ -135,8 +137,13 @@ class HistoryMaterial:
     Seeding a pool (figure 4) is the path from the intact history to the seeded one.
     """
 
-    def __init__(self, base: Callable[[Load], np.ndarray], before: ParticleHistory, gag: dict,
-                 after: ParticleHistory | None = None):
+    def __init__(
+        self,
+        base: Callable[[Load], np.ndarray],
+        before: ParticleHistory,
+        gag: dict,
+        after: ParticleHistory | None = None,
+    ):
         self.base, self.gag = base, gag
         self.before, self.after = before, before if after is None else after
         if self.before.n != self.after.n:
@@ -149,11 +156,11 @@ class HistoryMaterial:
         """The history at the end of the path (``transition = 1``)."""
         return self.after
 
-    def settled(self) -> "HistoryMaterial":
+    def settled(self) -> HistoryMaterial:
         """The same wall with the path completed: ``after`` becomes the history of both ends."""
         return HistoryMaterial(self.base, self.after, self.gag)
 
-    def towards(self, after: ParticleHistory) -> "HistoryMaterial":
+    def towards(self, after: ParticleHistory) -> HistoryMaterial:
         """A path from this material's final history to ``after``."""
         return HistoryMaterial(self.base, self.after, self.gag, after)
 
@@ -173,6 +180,7 @@ class HistoryMaterial:
             else:
                 pi = float(materials.swelling_pressure(charge, g["bath_concentration_mEq_l"], g["temperature_K"]))
                 fixed = None
-            materials.convert_to_gag(out, rows, fraction, g["shear_modulus_kPa"], g["hourglass_modulus_kPa"], pi,
-                                     g["lame_lambda_kPa"], fixed)
+            materials.convert_to_gag(
+                out, rows, fraction, g["shear_modulus_kPa"], g["hourglass_modulus_kPa"], pi, g["lame_lambda_kPa"], fixed
+            )
         return out

@@ -130,9 +130,20 @@ def ellipse_layout(a: float, b: float, dx: float, extent: float) -> EllipseLayou
         members.append(np.arange(start, start + tc.size))
         start += tc.size
     S = np.concatenate(S)
-    return EllipseLayout(X=np.vstack(X), volume=np.concatenate(vol), theta=np.zeros(start), s=S,
-                         t=np.concatenate(T), ring=np.concatenate(ring), ring_offset=0.5 * (bounds[1:] + bounds[:-1]),
-                         inclusion=S < 0.0, a=float(a), b=float(b), dx=float(dx), _members=members)
+    return EllipseLayout(
+        X=np.vstack(X),
+        volume=np.concatenate(vol),
+        theta=np.zeros(start),
+        s=S,
+        t=np.concatenate(T),
+        ring=np.concatenate(ring),
+        ring_offset=0.5 * (bounds[1:] + bounds[:-1]),
+        inclusion=S < 0.0,
+        a=float(a),
+        b=float(b),
+        dx=float(dx),
+        _members=members,
+    )
 
 
 def quarter_ellipse_area(a, b, extent):
@@ -193,20 +204,23 @@ def inclusion_model(a, b, dx, extent, mat: Materials, numerics: dict, name: str 
     """The block with its inclusion, mirror planes on both axes and the exact far field on the outer ring."""
     lay = ellipse_layout(a, b, dx, extent)
     nb = kernel.build_neighbours(lay.X, lay.volume, numerics["kernel_support_factor"] * dx, mirrors=(1, 2))
-    return Model(name, lay, nb, InclusionMaterial(lay, mat), numerics["hourglass_alpha"],
-                 boundary=ExactBoundary(lay, mat))
+    return Model(
+        name, lay, nb, InclusionMaterial(lay, mat), numerics["hourglass_alpha"], boundary=ExactBoundary(lay, mat)
+    )
 
 
 def swell(model: Model, pressure_kPa: float, numerics: dict) -> solver.State:
     """The converged state with the inclusion at swelling pressure ``pressure_kPa`` (one load step from rest)."""
     load = Load(1.0, 0.0, material=(("swelling_pressure", float(pressure_kPa)),))
     rest = Load(1.0, 0.0, material=(("swelling_pressure", 0.0),))
-    return solver.follow_path(model, model.layout.X, rest, [load], run=model.name,
-                              **protocols.solver_options(numerics))[-1]
+    return solver.follow_path(
+        model, model.layout.X, rest, [load], run=model.name, **protocols.solver_options(numerics)
+    )[-1]
 
 
 def normal_stress(lay: EllipseLayout, ev) -> tuple[np.ndarray, np.ndarray]:
-    """Cauchy stress normal and tangential to each particle's ring, ``(sigma_nn, sigma_tt)`` (current frame ~ reference)."""
+    """Cauchy stress normal and tangential to each particle's ring, ``(sigma_nn, sigma_tt)``
+    (current frame ~ reference)."""
     F, P = ev.F, ev.P
     J = F[:, 0, 0] * F[:, 1, 1] - F[:, 0, 1] * F[:, 1, 0]
     sig = np.einsum("nab,ncb->nac", P, F) / J[:, None, None]
@@ -240,14 +254,18 @@ def measure_state(model: Model, state: solver.State, pressure_kPa: float, mat: M
     snn, stt = normal_stress(lay, ev)
     k0 = lay.first_matrix_ring
     axis = np.array([lay.ring_members(k)[0] for k in range(lay.ring_offset.size)])  # closest to the major axis
-    out_axis = axis[k0:k0 + TIP_PARTICLES]
+    out_axis = axis[k0 : k0 + TIP_PARTICLES]
     tip = tip_fit(lay.s[out_axis], stt[out_axis], lay.b**2 / lay.a)
     ref = inglis.tip_hoop_stress(lay.a, lay.b, pressure_kPa)
     # traction continuity: ring-mean normal stress extrapolated linearly to s = 0 from each side
-    ring_mean = np.array([np.average(snn[lay.ring_members(k)], weights=lay.volume[lay.ring_members(k)])
-                          for k in range(lay.ring_offset.size)])
-    inside = _extrapolate(lay.ring_offset[k0 - 2:k0], ring_mean[k0 - 2:k0], 1) if k0 >= 2 else ring_mean[0]
-    outside = _extrapolate(lay.ring_offset[k0:k0 + 2], ring_mean[k0:k0 + 2], 1)
+    ring_mean = np.array(
+        [
+            np.average(snn[lay.ring_members(k)], weights=lay.volume[lay.ring_members(k)])
+            for k in range(lay.ring_offset.size)
+        ]
+    )
+    inside = _extrapolate(lay.ring_offset[k0 - 2 : k0], ring_mean[k0 - 2 : k0], 1) if k0 >= 2 else ring_mean[0]
+    outside = _extrapolate(lay.ring_offset[k0 : k0 + 2], ring_mean[k0 : k0 + 2], 1)
     # pointwise field error on the matrix (particles off the prescribed ring)
     free = ~lay.inclusion & (lay.ring < lay.ring_offset.size - 1)
     X = lay.X[free]
@@ -255,8 +273,9 @@ def measure_state(model: Model, state: solver.State, pressure_kPa: float, mat: M
     srr, sth, _, _ = measure.cauchy_polar(ev)
     err = np.concatenate([srr[free] - ex["srr"], sth[free] - ex["stt"]])
     first = out_axis[0]
-    first_ref = float(inglis.field(lay.X[first, 0], lay.X[first, 1], lay.a, lay.b, pressure_kPa, mat.mu,
-                                   mat.poisson_ratio)["syy"])
+    first_ref = float(
+        inglis.field(lay.X[first, 0], lay.X[first, 1], lay.a, lay.b, pressure_kPa, mat.mu, mat.poisson_ratio)["syy"]
+    )
     return dict(
         tip_stress_kPa=tip,
         reference_kPa=ref,
@@ -281,8 +300,15 @@ def axis_profile(model: Model, state: solver.State, pressure_kPa: float, mat: Ma
     k0 = lay.first_matrix_ring
     idx = np.array([lay.ring_members(k)[0] for k in range(k0, lay.ring_offset.size - 1)])
     ex = inglis.field(lay.X[idx, 0], lay.X[idx, 1], lay.a, lay.b, pressure_kPa, mat.mu, mat.poisson_ratio)
-    return pd.DataFrame(dict(s_um=lay.s[idx], hoop_sph_kPa=stt[idx], hoop_exact_kPa=ex["syy"],
-                             normal_sph_kPa=snn[idx], normal_exact_kPa=ex["sxx"]))
+    return pd.DataFrame(
+        dict(
+            s_um=lay.s[idx],
+            hoop_sph_kPa=stt[idx],
+            hoop_exact_kPa=ex["syy"],
+            normal_sph_kPa=snn[idx],
+            normal_exact_kPa=ex["sxx"],
+        )
+    )
 
 
 def ring_profile(model: Model, state: solver.State, pressure_kPa: float, mat: Materials) -> pd.DataFrame:
@@ -294,9 +320,15 @@ def ring_profile(model: Model, state: solver.State, pressure_kPa: float, mat: Ma
         m = lay.ring_members(k)
         r = lay.a + s
         lame = pressure_kPa * (lay.a / r) ** 2 if s > 0 else pressure_kPa
-        rows.append(dict(radius_um=r, radial_sph_kPa=np.average(srr[m], weights=lay.volume[m]),
-                         circ_sph_kPa=np.average(stt[m], weights=lay.volume[m]),
-                         radial_exact_kPa=-lame, circ_exact_kPa=lame if s > 0 else -pressure_kPa))
+        rows.append(
+            dict(
+                radius_um=r,
+                radial_sph_kPa=np.average(srr[m], weights=lay.volume[m]),
+                circ_sph_kPa=np.average(stt[m], weights=lay.volume[m]),
+                radial_exact_kPa=-lame,
+                circ_exact_kPa=lame if s > 0 else -pressure_kPa,
+            )
+        )
     return pd.DataFrame(rows)
 
 
@@ -312,9 +344,14 @@ def study(aspect_ratio: float, vp: dict, matrix: dict, gag: dict, numerics: dict
     b = float(vp["semi_axis_b_um"])
     a = float(aspect_ratio) * b
     Pi = float(vp["swelling_pressure_kPa"])
-    mat = Materials(mu=matrix["shear_modulus_kPa"], lam=matrix["lame_lambda_kPa"], mu_gag=gag["shear_modulus_kPa"],
-                    lam_gag=0.0, hourglass_modulus=matrix["hourglass_modulus_kPa"],
-                    gag_hourglass_modulus=gag["hourglass_modulus_kPa"])
+    mat = Materials(
+        mu=matrix["shear_modulus_kPa"],
+        lam=matrix["lame_lambda_kPa"],
+        mu_gag=gag["shear_modulus_kPa"],
+        lam_gag=0.0,
+        hourglass_modulus=matrix["hourglass_modulus_kPa"],
+        gag_hourglass_modulus=gag["hourglass_modulus_kPa"],
+    )
     extent = max(vp["extent_factor"] * a, 3.0 * b)
     rows, profiles = [], []
     for res in vp["resolutions"]:
@@ -330,10 +367,18 @@ def study(aspect_ratio: float, vp: dict, matrix: dict, gag: dict, numerics: dict
         if a == b:
             profiles.append(ring_profile(model, state, Pi, mat).assign(profile="rings", **common))
         if log is not None:
-            log.info("[%s] %d particles: tip %.4f kPa (Inglis %.4f, error %+.2f %%), traction jump %.3f Pi, "
-                     "field rms error %.3f Pi, residual %.1e", model.name, model.n, row["tip_stress_kPa"],
-                     row["reference_kPa"], 100 * row["rel_error"], row["traction_jump_kPa"] / Pi,
-                     row["field_rms_error_kPa"] / Pi, row["residual"])
+            log.info(
+                "[%s] %d particles: tip %.4f kPa (Inglis %.4f, error %+.2f %%), traction jump %.3f Pi, "
+                "field rms error %.3f Pi, residual %.1e",
+                model.name,
+                model.n,
+                row["tip_stress_kPa"],
+                row["reference_kPa"],
+                100 * row["rel_error"],
+                row["traction_jump_kPa"] / Pi,
+                row["field_rms_error_kPa"] / Pi,
+                row["residual"],
+            )
     return pd.DataFrame(rows), pd.concat(profiles, ignore_index=True)
 
 

@@ -87,8 +87,8 @@ def field(x, y, a, b, p, mu, nu) -> dict:
     zi2 = zi * zi
 
     # omega and its derivatives in zeta
-    w1 = R * (1.0 - m * zi2)          # omega'(zeta)
-    w2 = 2.0 * R * m * zi2 * zi       # omega''(zeta)
+    w1 = R * (1.0 - m * zi2)  # omega'(zeta)
+    w2 = 2.0 * R * m * zi2 * zi  # omega''(zeta)
 
     # phi and its zeta derivatives
     phi = -p * R * m * zi
@@ -102,12 +102,12 @@ def field(x, y, a, b, p, mu, nu) -> dict:
     psi_1 = c * (zeta * zeta + m) / (den * den)
 
     # derivatives with respect to z (chain rule)
-    Phi = phi_1 / w1                                   # phi'(z)
+    Phi = phi_1 / w1  # phi'(z)
     dPhi = (phi_2 * w1 - phi_1 * w2) / (w1 * w1 * w1)  # phi''(z)
-    dPsi = psi_1 / w1                                  # psi'(z)
+    dPsi = psi_1 / w1  # psi'(z)
 
     s_sum = 4.0 * Phi.real
-    s_dev = 2.0 * (np.conj(z) * dPhi + dPsi)           # syy - sxx + 2 i sxy
+    s_dev = 2.0 * (np.conj(z) * dPhi + dPsi)  # syy - sxx + 2 i sxy
     sxx = 0.5 * (s_sum - s_dev.real)
     syy = 0.5 * (s_sum + s_dev.real)
     sxy = 0.5 * s_dev.imag
@@ -123,9 +123,14 @@ def field(x, y, a, b, p, mu, nu) -> dict:
     srt = 0.5 * p_dev.imag
 
     return {
-        "ux": u.real, "uy": u.imag,
-        "sxx": sxx, "syy": syy, "sxy": sxy,
-        "srr": srr, "stt": stt, "srt": srt,
+        "ux": u.real,
+        "uy": u.imag,
+        "sxx": sxx,
+        "syy": syy,
+        "sxy": sxy,
+        "srr": srr,
+        "stt": stt,
+        "srt": srt,
     }
 
 

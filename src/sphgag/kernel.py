@@ -135,7 +135,7 @@ def _stencil_gradients(V, h, ptr, nbr, R, beta, a, s, A_out):
         s[i, 1] = s1
 
 
-def hourglass_gradients(nb: "Neighbours", V, tissue):
+def hourglass_gradients(nb: Neighbours, V, tissue):
     """Stencil weights and corrected gradients of the hourglass penalty (eqs. 2.8, 2.14-2.15) at a GAG/tissue interface.
 
     The hourglass penalty (eq. 2.14) punishes the part of a pair's separation
@@ -271,11 +271,25 @@ def build_neighbours(X, volume, h, mirrors=(1, 2)) -> Neighbours:
     if not np.array_equal(np.sort(key_lower), owner[upper] * n + nbr[upper]):
         raise AssertionError("neighbour lists are not symmetric")
     solo_entry = np.flatnonzero(ghost)
-    return Neighbours(ptr=ptr, nbr=nbr, mirror=mir, R=R, w=w, a=a, s=s, A=A, h=float(h),
-                      ext=ext.astype(np.uint32), ghost_owner=ghost_owner.astype(np.int64),
-                      ghost_mirror=np.ascontiguousarray(ghost_mirror),
-                      pair_ptr=_offsets(owner[pair_entry], n), pair_entry=pair_entry, pair_reverse=pair_reverse,
-                      solo_ptr=_offsets(owner[solo_entry], n), solo_entry=solo_entry)
+    return Neighbours(
+        ptr=ptr,
+        nbr=nbr,
+        mirror=mir,
+        R=R,
+        w=w,
+        a=a,
+        s=s,
+        A=A,
+        h=float(h),
+        ext=ext.astype(np.uint32),
+        ghost_owner=ghost_owner.astype(np.int64),
+        ghost_mirror=np.ascontiguousarray(ghost_mirror),
+        pair_ptr=_offsets(owner[pair_entry], n),
+        pair_entry=pair_entry,
+        pair_reverse=pair_reverse,
+        solo_ptr=_offsets(owner[solo_entry], n),
+        solo_entry=solo_entry,
+    )
 
 
 def _offsets(sorted_owner, n):

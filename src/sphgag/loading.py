@@ -55,7 +55,7 @@ class Load:
     def pressure_mmHg(self):
         return None if self.pressure_kPa is None else self.pressure_kPa / MMHG_TO_KPA
 
-    def with_material(self, **values) -> "Load":
+    def with_material(self, **values) -> Load:
         d = dict(self.material)
         d.update(values)
         return replace(self, material=tuple(sorted(d.items())))
@@ -63,7 +63,7 @@ class Load:
     def material_value(self, name, default=None):
         return dict(self.material).get(name, default)
 
-    def lerp(self, other: "Load", t: float) -> "Load":
+    def lerp(self, other: Load, t: float) -> Load:
         """The load a fraction ``t`` of the way from ``self`` to ``other``."""
         if (self.pressure_kPa is None) != (other.pressure_kPa is None):
             raise ValueError("cannot interpolate between pressure and radius control")

@@ -111,7 +111,7 @@ def merge_identical_families(props):
         rows = np.flatnonzero((props[:, FAM0:FAM_END] == props[row, FAM0:FAM_END]).all(axis=1))
         fams = []
         for k in range(int(props[row, NFAM])):
-            f = props[row, FAM0 + k * FAM_STRIDE: FAM0 + (k + 1) * FAM_STRIDE].copy()
+            f = props[row, FAM0 + k * FAM_STRIDE : FAM0 + (k + 1) * FAM_STRIDE].copy()
             for g in fams:
                 if np.array_equal(np.delete(g, PHI), np.delete(f, PHI)):
                     g[PHI] += f[PHI]
@@ -232,7 +232,8 @@ def material_tangent(c_rr, c_tt, c_rt, lz, props, i, C):
     The derivative of the stress of :func:`pk2` (eqs. 2.20-2.24, 2.27).
 
     Elastin + swelling: ``(LAM - PI J - PI_D' J^2) C^-1 (x) C^-1 + 2 beta I_{C^-1}`` with
-    ``beta = MU - LAM ln J + PI J`` (``PI`` including the Donnan ``PI_D(J)``) and ``I_{C^-1}`` the symmetrised identity on C^-1;
+    ``beta = MU - LAM ln J + PI J`` (``PI`` including the Donnan ``PI_D(J)``) and ``I_{C^-1}`` the symmetrised
+    identity on C^-1;
     fibres: ``4 phi W''(I4) G^4 sin^4 a`` on (tt, tt); active tone (no major
     symmetry): ``S_tt^act C^-1`` on row tt plus ``J (T'/l^2 - 2 T/l^3)/l`` on (tt, tt).
     """
@@ -359,8 +360,9 @@ def tangent_modulus(f00, f01, f10, f11, lz, cth, sth, props, i, C, A):
                     A[2 * a_ + B, 2 * c + D] = v
 
 
-def convert_to_gag(props, rows, fraction, shear_modulus, hourglass_modulus, swelling_pressure=0.0, lame=0.0,
-                   fixed_charge=None):
+def convert_to_gag(
+    props, rows, fraction, shear_modulus, hourglass_modulus, swelling_pressure=0.0, lame=0.0, fixed_charge=None
+):
     """Turn ``rows`` of a property table a ``fraction`` of the way into GAG (eq. 2.27), in place.
 
     A GAG particle is the modified neo-Hookean solid ``mu_GAG`` (no deposition
@@ -405,4 +407,3 @@ def swelling_pressure(c_fc, c_bath, temperature_K=310.0):
     """
     c = np.asarray(c_fc, dtype=float)
     return GAS_CONSTANT * temperature_K * (np.sqrt(c * c + c_bath * c_bath) - c_bath) / 1000.0
-

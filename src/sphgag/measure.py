@@ -103,9 +103,17 @@ def layer_stats(profile: pd.DataFrame) -> pd.DataFrame:
     rows = []
     for layer, g in profile.groupby("layer", sort=False):
         s = g.circ_stress_kPa
-        rows.append(dict(layer=layer, rings=len(g), circ_stress_mean_kPa=s.mean(), circ_stress_min_kPa=s.min(),
-                         circ_stress_max_kPa=s.max(), circ_variation=(s.max() - s.min()) / s.mean(),
-                         circ_cv=s.std(ddof=0) / s.mean()))
+        rows.append(
+            dict(
+                layer=layer,
+                rings=len(g),
+                circ_stress_mean_kPa=s.mean(),
+                circ_stress_min_kPa=s.min(),
+                circ_stress_max_kPa=s.max(),
+                circ_variation=(s.max() - s.min()) / s.mean(),
+                circ_cv=s.std(ddof=0) / s.mean(),
+            )
+        )
     return pd.DataFrame(rows)
 
 
@@ -116,8 +124,10 @@ def sector_average(ev: Evaluation, layout, sector, component: str, layer: str | 
     """
     idx = sector.members(layout, layer=layer)
     if idx.size == 0:
-        raise ValueError(f"no {layer or ''} particle in the measurement region {sector} at dx = {layout.dx} um: "
-                         "the region must be at least about one particle spacing in size")
+        raise ValueError(
+            f"no {layer or ''} particle in the measurement region {sector} at dx = {layout.dx} um: "
+            "the region must be at least about one particle spacing in size"
+        )
     srr, stt, _, _ = cauchy_polar(ev)
     values = {"rr": srr, "tt": stt}[component][idx]
     w = layout.volume[idx]
@@ -156,8 +166,10 @@ def averaging_matrix(layout, length: float, members: np.ndarray | None = None, r
     from scipy.spatial import cKDTree
 
     if length < layout.dx:
-        raise ValueError(f"the averaging length ({length:g} um) must be at least the particle spacing "
-                         f"({layout.dx:g} um): below it the average is a single particle's value")
+        raise ValueError(
+            f"the averaging length ({length:g} um) must be at least the particle spacing "
+            f"({layout.dx:g} um): below it the average is a single particle's value"
+        )
     X = layout.X
     pool = np.arange(layout.n) if members is None else np.asarray(members)
     at = np.arange(layout.n) if rows is None else np.asarray(rows, dtype=np.int64)

@@ -8,9 +8,9 @@ measurements need (:class:`Evaluation`).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Callable
 
 import numpy as np
 import scipy.sparse as sp
@@ -18,7 +18,7 @@ import scipy.sparse as sp
 from . import forces, kernel, materials
 from .geometry import Layout
 from .kernel import Neighbours
-from .loading import Load, add_pressure_stiffness, pressure_forces, prescribed_inner_positions
+from .loading import Load, add_pressure_stiffness, prescribed_inner_positions, pressure_forces
 
 
 @dataclass
@@ -52,7 +52,7 @@ class Evaluation:
     def finite(self) -> bool:
         return bool(np.isfinite(self.f_int).all() and np.isfinite(self.P).all())
 
-    def force_scale(self, model: "Model") -> float:
+    def force_scale(self, model: Model) -> float:
         """Reference force of the relative residual (see :func:`sphgag.solver.relative_residual`)."""
         loaded = np.linalg.norm(self.f_ext) + np.linalg.norm(self.reactions)
         q = np.empty(model.n)
@@ -116,8 +116,9 @@ class Model:
             props = np.ascontiguousarray(self.props(load) if callable(self.props) else self.props)
             V = self.layout.volume
             hgc = np.empty(self.nb.n_entries)
-            forces.hourglass_coefficients(V, self.nb.ptr, self.nb.nbr, self.nb.R, self.nb.w, props,
-                                          self.hourglass_alpha, hgc)
+            forces.hourglass_coefficients(
+                V, self.nb.ptr, self.nb.nbr, self.nb.R, self.nb.w, props, self.hourglass_alpha, hgc
+            )
             beta, ah, sh = kernel.hourglass_gradients(self.nb, V, props[:, materials.TISSUE])
             hgc *= beta
             pairs = forces.PairData.pack(self.nb, V, hgc, ah)
@@ -151,15 +152,26 @@ class Model:
         f = np.empty((n, 2))
         props, hgc, pairs = self.material(load)
         extra = forces.NO_EXTRA_STRESS if extra_stress is None else extra_stress
-        min_det = forces.evaluate_forces(x, pairs, load.axial_stretch, self.cth, self.sth, props, self._xe, self._fe,
-                                         FP, f, extra)
+        min_det = forces.evaluate_forces(
+            x, pairs, load.axial_stretch, self.cth, self.sth, props, self._xe, self._fe, FP, f, extra
+        )
         F, P = FP[:, :4].reshape(n, 2, 2), FP[:, 4:8].reshape(n, 2, 2)
         Fh = FP[:, 8:].reshape(n, 2, 2)
         p = load.pressure_kPa or 0.0
         f_ext = pressure_forces(x, lay.inner_surface, p, load.axial_stretch)
         cons, target = self.constraints(load)
-        return Evaluation(x=x, load=load, F=F, P=P, f_int=f, f_ext=f_ext, min_det=float(min_det),
-                          constrained=cons, target=target, F_hourglass=Fh)
+        return Evaluation(
+            x=x,
+            load=load,
+            F=F,
+            P=P,
+            f_int=f,
+            f_ext=f_ext,
+            min_det=float(min_det),
+            constrained=cons,
+            target=target,
+            F_hourglass=Fh,
+        )
 
     def jacobian(self, ev: Evaluation) -> np.ndarray:
         """``d(f_int + f_ext)/dx`` (exact) as the 2 x 2 blocks of the pattern :meth:`block_matrix` uses."""
@@ -168,8 +180,26 @@ class Model:
         ah, sh = self.hourglass_stencil(load)
         data = np.zeros((self.block_indices.size, 2, 2))
         forces.jacobian_blocks(
-            ev.x, lay.volume, nb.ptr, nb.nbr, nb.mirror, nb.a, nb.s, ah, sh, nb.R, hgc, ev.F, ev.F_hourglass,
-            load.axial_stretch, self.cth, self.sth, props, self.blockmap, self.map_ptr, data,
+            ev.x,
+            lay.volume,
+            nb.ptr,
+            nb.nbr,
+            nb.mirror,
+            nb.a,
+            nb.s,
+            ah,
+            sh,
+            nb.R,
+            hgc,
+            ev.F,
+            ev.F_hourglass,
+            load.axial_stretch,
+            self.cth,
+            self.sth,
+            props,
+            self.blockmap,
+            self.map_ptr,
+            data,
         )
         add_pressure_stiffness(data, self.block_index, lay.inner_surface, load.pressure_kPa or 0.0, load.axial_stretch)
         return data
@@ -196,6 +226,10 @@ class Model:
         ``ab[kl + ku + row - col, col]`` (shape ``(2 kl + ku + 1, 2 N)``); computed once."""
         rows = np.repeat(np.arange(self.n), np.diff(self.block_indptr))
         r = 2 * rows[:, None, None] + np.arange(2)[None, :, None] + np.zeros(2, dtype=np.int64)[None, None, :]
-        c = 2 * self.block_indices[:, None, None] + np.arange(2)[None, None, :] + np.zeros(2, dtype=np.int64)[None, :, None]
+        c = (
+            2 * self.block_indices[:, None, None]
+            + np.arange(2)[None, None, :]
+            + np.zeros(2, dtype=np.int64)[None, :, None]
+        )
         kl, ku = int((r - c).max()), int((c - r).max())
         return kl, ku, ((kl + ku + r - c) * (2 * self.n) + c).ravel()

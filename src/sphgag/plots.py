@@ -19,10 +19,17 @@ PRESSURE_COLOURS = {103.0: "#1b9e77", 145.0: "#d95f02", 200.0: "#7570b3"}
 
 
 def _style():
-    plt.rcParams.update({
-        "font.size": 9, "axes.labelsize": 9, "legend.fontsize": 8, "axes.spines.top": False,
-        "axes.spines.right": False, "figure.dpi": 150, "savefig.bbox": "tight",
-    })
+    plt.rcParams.update(
+        {
+            "font.size": 9,
+            "axes.labelsize": 9,
+            "legend.fontsize": 8,
+            "axes.spines.top": False,
+            "axes.spines.right": False,
+            "figure.dpi": 150,
+            "savefig.bbox": "tight",
+        }
+    )
 
 
 def pressure_colour(p):
@@ -63,21 +70,32 @@ def save(fig, paths, description: str):
     plt.close(fig)
 
 
-def pressure_diameter_panels(ax_pd, ax_ss, states: pd.DataFrame, exact: pd.DataFrame, label="SPH", colour="k",
-                             marker="o", exact_label="exact thick wall"):
+def pressure_diameter_panels(
+    ax_pd,
+    ax_ss,
+    states: pd.DataFrame,
+    exact: pd.DataFrame,
+    label="SPH",
+    colour="k",
+    marker="o",
+    exact_label="exact thick wall",
+):
     """Pressure-outer diameter and mean circumferential stress-stretch (figure 3a), one model."""
     ax_pd.plot(exact.outer_diameter_um, exact.pressure_mmHg, "-", color=colour, lw=1.2, label=exact_label)
     ax_pd.plot(states.outer_diameter_um, states.pressure_mmHg, marker, mfc="none", color=colour, ms=4, label=label)
     ax_ss.plot(exact.mean_circ_stretch, exact.mean_circ_stress_kPa, "-", color=colour, lw=1.2, label=exact_label)
-    ax_ss.plot(states.mean_circ_stretch, states.mean_circ_stress_kPa, marker, mfc="none", color=colour, ms=4,
-               label=label)
+    ax_ss.plot(
+        states.mean_circ_stretch, states.mean_circ_stress_kPa, marker, mfc="none", color=colour, ms=4, label=label
+    )
 
 
 def mark_homeostasis(ax_pd, ax_ss, exact: pd.DataFrame):
     """Horizontal and vertical lines at the homeostatic pressure (figure 3a)."""
     row = exact.iloc[(exact.pressure_mmHg - HOMEOSTATIC_MMHG).abs().argmin()]
-    for ax, x, y in ((ax_pd, row.outer_diameter_um, HOMEOSTATIC_MMHG),
-                     (ax_ss, row.mean_circ_stretch, row.mean_circ_stress_kPa)):
+    for ax, x, y in (
+        (ax_pd, row.outer_diameter_um, HOMEOSTATIC_MMHG),
+        (ax_ss, row.mean_circ_stretch, row.mean_circ_stress_kPa),
+    ):
         ax.axhline(y, color="0.6", lw=0.6, ls=":")
         ax.axvline(x, color="0.6", lw=0.6, ls=":")
 
@@ -91,8 +109,15 @@ def fig3a_mean(states: pd.DataFrame, exact: pd.DataFrame, max_error: float):
     ax_pd.set(xlabel="outer diameter (um)", ylabel="pressure (mmHg)", title="mean-behaviour model")
     ax_ss.set(xlabel="mean circumferential stretch (eq. 2.17)", ylabel="mean circumferential stress (kPa)")
     ax_pd.legend(loc="upper left", frameon=False)
-    ax_pd.text(0.98, 0.04, f"max |OD error| (10-200 mmHg)\n= {100 * max_error:.2f} %", transform=ax_pd.transAxes,
-               ha="right", va="bottom", fontsize=7)
+    ax_pd.text(
+        0.98,
+        0.04,
+        f"max |OD error| (10-200 mmHg)\n= {100 * max_error:.2f} %",
+        transform=ax_pd.transAxes,
+        ha="right",
+        va="bottom",
+        fontsize=7,
+    )
     fig.tight_layout()
     return fig
 
@@ -147,8 +172,16 @@ def bilayer_pressure_diameter_panels(ax_pd, ax_ss, table: pd.DataFrame, exact: d
     """Figure 3a for the bi-layered model: passive and active, SPH points over the semi-analytical curves."""
     for model in ("passive", "active"):
         st = MODEL_STYLE[model]
-        pressure_diameter_panels(ax_pd, ax_ss, table[table.model == model], exact[model], label=f"SPH {model}",
-                                 colour=st["color"], marker=st["marker"], exact_label=f"semi-analytical {model}")
+        pressure_diameter_panels(
+            ax_pd,
+            ax_ss,
+            table[table.model == model],
+            exact[model],
+            label=f"SPH {model}",
+            colour=st["color"],
+            marker=st["marker"],
+            exact_label=f"semi-analytical {model}",
+        )
 
 
 def normalised_position(radius, profile):
@@ -202,8 +235,10 @@ def fig3(mean_states, mean_exact, bilayer, bilayer_exact: dict, profiles: pd.Dat
     bilayer_transmural_panels(axes[0, 3], axes[1, 3], profiles)
     axes[0, 3].set_title("(c) bi-layered model")
     handles = [plt.Line2D([], [], color=pressure_colour(P), lw=1.2, label=f"{P:g} mmHg") for P in PRESSURE_COLOURS]
-    handles += [plt.Line2D([], [], color="k", marker="o", mfc="none", ls="-", label="passive / mean: SPH, exact"),
-                plt.Line2D([], [], color="k", marker="^", mfc="none", ls="--", label="active: SPH, exact")]
+    handles += [
+        plt.Line2D([], [], color="k", marker="o", mfc="none", ls="-", label="passive / mean: SPH, exact"),
+        plt.Line2D([], [], color="k", marker="^", mfc="none", ls="--", label="active: SPH, exact"),
+    ]
     axes[1, 3].legend(handles=handles, frameon=False, fontsize=7, loc="upper left", bbox_to_anchor=(0.0, 0.9))
     fig.tight_layout()
     return fig
@@ -281,9 +316,14 @@ POOL_MEASURES = {  # the pool figures' columns (tip_stress.csv, convergence.csv)
     "top_circ_stress_kPa": (TOP, "region mean"),
     "pool_volume_change": ("pool volume change", "region mean"),
 }
-STATISTIC_LINES = dict(style="statistic", style_order=["region mean", "particle peak"],
-                       dashes={"region mean": "", "particle peak": (1, 1.65)},
-                       markers={"region mean": "o", "particle peak": "."}, markersize=3, markeredgewidth=0)
+STATISTIC_LINES = dict(
+    style="statistic",
+    style_order=["region mean", "particle peak"],
+    dashes={"region mean": "", "particle peak": (1, 1.65)},
+    markers={"region mean": "o", "particle peak": "."},
+    markersize=3,
+    markeredgewidth=0,
+)
 
 
 def swelling_lines(data: pd.DataFrame, colours: dict, **_):
@@ -291,10 +331,30 @@ def swelling_lines(data: pd.DataFrame, colours: dict, **_):
     per pressure, a line style per statistic; the intact wall's value as a large dot at zero concentration."""
     ax = plt.gca()
     conv, intact = data[data.stage == "converted"], data[data.stage == "intact"]
-    sns.lineplot(conv, x="concentration_mEq_l", y="value", hue="pressure", hue_order=list(colours), palette=colours,
-                 estimator=None, lw=1.0, ax=ax, **STATISTIC_LINES)
-    sns.scatterplot(intact, x="concentration_mEq_l", y="value", hue="pressure", palette=colours, s=36, linewidth=0,
-                    clip_on=False, legend=False, ax=ax)
+    sns.lineplot(
+        conv,
+        x="concentration_mEq_l",
+        y="value",
+        hue="pressure",
+        hue_order=list(colours),
+        palette=colours,
+        estimator=None,
+        lw=1.0,
+        ax=ax,
+        **STATISTIC_LINES,
+    )
+    sns.scatterplot(
+        intact,
+        x="concentration_mEq_l",
+        y="value",
+        hue="pressure",
+        palette=colours,
+        s=36,
+        linewidth=0,
+        clip_on=False,
+        legend=False,
+        ax=ax,
+    )
     if (data.quantity == TIP).any():
         ax.axhline(0.0, color="0.7", lw=0.6)
 
@@ -306,15 +366,25 @@ def fig4(tips: pd.DataFrame, particles: pd.DataFrame, cases: dict, probe_length:
     names = sorted(cases, key=lambda k: cases[k]["angular_extent_deg"])
     models = [m for m in ("passive", "active") if m in set(tips.model)]
     pressures = palette(sorted(tips.pressure_mmHg.unique()), PRESSURE_COLOURS, "{:g} mmHg".format)
-    long = long_measures(tips.assign(pressure=tips.pressure_mmHg.map("{:g} mmHg".format)),
-                         {c: POOL_MEASURES[c] for c in ("tip_radial_stress_kPa", "tip_peak_radial_stress_kPa",
-                                                        "top_circ_stress_kPa")},
-                         ["model", "case", "stage", "pressure", "concentration_mEq_l"])
+    long = long_measures(
+        tips.assign(pressure=tips.pressure_mmHg.map("{:g} mmHg".format)),
+        {c: POOL_MEASURES[c] for c in ("tip_radial_stress_kPa", "tip_peak_radial_stress_kPa", "top_circ_stress_kPa")},
+        ["model", "case", "stage", "pressure", "concentration_mEq_l"],
+    )
     long = long[(long.stage == "converted") | (long.statistic == "region mean")]  # no peak of the intact wall
     long["panel"] = long.model.map({m: f"({'bc'[i]}) {m}\n" for i, m in enumerate(models)}) + long.quantity
     panels = [f"({'bc'[i]}) {m}\n{q}" for i, m in enumerate(models) for q in (TIP, TOP)]
-    grid = sns.FacetGrid(long, row="panel", col="case", row_order=["(a)"] + panels, col_order=names, sharex=False,
-                         sharey="row", height=2.3, aspect=3.0 / 2.3)
+    grid = sns.FacetGrid(
+        long,
+        row="panel",
+        col="case",
+        row_order=["(a)"] + panels,
+        col_order=names,
+        sharex=False,
+        sharey="row",
+        height=2.3,
+        aspect=3.0 / 2.3,
+    )
     grid.map_dataframe(swelling_lines, colours=pressures)
     grid.add_legend()
     grid.set_titles("")
@@ -322,8 +392,9 @@ def fig4(tips: pd.DataFrame, particles: pd.DataFrame, cases: dict, probe_length:
     for ax, panel in zip(grid.axes[1:, 0], panels):
         ax.set_ylabel(panel)
     for ax, name in zip(grid.axes[0], names):
-        pool_geometry_panel(ax, particles, cases[name], probe_length,
-                            f"(a) case {name}: {cases[name]['angular_extent_deg']:g} deg")
+        pool_geometry_panel(
+            ax, particles, cases[name], probe_length, f"(a) case {name}: {cases[name]['angular_extent_deg']:g} deg"
+        )
     grid.axes[0, 0].set_ylabel("radius (um)")
     grid.tight_layout()
     return grid.figure
@@ -335,7 +406,7 @@ RATIO_COLOURS = {1.0: "#1b9e77", 2.0: "#d95f02", 3.0: "#7570b3"}
 def verification_pool(table: pd.DataFrame, profiles: pd.DataFrame):
     """The pool verification: (a) Lamé field of the circle, (b) hoop stress ahead of the tip against Inglis,
     (c) tip error and (d) traction jump and field error against resolution (log-log, observed order)."""
-    from .inclusion import observed_order, TIP_PARTICLES
+    from .inclusion import TIP_PARTICLES, observed_order
 
     _style()
     fig, axes = plt.subplots(1, 4, figsize=(16.0, 3.1))
@@ -347,8 +418,9 @@ def verification_pool(table: pd.DataFrame, profiles: pd.DataFrame):
         b = float(table[table.aspect_ratio == 1.0].semi_axis_b_um.iloc[0])
         for k, (res, g) in enumerate(sorted(rings.groupby("b_over_dx"), key=lambda t: t[0])[-2:]):
             mk = "os"[k]
-            ax.plot(g.radius_um / b, g.radial_sph_kPa / Pi, mk, ms=3, mfc="none", color="C0",
-                    label=f"SPH b/dx = {res:g}")
+            ax.plot(
+                g.radius_um / b, g.radial_sph_kPa / Pi, mk, ms=3, mfc="none", color="C0", label=f"SPH b/dx = {res:g}"
+            )
             ax.plot(g.radius_um / b, g.circ_sph_kPa / Pi, mk, ms=3, mfc="none", color="C3")
         g = rings[rings.b_over_dx == rings.b_over_dx.max()].sort_values("radius_um")
         ax.plot(g.radius_um / b, g.radial_exact_kPa / Pi, "-", color="C0", lw=1, label=r"Lamé $\sigma_{rr}$")
@@ -362,27 +434,56 @@ def verification_pool(table: pd.DataFrame, profiles: pd.DataFrame):
         p = profiles[(profiles.profile == "axis") & (profiles.aspect_ratio == ratio) & (profiles.b_over_dx == finest)]
         b = float(g.semi_axis_b_um.iloc[0])
         ax.plot(p.s_um / b, p.hoop_exact_kPa / Pi, "-", color=colour(ratio), lw=1)
-        ax.plot(p.s_um / b, p.hoop_sph_kPa / Pi, "o", ms=2.5, mfc="none", color=colour(ratio),
-                label=f"a/b = {ratio:g} (b/dx = {finest:g})")
+        ax.plot(
+            p.s_um / b,
+            p.hoop_sph_kPa / Pi,
+            "o",
+            ms=2.5,
+            mfc="none",
+            color=colour(ratio),
+            label=f"a/b = {ratio:g} (b/dx = {finest:g})",
+        )
         row = g[g.b_over_dx == finest].iloc[0]
         ax.plot([0], [row.tip_stress_kPa / Pi], "*", ms=8, color=colour(ratio))
         ax.plot([0], [row.reference_kPa / Pi], "_", ms=14, mew=1.5, color="k")
-    ax.set(xlim=(0, None), xlabel="distance ahead of the tip / b", ylabel="hoop stress / Pi",
-           title="(b) ahead of the tip: SPH (o), Inglis (-)")
-    ax.text(0.98, 0.97, f"* fit of the first {TIP_PARTICLES} particles\n- Inglis Pi (2a/b - 1)",
-            transform=ax.transAxes, ha="right", va="top", fontsize=6.5)
+    ax.set(
+        xlim=(0, None),
+        xlabel="distance ahead of the tip / b",
+        ylabel="hoop stress / Pi",
+        title="(b) ahead of the tip: SPH (o), Inglis (-)",
+    )
+    ax.text(
+        0.98,
+        0.97,
+        f"* fit of the first {TIP_PARTICLES} particles\n- Inglis Pi (2a/b - 1)",
+        transform=ax.transAxes,
+        ha="right",
+        va="top",
+        fontsize=6.5,
+    )
     ax.legend(frameon=False, fontsize=6.5, loc="center right")
     ratios = sorted(table.aspect_ratio.unique())
-    errors = table.assign(tip=table.rel_error.abs(), first=table.first_particle_rel_error.abs(),
-                          field=table.field_rms_error_kPa / Pi, jump=np.maximum(table.traction_jump_kPa / Pi, 1e-4))
+    errors = table.assign(
+        tip=table.rel_error.abs(),
+        first=table.first_particle_rel_error.abs(),
+        field=table.field_rms_error_kPa / Pi,
+        jump=np.maximum(table.traction_jump_kPa / Pi, 1e-4),
+    )
     orders = {r: observed_order(g.dx_um, g.rel_error) for r, g in table.groupby("aspect_ratio")}
-    resolution_panel(axes[2], errors, {"tip": ("tip stress", "o", ""), "first": ("first particle", "X", (1, 1.65))},
-                     palette(ratios, RATIO_COLOURS, lambda r: f"a/b = {r:g}: order {orders[r]:.2f}"))
+    resolution_panel(
+        axes[2],
+        errors,
+        {"tip": ("tip stress", "o", ""), "first": ("first particle", "X", (1, 1.65))},
+        palette(ratios, RATIO_COLOURS, lambda r: f"a/b = {r:g}: order {orders[r]:.2f}"),
+    )
     axes[2].axhline(0.05, color="0.6", lw=0.6, ls="--")
     axes[2].set(ylabel="|relative error|", title="(c) tip stress and first particle")
-    resolution_panel(axes[3], errors, {"field": ("field rms error", "o", ""),
-                                       "jump": ("traction jump", "s", (3.7, 1.6))},
-                     palette(ratios, RATIO_COLOURS, "a/b = {:g}".format))
+    resolution_panel(
+        axes[3],
+        errors,
+        {"field": ("field rms error", "o", ""), "jump": ("traction jump", "s", (3.7, 1.6))},
+        palette(ratios, RATIO_COLOURS, "a/b = {:g}".format),
+    )
     axes[3].set(ylabel="/ Pi", title="(d) field rms error, traction jump")
     fig.tight_layout()
     return fig
@@ -396,11 +497,22 @@ def resolution_panel(ax, errors: pd.DataFrame, measures: dict, ratios: dict):
     long = errors.assign(dx_over_b=errors.dx_um / errors.semi_axis_b_um, ratio=errors.aspect_ratio.map(labels))
     long = long.melt(id_vars=["ratio", "dx_over_b"], value_vars=list(measures), var_name="measure")
     long["measure"] = long.measure.map(lambda c: measures[c][0])
-    sns.lineplot(long, x="dx_over_b", y="value", hue="ratio", hue_order=list(ratios), palette=ratios,
-                 style="measure", style_order=[name for name, _, _ in measures.values()],
-                 markers={name: marker for name, marker, _ in measures.values()},
-                 dashes={name: dashes for name, _, dashes in measures.values()}, estimator=None, lw=1.0, markersize=4,
-                 ax=ax)
+    sns.lineplot(
+        long,
+        x="dx_over_b",
+        y="value",
+        hue="ratio",
+        hue_order=list(ratios),
+        palette=ratios,
+        style="measure",
+        style_order=[name for name, _, _ in measures.values()],
+        markers={name: marker for name, marker, _ in measures.values()},
+        dashes={name: dashes for name, _, dashes in measures.values()},
+        estimator=None,
+        lw=1.0,
+        markersize=4,
+        ax=ax,
+    )
     ax.set(xscale="log", yscale="log", xlabel="dx / b")
     style_legend(ax, "upper left", fontsize=6.5, bbox_to_anchor=(1.0, 1.0))
 
@@ -412,13 +524,28 @@ def swelling_convergence(table: pd.DataFrame):
     _style()
     spacings = sorted(table.dx_um.unique(), reverse=True)
     shades = dict(zip([f"{dx:g} um" for dx in spacings], plt.cm.viridis(np.linspace(0.1, 0.85, len(spacings)))))
-    long = long_measures(table.assign(dx=table.dx_um.map("{:g} um".format)), POOL_MEASURES,
-                         ["case", "dx", "concentration_mEq_l"])
+    long = long_measures(
+        table.assign(dx=table.dx_um.map("{:g} um".format)), POOL_MEASURES, ["case", "dx", "concentration_mEq_l"]
+    )
     quantities = list(dict.fromkeys(q for q, _ in POOL_MEASURES.values()))
-    grid = sns.relplot(long, kind="line", x="concentration_mEq_l", y="value", hue="dx", hue_order=list(shades),
-                       palette=shades, row="quantity", row_order=quantities, col="case", estimator=None, lw=1.0,
-                       height=7.0 / 3, aspect=3.4 / (7.0 / 3), facet_kws=dict(sharey=False, margin_titles=True),
-                       **STATISTIC_LINES)
+    grid = sns.relplot(
+        long,
+        kind="line",
+        x="concentration_mEq_l",
+        y="value",
+        hue="dx",
+        hue_order=list(shades),
+        palette=shades,
+        row="quantity",
+        row_order=quantities,
+        col="case",
+        estimator=None,
+        lw=1.0,
+        height=7.0 / 3,
+        aspect=3.4 / (7.0 / 3),
+        facet_kws=dict(sharey=False, margin_titles=True),
+        **STATISTIC_LINES,
+    )
     grid.set_titles(row_template="", col_template="case {col_name}")
     grid.set_axis_labels(GAG_CONCENTRATION, "")
     for ax, quantity in zip(grid.axes[:, 0], quantities):
@@ -491,8 +618,9 @@ def snapshot_panel(ax, snap: dict, k: int, window, radii, media_outer_um: float,
     origin, D = snap[f"s{k}_history_origin"][near], snap[f"s{k}_history_D"][near]
     th, r = current_polar(snap, k, near)
     media = np.hypot(*snap["X"][near].T) <= media_outer_um
-    colours = matplotlib.colors.to_rgba_array(np.where(media, MATERIAL_COLOURS["media"],
-                                                       MATERIAL_COLOURS["adventitia"]))
+    colours = matplotlib.colors.to_rgba_array(
+        np.where(media, MATERIAL_COLOURS["media"], MATERIAL_COLOURS["adventitia"])
+    )
     damaged = (origin == 0) & (D > 0)
     colours[damaged] = DAMAGE_CMAP(D[damaged])
     for code in (SEEDED, CONVERTED):
@@ -505,8 +633,11 @@ def snapshot_panel(ax, snap: dict, k: int, window, radii, media_outer_um: float,
     ax.set_aspect(180.0 / (np.pi * radius))  # 1 um of arc at the pools' radius as long as 1 um of radius
     ax.set_xlim(*window)
     ax.set_ylim(*radii)
-    ax.set_title(f"{label}c = {snap['concentrations'][k]:g} mEq/l, pass {int(snap['steps'][k])}: "
-                 f"{snapshot_status(snap, k)}", fontsize=8, loc="left")
+    ax.set_title(
+        f"{label}c = {snap['concentrations'][k]:g} mEq/l, pass {int(snap['steps'][k])}: {snapshot_status(snap, k)}",
+        fontsize=8,
+        loc="left",
+    )
 
 
 def fit_particle_sizes(fig):
@@ -524,10 +655,16 @@ def fit_particle_sizes(fig):
 
 def material_key(fig, cax):
     """The legend of the snapshot panels' colours (above the figure) and the colour bar of the damage in ``cax``."""
-    key = {"media": "intact media", "adventitia": "intact adventitia", SEEDED: "seeded GAG pool",
-           CONVERTED: "GAG converted by damage"}
-    handles = [plt.Line2D([], [], marker="s", ls="none", ms=7, color=MATERIAL_COLOURS[m], label=text)
-               for m, text in key.items()]
+    key = {
+        "media": "intact media",
+        "adventitia": "intact adventitia",
+        SEEDED: "seeded GAG pool",
+        CONVERTED: "GAG converted by damage",
+    }
+    handles = [
+        plt.Line2D([], [], marker="s", ls="none", ms=7, color=MATERIAL_COLOURS[m], label=text)
+        for m, text in key.items()
+    ]
     fig.legend(handles=handles, loc="outside upper center", ncols=4, frameon=False)
     bar = fig.colorbar(matplotlib.cm.ScalarMappable(matplotlib.colors.Normalize(0.0, 1.0), DAMAGE_CMAP), cax=cax)
     bar.set_label("damage D of tissue (eq. 2.28)")
@@ -549,28 +686,61 @@ def run_note(summary: pd.DataFrame, **labels) -> str:
 def no_growth_note(ax, runs: pd.DataFrame):
     """Say so in the panel if none of ``runs`` converted a single particle."""
     if runs.converted_particles.max() == 0:
-        ax.text(0.5, 0.5, "no growth: no particle converted", transform=ax.transAxes, ha="center", va="center",
-                fontsize=8, color="0.3", bbox=dict(fc="w", ec="0.7", lw=0.6))
+        ax.text(
+            0.5,
+            0.5,
+            "no growth: no particle converted",
+            transform=ax.transAxes,
+            ha="center",
+            va="center",
+            fontsize=8,
+            color="0.3",
+            bbox=dict(fc="w", ec="0.7", lw=0.6),
+        )
 
 
 def converted_panel(ax, growth: pd.DataFrame, summary: pd.DataFrame, case: str, criteria, title: str):
     """Particles converted on the interior (between the pools) and exterior side against pseudo-time (seaborn: a
     colour per side, a line style per onset criterion); a dotted line where the pools merged."""
     runs = growth[growth.case == case].sort_values("step")
-    long = runs.melt(id_vars=["criterion", "step"], value_vars=[f"converted_{side}" for side in SIDE_COLOURS],
-                     var_name="side", value_name="converted")
+    long = runs.melt(
+        id_vars=["criterion", "step"],
+        value_vars=[f"converted_{side}" for side in SIDE_COLOURS],
+        var_name="side",
+        value_name="converted",
+    )
     long["side"] = long.side.str.removeprefix("converted_")
-    sns.lineplot(long, x="step", y="converted", hue="side", hue_order=list(SIDE_COLOURS), palette=SIDE_COLOURS,
-                 style="criterion", style_order=list(criteria), dashes=dict(zip(criteria, CRITERION_DASHES)),
-                 estimator=None, sort=False, lw=1.0, ax=ax)
+    sns.lineplot(
+        long,
+        x="step",
+        y="converted",
+        hue="side",
+        hue_order=list(SIDE_COLOURS),
+        palette=SIDE_COLOURS,
+        style="criterion",
+        style_order=list(criteria),
+        dashes=dict(zip(criteria, CRITERION_DASHES)),
+        estimator=None,
+        sort=False,
+        lw=1.0,
+        ax=ax,
+    )
     for criterion in criteria:
         merged = summary[(summary.case == case) & (summary.criterion == criterion) & summary.merged.astype(bool)]
         run = runs[runs.criterion == criterion]
         for step in merged.merge_step:
             row = run.step[run.pseudo_time >= step].min()
             ax.axvline(row, color="0.3", ls=":", lw=0.8)
-            ax.text(row, 0.5, f" merged ({criterion})", transform=ax.get_xaxis_transform(), fontsize=7,
-                    color="0.3", rotation=90, va="center")
+            ax.text(
+                row,
+                0.5,
+                f" merged ({criterion})",
+                transform=ax.get_xaxis_transform(),
+                fontsize=7,
+                color="0.3",
+                rotation=90,
+                va="center",
+            )
     no_growth_note(ax, runs)
     ax.set(xlabel=PSEUDO_TIME, ylabel="converted particles", title=title)
     ax.set_ylim(-0.5, max(ax.get_ylim()[1], 2.0))
@@ -578,23 +748,32 @@ def converted_panel(ax, growth: pd.DataFrame, summary: pd.DataFrame, case: str, 
     style_legend(ax)
 
 
-def tip_stress_panel(ax, runs: pd.DataFrame, by: str, labels: dict, colours: dict, sigma_colours: dict, title: str,
-                     dashes=None):
+def tip_stress_panel(
+    ax, runs: pd.DataFrame, by: str, labels: dict, colours: dict, sigma_colours: dict, title: str, dashes=None
+):
     """The largest onset-measure radial stress in front of the pools against pseudo-time (the sawtooth of figure
     5b), seaborn: one line per value of ``runs[by]`` (legend ``labels``, ``colours``, optionally ``dashes``), a
     cross after every pass in which particles were converted; a dashed line at each sigma_cr of ``sigma_colours``."""
     runs = runs.sort_values("step").assign(run=runs[by].map(labels))
     lines = dict(hue="run", hue_order=list(labels.values()), palette={labels[k]: colours[k] for k in labels})
     style = {} if dashes is None else dict(style="run", dashes={labels[k]: dashes[k] for k in labels})
-    sns.lineplot(runs, x="step", y="tip_radial_stress_kPa", estimator=None, sort=False, lw=1.0, ax=ax, **lines,
-                 **style)
+    sns.lineplot(runs, x="step", y="tip_radial_stress_kPa", estimator=None, sort=False, lw=1.0, ax=ax, **lines, **style)
     burst = runs.groupby(by).converted_particles.diff().fillna(0.0) > 0  # after a pass that converted particles
-    sns.scatterplot(runs[burst], x="step", y="tip_radial_stress_kPa", marker="x", s=16, linewidth=1.0,
-                    legend=False, ax=ax, **lines)
+    sns.scatterplot(
+        runs[burst], x="step", y="tip_radial_stress_kPa", marker="x", s=16, linewidth=1.0, legend=False, ax=ax, **lines
+    )
     for sigma, colour in sigma_colours.items():
         ax.axhline(sigma, color=colour, ls=(0, (4, 3)), lw=0.8)
-        ax.text(1.0, sigma, f" {sigma:g}", transform=ax.get_yaxis_transform(), color=colour, fontsize=7,
-                va="center", ha="left")
+        ax.text(
+            1.0,
+            sigma,
+            f" {sigma:g}",
+            transform=ax.get_yaxis_transform(),
+            color=colour,
+            fontsize=7,
+            va="center",
+            ha="left",
+        )
     ax.axhline(0.0, color="0.7", lw=0.6)
     lo, hi = ax.get_ylim()
     ax.set_ylim(lo, hi + 0.12 * len(labels) * (hi - lo))  # room for the legend above the curves
@@ -608,8 +787,9 @@ def snapshot_grid(fig, spec, columns, media_outer_um):
     rows = max(len(col) for col in columns)
     grid = spec.subgridspec(rows, len(columns) + 1, width_ratios=[1.0] * len(columns) + [0.015])
     windows = [snapshot_window([(snap, k) for snap, k, _ in col]) for col in columns]
-    r = np.concatenate([current_polar(snap, k, in_window(snap, w))[1] for col, w in zip(columns, windows)
-                        for snap, k, _ in col])
+    r = np.concatenate(
+        [current_polar(snap, k, in_window(snap, w))[1] for col, w in zip(columns, windows) for snap, k, _ in col]
+    )
     dx = float(np.sqrt(np.median(columns[0][0][0]["volume"])))
     radii = (r.min() - dx, r.max() + dx)  # one radial range: every panel of the grid has the same scale
     for j, (col, window) in enumerate(zip(columns, windows)):
@@ -623,12 +803,18 @@ def snapshot_grid(fig, spec, columns, media_outer_um):
     material_key(fig, fig.add_subplot(grid[:, -1]))
 
 
-def criterion_snapshot_figure(snapshots: dict, criteria, n_snapshots: int, label: str, media_outer_um: float,
-                              row_height: float):
+def criterion_snapshot_figure(
+    snapshots: dict, criteria, n_snapshots: int, label: str, media_outer_um: float, row_height: float
+):
     """A figure whose upper part has one column of ``n_snapshots`` snapshots per onset criterion (``snapshots``:
     criterion -> snapshots; titles "(a) <criterion><label>"); returns it with the grid cell left below."""
-    columns = [[(snapshots[c], k, f"(a) {c}{' (default)' * (j == 0)}{label}")
-                for k in snapshot_indices(snapshots[c], n_snapshots)] for j, c in enumerate(criteria)]
+    columns = [
+        [
+            (snapshots[c], k, f"(a) {c}{' (default)' * (j == 0)}{label}")
+            for k in snapshot_indices(snapshots[c], n_snapshots)
+        ]
+        for j, c in enumerate(criteria)
+    ]
     rows = max(len(col) for col in columns)
     fig = plt.figure(figsize=(11, 3.3 + row_height * rows), layout="constrained")
     gs = fig.add_gridspec(2, 1, height_ratios=[row_height * rows, 3.0])
@@ -636,8 +822,15 @@ def criterion_snapshot_figure(snapshots: dict, criteria, n_snapshots: int, label
     return fig, gs[1]
 
 
-def fig5(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, sigma: float, criteria, media_outer_um: float,
-         n_snapshots: int = 3):
+def fig5(
+    growth: pd.DataFrame,
+    summary: pd.DataFrame,
+    snapshots: dict,
+    sigma: float,
+    criteria,
+    media_outer_um: float,
+    n_snapshots: int = 3,
+):
     """Figure 5, the single pool: (a) snapshots at sigma_cr = ``sigma`` (``snapshots``: criterion -> snapshots),
     one column per onset criterion; (b) the tip radial stress against pseudo-time for every sigma_cr, one panel per
     criterion; (c) the delaminated length against the GAG concentration."""
@@ -651,17 +844,29 @@ def fig5(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, sigma: fl
     for j, criterion in enumerate(criteria):
         ax = fig.add_subplot(bottom[j], sharey=tip_axes[0] if tip_axes else None)
         runs = single[single.criterion == criterion]
-        notes = {s: f"{s:g} kPa: {run_note(summary, case='single', sigma_cr_kPa=s, criterion=criterion)}"
-                 for s in sigmas}
-        tip_stress_panel(ax, runs, "sigma_cr_kPa", notes, colours, colours,
-                         f"(b) {criterion} onset measure, single pool")
+        notes = {
+            s: f"{s:g} kPa: {run_note(summary, case='single', sigma_cr_kPa=s, criterion=criterion)}" for s in sigmas
+        }
+        tip_stress_panel(
+            ax, runs, "sigma_cr_kPa", notes, colours, colours, f"(b) {criterion} onset measure, single pool"
+        )
         no_growth_note(ax, runs)
         tip_axes.append(ax)
     ax = fig.add_subplot(bottom[-1])
-    sns.lineplot(single.sort_values("step").assign(sigma_cr=single.sigma_cr_kPa.map("{:g} kPa".format)),
-                 x="concentration_mEq_l", y="delaminated_length_um", hue="sigma_cr",
-                 palette=palette(sigmas, colours, "{:g} kPa".format), style="criterion", style_order=list(criteria),
-                 dashes=dict(zip(criteria, CRITERION_DASHES)), estimator=None, sort=False, lw=1.0, ax=ax)
+    sns.lineplot(
+        single.sort_values("step").assign(sigma_cr=single.sigma_cr_kPa.map("{:g} kPa".format)),
+        x="concentration_mEq_l",
+        y="delaminated_length_um",
+        hue="sigma_cr",
+        palette=palette(sigmas, colours, "{:g} kPa".format),
+        style="criterion",
+        style_order=list(criteria),
+        dashes=dict(zip(criteria, CRITERION_DASHES)),
+        estimator=None,
+        sort=False,
+        lw=1.0,
+        ax=ax,
+    )
     no_growth_note(ax, single)
     ax.set(xlabel=GAG_CONCENTRATION, ylabel="delaminated length (um)", title="(c) growth, single pool")
     style_legend(ax, "upper left")
@@ -681,8 +886,9 @@ def fig6(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, cases, cr
     for j, case in enumerate(cases):
         letter, first = "ab"[j], snapshots[case, criteria[0]]
         col = [(first, 0, f"({letter}) {case}, first state: ")]
-        col += [(snapshots[case, c], len(snapshots[case, c]["steps"]) - 1, f"({letter}) {case}, {c}: ")
-                for c in criteria]
+        col += [
+            (snapshots[case, c], len(snapshots[case, c]["steps"]) - 1, f"({letter}) {case}, {c}: ") for c in criteria
+        ]
         columns.append(col)
     snapshot_grid(fig, gs[0], columns, media_outer_um)
     bottom = gs[1].subgridspec(1, len(cases))
@@ -692,8 +898,16 @@ def fig6(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, cases, cr
     return fig
 
 
-def fig7(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, case: str, sigma: float, criteria,
-         media_outer_um: float, n_snapshots: int = 4):
+def fig7(
+    growth: pd.DataFrame,
+    summary: pd.DataFrame,
+    snapshots: dict,
+    case: str,
+    sigma: float,
+    criteria,
+    media_outer_um: float,
+    n_snapshots: int = 4,
+):
     """Figure 7, two pools offset in radius (``snapshots``: criterion -> snapshots): (a) ``n_snapshots`` snapshots
     per criterion; (b) the tip radial stress and (c) the converted particles against pseudo-time."""
     _style()
@@ -702,8 +916,16 @@ def fig7(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, case: str
     runs = growth[growth.case == case]
     ax = fig.add_subplot(bottom[0])
     notes = {c: f"{c}: {run_note(summary, case=case, criterion=c)}" for c in criteria}
-    tip_stress_panel(ax, runs, "criterion", notes, dict(zip(criteria, CRITERION_COLOURS)), {sigma: "0.45"},
-                     f"(b) {case}: tip radial stress, sigma_cr = {sigma:g} kPa", dict(zip(criteria, CRITERION_DASHES)))
+    tip_stress_panel(
+        ax,
+        runs,
+        "criterion",
+        notes,
+        dict(zip(criteria, CRITERION_COLOURS)),
+        {sigma: "0.45"},
+        f"(b) {case}: tip radial stress, sigma_cr = {sigma:g} kPa",
+        dict(zip(criteria, CRITERION_DASHES)),
+    )
     no_growth_note(ax, runs)
     converted_panel(fig.add_subplot(bottom[1]), growth, summary, case, criteria, f"(c) {case}: converted particles")
     fit_particle_sizes(fig)

@@ -27,8 +27,12 @@ log = logging.getLogger("sphgag")
 
 
 def solver_options(numerics: dict) -> dict:
-    return dict(tol=numerics["tolerance"], max_iter=numerics["max_newton_iterations"],
-                max_bisections=numerics["max_bisections"], reuse=numerics["reuse_factorisation"])
+    return dict(
+        tol=numerics["tolerance"],
+        max_iter=numerics["max_newton_iterations"],
+        max_bisections=numerics["max_bisections"],
+        reuse=numerics["reuse_factorisation"],
+    )
 
 
 def pressure_points(calibration: dict) -> np.ndarray:
@@ -42,8 +46,15 @@ def log_state(run: str):
 
     def on_state(state: solver.State):
         c = state.convergence
-        log.info("[%s] converged at %s: residual %.2e, %d Newton its, %d force evaluations, %.2f s",
-                 run, solver.describe(state.load), c.residual, c.iterations, c.force_evaluations, c.seconds)
+        log.info(
+            "[%s] converged at %s: residual %.2e, %d Newton its, %d force evaluations, %.2f s",
+            run,
+            solver.describe(state.load),
+            c.residual,
+            c.iterations,
+            c.force_evaluations,
+            c.seconds,
+        )
 
     return on_state
 
@@ -105,8 +116,17 @@ def transmural(model: Model, s: solver.State, tube: analytic.ThickWallTube, labe
     P_mmHg = s.load.pressure_mmHg
     sph = measure.ring_profile(model, s.evaluation).assign(model=label, pressure_mmHg=P_mmHg, source="sph")
     ex = tube.state(s.load.pressure_kPa)
-    exact = pd.DataFrame(dict(model=label, pressure_mmHg=P_mmHg, source="exact", radius_um=ex.radius,
-                              layer=ex.layer, radial_stress_kPa=ex.radial_stress, circ_stress_kPa=ex.circ_stress))
+    exact = pd.DataFrame(
+        dict(
+            model=label,
+            pressure_mmHg=P_mmHg,
+            source="exact",
+            radius_um=ex.radius,
+            layer=ex.layer,
+            radial_stress_kPa=ex.radial_stress,
+            circ_stress_kPa=ex.circ_stress,
+        )
+    )
     out = pd.concat([sph, exact], ignore_index=True)
     return out[TRANSMURAL_COLUMNS + [c for c in out.columns if c not in TRANSMURAL_COLUMNS]]
 
@@ -117,17 +137,20 @@ def exact_curve(tube: analytic.ThickWallTube, pressures_mmHg, R_ref: float, H_re
     r_in = np.array([tube.inner_radius(p * MMHG_TO_KPA) for p in P])
     r_out = tube.radius(tube.R_out, r_in)
     h = r_out - r_in
-    return pd.DataFrame(dict(
-        pressure_mmHg=P,
-        outer_diameter_um=2.0 * r_out,
-        inner_diameter_um=2.0 * r_in,
-        mean_circ_stress_kPa=analytic.thin_wall_stress(P * MMHG_TO_KPA, r_in, h),
-        mean_circ_stretch=analytic.thin_wall_stretch(r_in, h, R_ref, H_ref),
-    ))
+    return pd.DataFrame(
+        dict(
+            pressure_mmHg=P,
+            outer_diameter_um=2.0 * r_out,
+            inner_diameter_um=2.0 * r_in,
+            mean_circ_stress_kPa=analytic.thin_wall_stress(P * MMHG_TO_KPA, r_in, h),
+            mean_circ_stretch=analytic.thin_wall_stretch(r_in, h, R_ref, H_ref),
+        )
+    )
 
 
-def mean_pressure_diameter(model: Model, tube: analytic.ThickWallTube, p: dict, numerics: dict,
-                           calibration: dict, label: str = "mean") -> PressureDiameter:
+def mean_pressure_diameter(
+    model: Model, tube: analytic.ThickWallTube, p: dict, numerics: dict, calibration: dict, label: str = "mean"
+) -> PressureDiameter:
     """Figure 2a on the mean-behaviour model, compared with the exact tube ``tube``.
 
     ``label`` is the ``model`` column of the transmural table. The mean
@@ -140,15 +163,26 @@ def mean_pressure_diameter(model: Model, tube: analytic.ThickWallTube, p: dict, 
     axial = [Load(axial_stretch=s, pressure_kPa=0.0) for s in np.linspace(1.0, lz, steps + 1)[1:]]
     pressures = pressure_points(calibration)
     loads = axial + [Load(axial_stretch=lz, pressure_kPa=P * MMHG_TO_KPA) for P in pressures if P > 0.0]
-    log.info("[%s] %d particles, %d neighbour entries; axial stretch to %.3g in %d steps, then %d pressures "
-             "up to %.0f mmHg", run, model.n, model.nb.n_entries, lz, steps, len(pressures) - 1, pressures.max())
-    states = solver.follow_path(model, model.layout.X, Load(1.0, 0.0), loads, run=run, on_state=log_state(run),
-                                **solver_options(numerics))
+    log.info(
+        "[%s] %d particles, %d neighbour entries; axial stretch to %.3g in %d steps, then %d pressures up to %.0f mmHg",
+        run,
+        model.n,
+        model.nb.n_entries,
+        lz,
+        steps,
+        len(pressures) - 1,
+        pressures.max(),
+    )
+    states = solver.follow_path(
+        model, model.layout.X, Load(1.0, 0.0), loads, run=run, on_state=log_state(run), **solver_options(numerics)
+    )
     final = [s for s in states if s.load.axial_stretch == lz]
     wanted = set(np.round(calibration["transmural_pressures_mmHg"], 10))
     table = pd.DataFrame([state_row(model, s, tube, R_in, H) for s in final])
-    profiles = pd.concat([transmural(model, s, tube, label) for s in final
-                          if round(s.load.pressure_mmHg, 10) in wanted], ignore_index=True)
+    profiles = pd.concat(
+        [transmural(model, s, tube, label) for s in final if round(s.load.pressure_mmHg, 10) in wanted],
+        ignore_index=True,
+    )
     curve = exact_curve(tube, np.linspace(0.0, calibration["max_pressure_mmHg"], 201), R_in, H)
     return PressureDiameter(table, profiles, curve)
 
@@ -160,8 +194,7 @@ def mean_pressure_diameter(model: Model, tube: analytic.ThickWallTube, p: dict, 
 
 def homeostatic_load(inner_radius: float, prestretch: float, activation: float = 0.0) -> Load:
     """Load of the pre-stretch stage: inner radius held, plane strain at the in vivo length (lz = 1)."""
-    return Load(1.0, None, inner_radius=inner_radius,
-                material=(("activation", activation), ("prestretch", prestretch)))
+    return Load(1.0, None, inner_radius=inner_radius, material=(("activation", activation), ("prestretch", prestretch)))
 
 
 @dataclass
@@ -174,8 +207,9 @@ class Homeostasis:
     layers: pd.DataFrame  # per-layer circumferential stress statistics
 
 
-def homeostasis(model: Model, numerics: dict, homeo: dict, x0=None, start: Load | None = None,
-                activation: float = 0.0) -> Homeostasis:
+def homeostasis(
+    model: Model, numerics: dict, homeo: dict, x0=None, start: Load | None = None, activation: float = 0.0
+) -> Homeostasis:
     """Figure 2b: ramp every deposition pre-stretch from 1 to its value, inner radius held.
 
     Nothing is forced: the pressure the state carries is read back three
@@ -194,10 +228,17 @@ def homeostasis(model: Model, numerics: dict, homeo: dict, x0=None, start: Load 
         loads = [homeostatic_load(R0, s) for s in np.linspace(0.0, 1.0, steps + 1)[1:]]
     else:
         loads = [start.with_material(activation=float(a)) for a in np.linspace(0.0, activation, steps + 1)[1:]]
-    log.info("[%s] %d particles; ramping %s in %d steps at inner radius %.1f um", run, model.n,
-             "the deposition pre-stretches" if activation == 0.0 else "the active tone", steps, R0)
-    state = solver.follow_path(model, x0, start, loads, run=run, on_state=log_state(run),
-                               **solver_options(numerics))[-1]
+    log.info(
+        "[%s] %d particles; ramping %s in %d steps at inner radius %.1f um",
+        run,
+        model.n,
+        "the deposition pre-stretches" if activation == 0.0 else "the active tone",
+        steps,
+        R0,
+    )
+    state = solver.follow_path(model, x0, start, loads, run=run, on_state=log_state(run), **solver_options(numerics))[
+        -1
+    ]
     profile = measure.ring_profile(model, state.evaluation)
     r_in = measure.surface_radius(model, state.x, "inner")
     pressures = dict(
@@ -212,13 +253,25 @@ def pressurise(model: Model, homeostatic: solver.State, pressure_mmHg: float, nu
     """The passive homeostatic state (held radius) moved to ``pressure_mmHg`` under pressure control."""
     P_h = measure.carried_pressure(model, homeostatic.evaluation)
     material = homeostatic.load.material
-    return solver.follow_path(model, homeostatic.x, Load(1.0, P_h, material=material),
-                              [Load(1.0, pressure_mmHg * MMHG_TO_KPA, material=material)],
-                              run=model.name, **solver_options(numerics))[-1]
+    return solver.follow_path(
+        model,
+        homeostatic.x,
+        Load(1.0, P_h, material=material),
+        [Load(1.0, pressure_mmHg * MMHG_TO_KPA, material=material)],
+        run=model.name,
+        **solver_options(numerics),
+    )[-1]
 
 
-def bilayer_pressure_diameter(model: Model, tube: analytic.ThickWallTube, homeostatic: solver.State,
-                              numerics: dict, cal: dict, active: bool, label: str) -> PressureDiameter:
+def bilayer_pressure_diameter(
+    model: Model,
+    tube: analytic.ThickWallTube,
+    homeostatic: solver.State,
+    numerics: dict,
+    cal: dict,
+    active: bool,
+    label: str,
+) -> PressureDiameter:
     """Pressure-diameter sweep of the passive or active bi-layered model under pressure control.
 
     From the homeostatic state (inner radius held, carried pressure P_h) the
@@ -239,10 +292,18 @@ def bilayer_pressure_diameter(model: Model, tube: analytic.ThickWallTube, homeos
     path = [here, at_act]
     if active:
         steps = cal["activation_steps"]
-        path += [Load(1.0, P_act * MMHG_TO_KPA, material=(("activation", a), ("prestretch", 1.0)))
-                 for a in np.linspace(0.0, 1.0, steps + 1)[1:]]
-    log.info("[%s] %s model: pressure control from the homeostatic %.1f mmHg to %.1f mmHg%s", run, label,
-             P_h / MMHG_TO_KPA, P_act, ", then activation in %d steps" % cal["activation_steps"] if active else "")
+        path += [
+            Load(1.0, P_act * MMHG_TO_KPA, material=(("activation", a), ("prestretch", 1.0)))
+            for a in np.linspace(0.0, 1.0, steps + 1)[1:]
+        ]
+    log.info(
+        "[%s] %s model: pressure control from the homeostatic %.1f mmHg to %.1f mmHg%s",
+        run,
+        label,
+        P_h / MMHG_TO_KPA,
+        P_act,
+        f", then activation in {cal['activation_steps']} steps" if active else "",
+    )
     start = solver.follow_path(model, homeostatic.x, here, path, **opts)[-1]
     sweep = np.linspace(0.0, cal["max_pressure_mmHg"], cal["pressure_points"])
     pressures = np.unique(np.round(np.concatenate([sweep, cal["state_pressures_mmHg"], [P_act]]), 10))
@@ -324,21 +385,33 @@ class PoolState:
     force_evaluations: int
 
     @classmethod
-    def of(cls, stage: str, concentration: float, state: solver.State) -> "PoolState":
+    def of(cls, stage: str, concentration: float, state: solver.State) -> PoolState:
         c = state.convergence
         return cls(stage, float(concentration), state.x, state.load, c.residual, c.iterations, c.force_evaluations)
 
     def info(self) -> dict:
         """What a state file keeps beside positions and load (:func:`sphgag.state.save_series`)."""
-        return dict(stage=self.stage, concentration_mEq_l=self.concentration, residual=self.residual,
-                    newton_iterations=self.newton_iterations, force_evaluations=self.force_evaluations)
+        return dict(
+            stage=self.stage,
+            concentration_mEq_l=self.concentration,
+            residual=self.residual,
+            newton_iterations=self.newton_iterations,
+            force_evaluations=self.force_evaluations,
+        )
 
     @classmethod
-    def from_saved(cls, saved) -> "PoolState":
+    def from_saved(cls, saved) -> PoolState:
         """The state of a :class:`sphgag.state.SavedState` written with :meth:`info`."""
         i = saved.info
-        return cls(i["stage"], i["concentration_mEq_l"], saved.x, saved.load, i["residual"], i["newton_iterations"],
-                   i["force_evaluations"])
+        return cls(
+            i["stage"],
+            i["concentration_mEq_l"],
+            saved.x,
+            saved.load,
+            i["residual"],
+            i["newton_iterations"],
+            i["force_evaluations"],
+        )
 
 
 def swell_pool(model: Model, start: solver.State, numerics: dict, sw: dict) -> list[PoolState]:
@@ -359,15 +432,22 @@ def swell_pool(model: Model, start: solver.State, numerics: dict, sw: dict) -> l
     base = swelling_load(start.load, 0.0, 0.0)
     intact = solver.follow_path(model, start.x, base, [base], **opts)[-1]
     steps = sw["conversion_steps"]
-    log.info("[%s] converting %d medial particles to GAG in %d steps at %.1f mmHg", run, model.props.converting.size,
-             steps, base.pressure_mmHg)
-    conv = solver.follow_path(model, intact.x, base,
-                              [swelling_load(base, f, 0.0) for f in np.linspace(0, 1, steps + 1)[1:]], **opts)[-1]
+    log.info(
+        "[%s] converting %d medial particles to GAG in %d steps at %.1f mmHg",
+        run,
+        model.props.converting.size,
+        steps,
+        base.pressure_mmHg,
+    )
+    conv = solver.follow_path(
+        model, intact.x, base, [swelling_load(base, f, 0.0) for f in np.linspace(0, 1, steps + 1)[1:]], **opts
+    )[-1]
     cs = np.linspace(0.0, sw["max_concentration_mEq_l"], sw["concentration_points"])[1:]
     log.info("[%s] swelling: c = %s mEq/l", run, ", ".join(f"{c:g}" for c in cs))
     states = solver.follow_path(model, conv.x, conv.load, [swelling_load(base, 1.0, c) for c in cs], **opts)
-    return [PoolState.of("intact", 0.0, intact), PoolState.of("converted", 0.0, conv)] + \
-        [PoolState.of("converted", c, s) for c, s in zip(cs, states)]
+    return [PoolState.of("intact", 0.0, intact), PoolState.of("converted", 0.0, conv)] + [
+        PoolState.of("converted", c, s) for c, s in zip(cs, states)
+    ]
 
 
 def pool_table(model: Model, states: list[PoolState], pool, probe_length: float, gag: dict) -> pd.DataFrame:
@@ -379,10 +459,14 @@ def pool_table(model: Model, states: list[PoolState], pool, probe_length: float,
     rows = []
     for st in states:
         ev = model.evaluate(st.x, st.load)
-        row = dict(stage=st.stage, concentration_mEq_l=st.concentration,
-                   swelling_pressure_kPa=float(swelling_pressure(st.concentration, gag["bath_concentration_mEq_l"],
-                                                                 gag["temperature_K"])),
-                   pressure_mmHg=measure.carried_pressure(model, ev) / MMHG_TO_KPA)
+        row = dict(
+            stage=st.stage,
+            concentration_mEq_l=st.concentration,
+            swelling_pressure_kPa=float(
+                swelling_pressure(st.concentration, gag["bath_concentration_mEq_l"], gag["temperature_K"])
+            ),
+            pressure_mmHg=measure.carried_pressure(model, ev) / MMHG_TO_KPA,
+        )
         row.update(pool_measurements(model, ev, pool, members, probe_length))
         row.update(residual=st.residual, newton_iterations=st.newton_iterations, force_evaluations=st.force_evaluations)
         rows.append(row)

@@ -14,11 +14,13 @@ from . import CODE_HASH, __version__
 def git_commit(path: Path | str = ".") -> str:
     """The git commit of the working tree (``+dirty`` if it has local changes), or 'unknown'."""
     try:
-        top = subprocess.run(["git", "rev-parse", "--show-toplevel"], cwd=path, capture_output=True, text=True,
-                             check=True).stdout.strip()
+        top = subprocess.run(
+            ["git", "rev-parse", "--show-toplevel"], cwd=path, capture_output=True, text=True, check=True
+        ).stdout.strip()
         sha = subprocess.run(["git", "-C", top, "rev-parse", "HEAD"], capture_output=True, text=True, check=True)
-        dirty = subprocess.run(["git", "-C", top, "status", "--porcelain", "--", "src"], capture_output=True,
-                               text=True, check=True)
+        dirty = subprocess.run(
+            ["git", "-C", top, "status", "--porcelain", "--", "src"], capture_output=True, text=True, check=True
+        )
         return sha.stdout.strip() + ("+dirty" if dirty.stdout.strip() else "")
     except (OSError, subprocess.CalledProcessError):
         return "unknown"

@@ -27,8 +27,8 @@ from __future__ import annotations
 
 import logging
 import time
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Callable, Sequence
 
 import numpy as np
 import scipy.linalg.lapack as lapack
@@ -155,8 +155,16 @@ CHORD_CONTRACTION = 0.5
 CHORD_STEPS = 12
 
 
-def newton(model: Model, x0: np.ndarray, load: Load, *, tol: float = 1e-4, max_iter: int = 30,
-           run: str | None = None, reuse: bool = False) -> tuple[np.ndarray, Evaluation, Convergence]:
+def newton(
+    model: Model,
+    x0: np.ndarray,
+    load: Load,
+    *,
+    tol: float = 1e-4,
+    max_iter: int = 30,
+    run: str | None = None,
+    reuse: bool = False,
+) -> tuple[np.ndarray, Evaluation, Convergence]:
     """Equilibrium at ``load`` starting from ``x0``.
 
     Newton's method with the exact Jacobian, a backtracking line search on
@@ -193,7 +201,7 @@ def newton(model: Model, x0: np.ndarray, load: Load, *, tol: float = 1e-4, max_i
             ev_try = _trial(model, ev, dx, 1.0, _bending(model, ev.x, dx))
             n_eval += 1
             rel_try = relative_residual(model, ev_try) if ev_try is not None else np.inf
-            if rel_try < 2.0 * CHORD_CONTRACTION ** run_length * run_start:
+            if rel_try < 2.0 * CHORD_CONTRACTION**run_length * run_start:
                 log.debug("[%s] chord %d: residual %.3e", run, it, rel)
                 x, ev, rel, chords, run_length = ev_try.x, ev_try, rel_try, chords + 1, run_length + 1
                 continue
@@ -214,13 +222,23 @@ def newton(model: Model, x0: np.ndarray, load: Load, *, tol: float = 1e-4, max_i
             raise NotConverged(run, load, f"line search failed at Newton iteration {it} (relative residual {rel:.3g})")
         if step == 1.0:
             damping = 0.0 if damping <= 1e-4 else 0.1 * damping
-        log.debug("[%s] newton %d: residual %.3e, step %.3g, damping %.0e, |dx|max %.3g", run, it, rel, step,
-                  damping, np.abs(dx).max())
+        log.debug(
+            "[%s] newton %d: residual %.3e, step %.3g, damping %.0e, |dx|max %.3g",
+            run,
+            it,
+            rel,
+            step,
+            damping,
+            np.abs(dx).max(),
+        )
         x, ev = ev_try.x, ev_try
         rel = relative_residual(model, ev)
         run_start, run_length = rel, 0
-    raise NotConverged(run, load, f"no convergence in {max_iter} Newton iterations (and {chords} chord steps; "
-                                  f"relative residual {rel:.3g})")
+    raise NotConverged(
+        run,
+        load,
+        f"no convergence in {max_iter} Newton iterations (and {chords} chord steps; relative residual {rel:.3g})",
+    )
 
 
 def _factorise(model: Model, ev: Evaluation, data: np.ndarray, damping: float, run: str) -> Factorisation:
@@ -259,7 +277,8 @@ def _line_search(model: Model, ev: Evaluation, dx: np.ndarray, scale: float, max
 
 
 def _bending(model: Model, x: np.ndarray, dx: np.ndarray):
-    """``(r_in, dr_in)``: mean inner radius and the step's mean radial expansion there (see :func:`_radial_correction`)."""
+    """``(r_in, dr_in)``: mean inner radius and the step's mean radial expansion there
+    (see :func:`_radial_correction`)."""
     inner = model.layout.inner_surface
     if not inner.size:  # no lumen: no radial expansion to correct
         return 0.0, 0.0
@@ -311,9 +330,19 @@ class State:
     convergence: Convergence
 
 
-def follow_path(model: Model, x0: np.ndarray, start: Load, targets: Sequence[Load], *, tol: float = 1e-4,
-                max_iter: int = 30, max_bisections: int = 10, run: str | None = None,
-                on_state: Callable[[State], None] | None = None, reuse: bool = False) -> list[State]:
+def follow_path(
+    model: Model,
+    x0: np.ndarray,
+    start: Load,
+    targets: Sequence[Load],
+    *,
+    tol: float = 1e-4,
+    max_iter: int = 30,
+    max_bisections: int = 10,
+    run: str | None = None,
+    on_state: Callable[[State], None] | None = None,
+    reuse: bool = False,
+) -> list[State]:
     """Converged states at every load of ``targets``, moving from ``start`` (state ``x0``).
 
     Each increment is solved with :func:`newton`; an increment that fails is
@@ -338,11 +367,18 @@ def _reach(model, x, current, target, tol, max_iter, depth, run, reuse):
         return newton(model, x, target, tol=tol, max_iter=max_iter, run=run, reuse=reuse)
     except (NotConverged, Inverted, Diverged) as exc:
         if depth == 0:
-            raise NotConverged(run, target, f"no convergence after bisecting the load increment ({exc.reason})") from exc
+            raise NotConverged(
+                run, target, f"no convergence after bisecting the load increment ({exc.reason})"
+            ) from exc
         log.debug("[%s] bisecting increment to %s (%s)", run, describe(target), exc.reason)
     middle = current.lerp(target, 0.5)
     xm, evm, cm = _reach(model, x, current, middle, tol, max_iter, depth - 1, run, reuse)
     x2, ev2, c2 = _reach(model, xm, middle, target, tol, max_iter, depth - 1, run, reuse)
-    total = Convergence(c2.residual, cm.iterations + c2.iterations, cm.force_evaluations + c2.force_evaluations,
-                        cm.jacobians + c2.jacobians, cm.seconds + c2.seconds)
+    total = Convergence(
+        c2.residual,
+        cm.iterations + c2.iterations,
+        cm.force_evaluations + c2.force_evaluations,
+        cm.jacobians + c2.jacobians,
+        cm.seconds + c2.seconds,
+    )
     return x2, ev2, total

@@ -45,13 +45,18 @@ class SavedState:
     history: ParticleHistory | None = None  # the particles' history (damage, GAG pools), if the state has one
 
 
-def contents(x: np.ndarray, load: Load, params: dict, info: dict | None = None,
-             history: ParticleHistory | None = None) -> dict:
+def contents(
+    x: np.ndarray, load: Load, params: dict, info: dict | None = None, history: ParticleHistory | None = None
+) -> dict:
     """The arrays of a state file: positions, metadata (load, configuration slice, code version, extra info) and
     the particle history, if any."""
     meta = {
-        "load": {"axial_stretch": load.axial_stretch, "pressure_kPa": load.pressure_kPa,
-                 "inner_radius": load.inner_radius, "material": list(map(list, load.material))},
+        "load": {
+            "axial_stretch": load.axial_stretch,
+            "pressure_kPa": load.pressure_kPa,
+            "inner_radius": load.inner_radius,
+            "material": list(map(list, load.material)),
+        },
         "params": json.loads(canonical(params)),
         "code": provenance.code_version(),
         "info": info or {},
@@ -60,8 +65,9 @@ def contents(x: np.ndarray, load: Load, params: dict, info: dict | None = None,
     return dict(x=np.asarray(x, dtype=float), meta=np.array(json.dumps(meta)), **arrays)
 
 
-def save(path, x: np.ndarray, load: Load, params: dict, info: dict | None = None,
-         history: ParticleHistory | None = None) -> None:
+def save(
+    path, x: np.ndarray, load: Load, params: dict, info: dict | None = None, history: ParticleHistory | None = None
+) -> None:
     """Write a state file (:func:`contents`)."""
     Path(path).parent.mkdir(parents=True, exist_ok=True)
     with open(path, "wb") as fh:
@@ -85,8 +91,10 @@ def load(path, expected_params: dict | None = None) -> SavedState:
 
 def load_series(path, expected_params: dict | None = None) -> list[SavedState]:
     """All states of a :func:`save_series` file, in order."""
-    return _read_file(path, lambda data: [read(_part(data, k), f"{path} (state {k})", expected_params)
-                                          for k in range(int(data["count"]))])
+    return _read_file(
+        path,
+        lambda data: [read(_part(data, k), f"{path} (state {k})", expected_params) for k in range(int(data["count"]))],
+    )
 
 
 def load_from_series(path, k: int, expected_params: dict | None = None) -> SavedState:
@@ -96,7 +104,7 @@ def load_from_series(path, k: int, expected_params: dict | None = None) -> Saved
 
 def _part(data: dict, k: int) -> dict:
     prefix = f"s{k}_"
-    return {name[len(prefix):]: value for name, value in data.items() if name.startswith(prefix)}
+    return {name[len(prefix) :]: value for name, value in data.items() if name.startswith(prefix)}
 
 
 def _read_file(path, pick):
@@ -108,8 +116,10 @@ def _read_file(path, pick):
     except StateMismatch:
         raise
     except (OSError, ValueError, KeyError, EOFError, zipfile.BadZipFile) as exc:
-        raise CorruptState(f"{path} is not a readable state file ({type(exc).__name__}: {exc}); delete it and rerun "
-                           "snakemake, which regenerates it with the rule that wrote it") from exc
+        raise CorruptState(
+            f"{path} is not a readable state file ({type(exc).__name__}: {exc}); delete it and rerun "
+            "snakemake, which regenerates it with the rule that wrote it"
+        ) from exc
 
 
 def read(data, source, expected_params: dict | None = None) -> SavedState:
@@ -120,10 +130,15 @@ def read(data, source, expected_params: dict | None = None) -> SavedState:
         diff = _differences(json.loads(canonical(expected_params)), meta["params"])
         raise StateMismatch(f"{source} was made with different parameters: {'; '.join(diff)}")
     ld = meta["load"]
-    load_ = Load(axial_stretch=ld["axial_stretch"], pressure_kPa=ld["pressure_kPa"], inner_radius=ld["inner_radius"],
-                 material=tuple(tuple(kv) for kv in ld["material"]))
-    return SavedState(x=np.array(data["x"]), load=load_, params=meta["params"], code=meta["code"], info=meta["info"],
-                      history=history)
+    load_ = Load(
+        axial_stretch=ld["axial_stretch"],
+        pressure_kPa=ld["pressure_kPa"],
+        inner_radius=ld["inner_radius"],
+        material=tuple(tuple(kv) for kv in ld["material"]),
+    )
+    return SavedState(
+        x=np.array(data["x"]), load=load_, params=meta["params"], code=meta["code"], info=meta["info"], history=history
+    )
 
 
 def _differences(expected, stored, prefix=""):

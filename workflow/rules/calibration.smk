@@ -12,20 +12,20 @@ rule calibrate_mean:
         exact="results/calibration/mean_exact_curve.csv",
         transmural="results/calibration/transmural_mean.csv",
         provenance="results/provenance/calibrate_mean.json",
-    params:
-        mean=config["mean"],
-        numerics=config["numerics"],
-        calibration=config["calibration"],
-    conda:
-        "../envs/sphgag.yaml"
     log:
         "logs/calibrate_mean.log",
     benchmark:
         "results/benchmarks/calibrate_mean.tsv"
+    conda:
+        "../envs/sphgag.yaml"
     threads: 1
     resources:
         runtime=5,
         mem_mb=1000,
+    params:
+        mean=config["mean"],
+        numerics=config["numerics"],
+        calibration=config["calibration"],
     script:
         "../scripts/calibrate_mean.py"
 
@@ -36,9 +36,9 @@ rule transmural:
         expand("results/calibration/transmural_{model}.csv", model=("mean", "passive", "active")),
     output:
         "results/calibration/transmural.csv",
-    conda:
-        "../envs/sphgag.yaml"
     log:
         "logs/transmural.log",
+    conda:
+        "../envs/sphgag.yaml"
     script:
         "../scripts/concat_tables.py"

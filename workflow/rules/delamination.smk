@@ -13,7 +13,9 @@ DE_RUNS = [
 DE_SETTINGS = {k: v for k, v in DE.items() if k not in ("pool_sets", "critical_stresses_kPa", "convergence")}
 DE_DX = [f"{dx:g}" for dx in DE["convergence"]["dx_um"]]
 DE_GROWTH = [f"results/delamination/runs/{r['poolset']}_{r['sigma']}kPa_{r['criterion']}_growth.csv" for r in DE_RUNS]
-DE_SUMMARIES = [f"results/delamination/runs/{r['poolset']}_{r['sigma']}kPa_{r['criterion']}_summary.csv" for r in DE_RUNS]
+DE_SUMMARIES = [
+    f"results/delamination/runs/{r['poolset']}_{r['sigma']}kPa_{r['criterion']}_summary.csv" for r in DE_RUNS
+]
 
 
 wildcard_constraints:
@@ -33,11 +35,6 @@ rule delaminate:
         summary="results/delamination/runs/{poolset}_{sigma}kPa_{criterion}_summary.csv",
         snapshots="results/delamination/runs/{poolset}_{sigma}kPa_{criterion}_snapshots.npz",
         provenance="results/provenance/delaminate_{poolset}_{sigma}kPa_{criterion}.json",
-    params:
-        state_slice=dict(PRESSURISED_SLICE, model="passive"),
-        pools=lambda wildcards: DE["pool_sets"][wildcards.poolset],
-        delamination=DE_SETTINGS,
-        gag=config["gag"],
     log:
         "logs/delaminate/{poolset}_{sigma}kPa_{criterion}.log",
     benchmark:
@@ -48,6 +45,11 @@ rule delaminate:
     resources:
         runtime=5,
         mem_mb=1000,
+    params:
+        state_slice=dict(PRESSURISED_SLICE, model="passive"),
+        pools=lambda wildcards: DE["pool_sets"][wildcards.poolset],
+        delamination=DE_SETTINGS,
+        gag=config["gag"],
     script:
         "../scripts/delaminate.py"
 
@@ -92,12 +94,6 @@ rule delamination_convergence_dx:
     output:
         table="results/delamination/convergence/dx{dedx}.csv",
         provenance="results/provenance/delamination_convergence_dx{dedx}.json",
-    params:
-        bilayer=config["bilayer"],
-        numerics=config["numerics"],
-        homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
-        delamination=dict(DE_SETTINGS, pool_sets=dict(single=DE["pool_sets"]["single"])),
-        gag=config["gag"],
     log:
         "logs/delamination_convergence/dx{dedx}.log",
     benchmark:
@@ -108,6 +104,12 @@ rule delamination_convergence_dx:
     resources:
         runtime=5,
         mem_mb=2500,
+    params:
+        bilayer=config["bilayer"],
+        numerics=config["numerics"],
+        homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
+        delamination=dict(DE_SETTINGS, pool_sets=dict(single=DE["pool_sets"]["single"])),
+        gag=config["gag"],
     script:
         "../scripts/delamination_convergence.py"
 

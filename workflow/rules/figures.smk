@@ -12,10 +12,10 @@ rule fig3a_mean:
             category="1 Calibration",
             labels={"result": "Figure 3a: mean model, pressure-diameter and stress-stretch"},
         ),
-    conda:
-        "../envs/sphgag.yaml"
     log:
         "logs/fig3a_mean.log",
+    conda:
+        "../envs/sphgag.yaml"
     threads: 1
     resources:
         runtime=5,
@@ -37,10 +37,10 @@ rule fig3b:
             category="1 Calibration",
             labels={"result": "Figure 3b: mean model, stresses across the wall"},
         ),
-    conda:
-        "../envs/sphgag.yaml"
     log:
         "logs/fig3b.log",
+    conda:
+        "../envs/sphgag.yaml"
     threads: 1
     resources:
         runtime=5,
@@ -92,10 +92,6 @@ rule fig1:
             category="2 Homeostasis",
             labels={"result": "Figure 1: the particle model of the bi-layered wall"},
         ),
-    params:
-        mass_fractions=config["bilayer"]["mass_fractions"],
-        support_factor=config["numerics"]["kernel_support_factor"],
-        dx=config["bilayer"]["dx_um"],
     log:
         "logs/fig1.log",
     conda:
@@ -104,6 +100,10 @@ rule fig1:
     resources:
         runtime=5,
         mem_mb=1000,
+    params:
+        mass_fractions=config["bilayer"]["mass_fractions"],
+        support_factor=config["numerics"]["kernel_support_factor"],
+        dx=config["bilayer"]["dx_um"],
     script:
         "../scripts/fig1.py"
 
@@ -122,9 +122,6 @@ rule fig4:
             category="3 Swelling",
             labels={"result": "Figure 4: stresses around a swelling GAG pool"},
         ),
-    params:
-        cases=config["swelling"]["cases"],
-        probe_length=config["swelling"]["probe_length_um"],
     log:
         "logs/fig4.log",
     conda:
@@ -133,6 +130,9 @@ rule fig4:
     resources:
         runtime=5,
         mem_mb=1000,
+    params:
+        cases=config["swelling"]["cases"],
+        probe_length=config["swelling"]["probe_length_um"],
     script:
         "../scripts/fig4.py"
 
@@ -157,13 +157,13 @@ rule claims:
             labels={"result": "The paper's claims against our numbers"},
         ),
         markdown="figures/claims.md",
-    params:
-        cases=config["swelling"]["cases"],
-        criteria=config["delamination"]["criteria"],
     log:
         "logs/claims.log",
     conda:
         "../envs/sphgag.yaml"
+    params:
+        cases=config["swelling"]["cases"],
+        criteria=config["delamination"]["criteria"],
     script:
         "../scripts/claims.py"
 
@@ -216,10 +216,6 @@ rule fig5:
             category="5 Delamination",
             labels={"result": "Figure 5: one pool grown by damage"},
         ),
-    params:
-        sigma=FIG5_SIGMA,
-        criteria=DE["criteria"],
-        media_outer=DE_MEDIA_OUTER,
     log:
         "logs/fig5.log",
     conda:
@@ -228,6 +224,10 @@ rule fig5:
     resources:
         runtime=5,
         mem_mb=1000,
+    params:
+        sigma=FIG5_SIGMA,
+        criteria=DE["criteria"],
+        media_outer=DE_MEDIA_OUTER,
     script:
         "../scripts/fig5.py"
 
@@ -238,7 +238,9 @@ rule fig6:
         code=PLOTS,
         growth=rules.delamination_growth.output[0],
         summary=rules.delamination_summary.output[0],
-        snapshots=expand(DE_SNAPSHOTS, poolset=FIG6_CASES, sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"]),
+        snapshots=expand(
+            DE_SNAPSHOTS, poolset=FIG6_CASES, sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"]
+        ),
     output:
         pdf="figures/fig6.pdf",
         png=report(
@@ -247,10 +249,6 @@ rule fig6:
             category="5 Delamination",
             labels={"result": "Figure 6: two pools at the same radius"},
         ),
-    params:
-        cases=FIG6_CASES,
-        criteria=DE["criteria"],
-        media_outer=DE_MEDIA_OUTER,
     log:
         "logs/fig6.log",
     conda:
@@ -259,6 +257,10 @@ rule fig6:
     resources:
         runtime=5,
         mem_mb=1000,
+    params:
+        cases=FIG6_CASES,
+        criteria=DE["criteria"],
+        media_outer=DE_MEDIA_OUTER,
     script:
         "../scripts/fig6.py"
 
@@ -269,7 +271,9 @@ rule fig7:
         code=PLOTS,
         growth=rules.delamination_growth.output[0],
         summary=rules.delamination_summary.output[0],
-        snapshots=expand(DE_SNAPSHOTS, poolset=["radial_offset"], sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"]),
+        snapshots=expand(
+            DE_SNAPSHOTS, poolset=["radial_offset"], sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"]
+        ),
     output:
         pdf="figures/fig7.pdf",
         png=report(
@@ -278,11 +282,6 @@ rule fig7:
             category="5 Delamination",
             labels={"result": "Figure 7: two pools offset in radius"},
         ),
-    params:
-        case="radial_offset",
-        sigma=DE["critical_stress_kPa"],
-        criteria=DE["criteria"],
-        media_outer=DE_MEDIA_OUTER,
     log:
         "logs/fig7.log",
     conda:
@@ -291,5 +290,10 @@ rule fig7:
     resources:
         runtime=5,
         mem_mb=1000,
+    params:
+        case="radial_offset",
+        sigma=DE["critical_stress_kPa"],
+        criteria=DE["criteria"],
+        media_outer=DE_MEDIA_OUTER,
     script:
         "../scripts/fig7.py"

@@ -29,8 +29,6 @@ rule homeostasis:
         layers="results/homeostasis/layers.csv",
         particles="results/homeostasis/particles.csv",
         provenance="results/provenance/homeostasis.json",
-    params:
-        slice=HOMEOSTATIC_SLICE,
     log:
         "logs/homeostasis.log",
     benchmark:
@@ -41,6 +39,8 @@ rule homeostasis:
     resources:
         runtime=5,
         mem_mb=1000,
+    params:
+        slice=HOMEOSTATIC_SLICE,
     script:
         "../scripts/homeostasis.py"
 
@@ -51,12 +51,12 @@ rule homeostasis_target:
         summary=rules.homeostasis.output.summary,
     output:
         "results/homeostasis/target.csv",
-    params:
-        target_pressure=config["homeostasis"]["target_pressure_mmHg"],
     log:
         "logs/homeostasis_target.log",
     conda:
         "../envs/sphgag.yaml"
+    params:
+        target_pressure=config["homeostasis"]["target_pressure_mmHg"],
     script:
         "../scripts/homeostasis_target.py"
 
@@ -72,10 +72,6 @@ rule bilayer_pressure_diameter:
         transmural="results/calibration/transmural_{model}.csv",
         states=expand("results/states/{{model}}_{pressure}mmHg.npz", pressure=STATE_PRESSURES),
         provenance="results/provenance/bilayer_pressure_diameter_{model}.json",
-    params:
-        slice=PRESSURISED_SLICE,
-        homeostatic_slice=HOMEOSTATIC_SLICE,
-        active=lambda wildcards: wildcards.model == "active",
     log:
         "logs/bilayer_pressure_diameter_{model}.log",
     benchmark:
@@ -86,6 +82,10 @@ rule bilayer_pressure_diameter:
     resources:
         runtime=5,
         mem_mb=1000,
+    params:
+        slice=PRESSURISED_SLICE,
+        homeostatic_slice=HOMEOSTATIC_SLICE,
+        active=lambda wildcards: wildcards.model == "active",
     script:
         "../scripts/bilayer_pressure_diameter.py"
 
@@ -98,11 +98,11 @@ rule bilayer_table:
     output:
         table="results/calibration/bilayer_pressure_diameter.csv",
         activation="results/calibration/activation_summary.csv",
-    params:
-        pressure=config["bilayer_calibration"]["activation_pressure_mmHg"],
     log:
         "logs/bilayer_table.log",
     conda:
         "../envs/sphgag.yaml"
+    params:
+        pressure=config["bilayer_calibration"]["activation_pressure_mmHg"],
     script:
         "../scripts/bilayer_table.py"

@@ -5,8 +5,9 @@ CASES = list(SW["cases"])
 SWELL_PRESSURES = [f"{p:g}" for p in SW["pressures_mmHg"]]
 # what the simulations depend on; probe_length_um only sets where rule pool_stresses measures
 SWELL_SETTINGS = {k: v for k, v in SW.items() if k not in ("cases", "models", "pressures_mmHg", "probe_length_um")}
-SWELL_RUNS = expand("results/swelling/runs/{model}_{case}_{pressure}mmHg.csv", model=SW["models"], case=CASES,
-                    pressure=SWELL_PRESSURES)
+SWELL_RUNS = expand(
+    "results/swelling/runs/{model}_{case}_{pressure}mmHg.csv", model=SW["models"], case=CASES, pressure=SWELL_PRESSURES
+)
 
 
 wildcard_constraints:
@@ -22,11 +23,6 @@ rule swell:
     output:
         states="results/swelling/states/{model}_{case}_{pressure}mmHg.npz",
         provenance="results/provenance/swell_{model}_{case}_{pressure}mmHg.json",
-    params:
-        state_slice=lambda wildcards: dict(PRESSURISED_SLICE, model=wildcards.model),
-        pool=lambda wildcards: SW["cases"][wildcards.case],
-        settings=SWELL_SETTINGS,
-        gag=config["gag"],
     log:
         "logs/swell/{model}_{case}_{pressure}mmHg.log",
     benchmark:
@@ -37,6 +33,11 @@ rule swell:
     resources:
         runtime=5,
         mem_mb=1000,
+    params:
+        state_slice=lambda wildcards: dict(PRESSURISED_SLICE, model=wildcards.model),
+        pool=lambda wildcards: SW["cases"][wildcards.case],
+        settings=SWELL_SETTINGS,
+        gag=config["gag"],
     script:
         "../scripts/swell.py"
 
@@ -49,12 +50,6 @@ rule pool_stresses:
     output:
         table="results/swelling/runs/{model}_{case}_{pressure}mmHg.csv",
         provenance="results/provenance/pool_stresses_{model}_{case}_{pressure}mmHg.json",
-    params:
-        state_slice=lambda wildcards: dict(PRESSURISED_SLICE, model=wildcards.model),
-        pool=lambda wildcards: SW["cases"][wildcards.case],
-        settings=SWELL_SETTINGS,
-        gag=config["gag"],
-        probe_length=SW["probe_length_um"],
     log:
         "logs/pool_stresses/{model}_{case}_{pressure}mmHg.log",
     benchmark:
@@ -65,6 +60,12 @@ rule pool_stresses:
     resources:
         runtime=5,
         mem_mb=1000,
+    params:
+        state_slice=lambda wildcards: dict(PRESSURISED_SLICE, model=wildcards.model),
+        pool=lambda wildcards: SW["cases"][wildcards.case],
+        settings=SWELL_SETTINGS,
+        gag=config["gag"],
+        probe_length=SW["probe_length_um"],
     script:
         "../scripts/pool_stresses.py"
 
@@ -103,14 +104,6 @@ rule swelling_convergence_dx:
     output:
         table="results/swelling/convergence/dx{dx}.csv",
         provenance="results/provenance/swelling_convergence_dx{dx}.json",
-    params:
-        bilayer=config["bilayer"],
-        numerics=config["numerics"],
-        homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
-        settings=dict(SWELL_SETTINGS, probe_length_um=SW["probe_length_um"]),
-        gag=config["gag"],
-        cases={c: SW["cases"][c] for c in SC["cases"]},
-        pressure=SC["pressure_mmHg"],
     log:
         "logs/swelling_convergence/dx{dx}.log",
     benchmark:
@@ -121,6 +114,14 @@ rule swelling_convergence_dx:
     resources:
         runtime=5,
         mem_mb=2500,
+    params:
+        bilayer=config["bilayer"],
+        numerics=config["numerics"],
+        homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
+        settings=dict(SWELL_SETTINGS, probe_length_um=SW["probe_length_um"]),
+        gag=config["gag"],
+        cases={c: SW["cases"][c] for c in SC["cases"]},
+        pressure=SC["pressure_mmHg"],
     script:
         "../scripts/swelling_convergence.py"
 

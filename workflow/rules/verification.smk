@@ -20,11 +20,6 @@ rule verify_pool_ratio:
         table="results/verification/runs/elliptic_pool_ab{ratio}.csv",
         profiles="results/verification/runs/elliptic_pool_profiles_ab{ratio}.csv",
         provenance="results/provenance/verify_pool_ab{ratio}.json",
-    params:
-        pool={k: v for k, v in VP.items() if k != "aspect_ratios"},
-        matrix=POOL_MATRIX,
-        gag={k: config["gag"][k] for k in ("shear_modulus_kPa", "hourglass_modulus_kPa")},
-        numerics=config["numerics"],
     log:
         "logs/verify_pool/ab{ratio}.log",
     benchmark:
@@ -35,6 +30,11 @@ rule verify_pool_ratio:
     resources:
         runtime=5,
         mem_mb=2000,
+    params:
+        pool={k: v for k, v in VP.items() if k != "aspect_ratios"},
+        matrix=POOL_MATRIX,
+        gag={k: config["gag"][k] for k in ("shear_modulus_kPa", "hourglass_modulus_kPa")},
+        numerics=config["numerics"],
     script:
         "../scripts/verify_pool.py"
 

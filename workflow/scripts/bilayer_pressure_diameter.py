@@ -18,8 +18,9 @@ with runlog.run(run, sm.log[0]) as log:
     saved = state.load(sm.input.homeostatic, expected_params=sm.params.homeostatic_slice)
     homeostatic = solver.State(saved.load, saved.x, model.evaluate(saved.x, saved.load), None)
     tube = artery.bilayer_tube(p, active=sm.params.active)
-    res = protocols.bilayer_pressure_diameter(model, tube, homeostatic, numerics, cfg["bilayer_calibration"],
-                                              active=sm.params.active, label=label)
+    res = protocols.bilayer_pressure_diameter(
+        model, tube, homeostatic, numerics, cfg["bilayer_calibration"], active=sm.params.active, label=label
+    )
     res.states.to_csv(sm.output.table, index=False)
     res.analytic.to_csv(sm.output.exact, index=False)
     res.transmural.to_csv(sm.output.transmural, index=False)
@@ -35,8 +36,20 @@ with runlog.run(run, sm.log[0]) as log:
         max_residual=float(s.residual.max()),
         mean_force_evaluations_per_state=float(s.force_evaluations.mean()),
     )
-    log.info("[%s] SPH vs semi-analytical bi-layered tube: max |OD error| %.3f %% over 60-200 mmHg, %.3f %% over "
-             "0-200 mmHg (%d particles); largest residual %.2e", run, 100 * summary["max_od_rel_error_60_200_mmHg"],
-             100 * summary["max_od_rel_error_0_200_mmHg"], model.n, summary["max_residual"])
-    provenance.write_record(sm.output.provenance, rule="bilayer_pressure_diameter", params=dict(cfg, model=label),
-                            outputs=list(sm.output), summary=summary, started=started)
+    log.info(
+        "[%s] SPH vs semi-analytical bi-layered tube: max |OD error| %.3f %% over 60-200 mmHg, %.3f %% over "
+        "0-200 mmHg (%d particles); largest residual %.2e",
+        run,
+        100 * summary["max_od_rel_error_60_200_mmHg"],
+        100 * summary["max_od_rel_error_0_200_mmHg"],
+        model.n,
+        summary["max_residual"],
+    )
+    provenance.write_record(
+        sm.output.provenance,
+        rule="bilayer_pressure_diameter",
+        params=dict(cfg, model=label),
+        outputs=list(sm.output),
+        summary=summary,
+        started=started,
+    )

@@ -15,12 +15,26 @@ with runlog.run("bilayer_table", sm.log[0]) as log:
     for col in ("outer_diameter_um", "exact_outer_diameter_um"):
         od_p = float(np.interp(P, passive.pressure_mmHg, passive[col]))
         od_a = float(np.interp(P, active.pressure_mmHg, active[col]))
-        rows.append(dict(source="sph" if col == "outer_diameter_um" else "semi_analytical", pressure_mmHg=P,
-                         passive_outer_diameter_um=od_p, active_outer_diameter_um=od_a,
-                         od_reduction=1.0 - od_a / od_p, paper_od_reduction=PAPER_REDUCTION))
+        rows.append(
+            dict(
+                source="sph" if col == "outer_diameter_um" else "semi_analytical",
+                pressure_mmHg=P,
+                passive_outer_diameter_um=od_p,
+                active_outer_diameter_um=od_a,
+                od_reduction=1.0 - od_a / od_p,
+                paper_od_reduction=PAPER_REDUCTION,
+            )
+        )
     out = pd.DataFrame(rows)
     out.to_csv(sm.output.activation, index=False)
     for r in rows:
-        log.info("[bilayer_table] %s: activation at %.0f mmHg reduces the outer diameter from %.1f to %.1f um, "
-                 "by %.1f %% (paper: about %.0f %%)", r["source"], P, r["passive_outer_diameter_um"],
-                 r["active_outer_diameter_um"], 100 * r["od_reduction"], 100 * PAPER_REDUCTION)
+        log.info(
+            "[bilayer_table] %s: activation at %.0f mmHg reduces the outer diameter from %.1f to %.1f um, "
+            "by %.1f %% (paper: about %.0f %%)",
+            r["source"],
+            P,
+            r["passive_outer_diameter_um"],
+            r["active_outer_diameter_um"],
+            100 * r["od_reduction"],
+            100 * PAPER_REDUCTION,
+        )

@@ -25,12 +25,28 @@ with runlog.run("calibrate_mean", sm.log[0]) as log:
         mean_force_evaluations_per_state=float(s.force_evaluations.mean()),
         mean_newton_iterations_per_state=float(s.newton_iterations.mean()),
     )
-    log.info("[calibrate_mean] SPH vs exact thick wall: max |OD error| over 10-200 mmHg = %.4f %% (%d particles)",
-             100 * summary["max_od_rel_error_10_200_mmHg"], model.n)
-    log.info("[calibrate_mean] largest residual %.2e (tolerance %.0e); global equilibrium "
-             "|int sigma_tt dr / (P r_in) - 1| <= %.2e", summary["max_residual"], numerics["tolerance"],
-             summary["max_equilibrium_error"])
-    log.info("[calibrate_mean] %.1f force evaluations and %.1f Newton iterations per converged state",
-             summary["mean_force_evaluations_per_state"], summary["mean_newton_iterations_per_state"])
-    provenance.write_record(sm.output.provenance, rule="calibrate_mean", params=dict(sm.params),
-                            outputs=list(sm.output), summary=summary, started=started)
+    log.info(
+        "[calibrate_mean] SPH vs exact thick wall: max |OD error| over 10-200 mmHg = %.4f %% (%d particles)",
+        100 * summary["max_od_rel_error_10_200_mmHg"],
+        model.n,
+    )
+    log.info(
+        "[calibrate_mean] largest residual %.2e (tolerance %.0e); global equilibrium "
+        "|int sigma_tt dr / (P r_in) - 1| <= %.2e",
+        summary["max_residual"],
+        numerics["tolerance"],
+        summary["max_equilibrium_error"],
+    )
+    log.info(
+        "[calibrate_mean] %.1f force evaluations and %.1f Newton iterations per converged state",
+        summary["mean_force_evaluations_per_state"],
+        summary["mean_newton_iterations_per_state"],
+    )
+    provenance.write_record(
+        sm.output.provenance,
+        rule="calibrate_mean",
+        params=dict(sm.params),
+        outputs=list(sm.output),
+        summary=summary,
+        started=started,
+    )

@@ -6,8 +6,10 @@ from sphgag import claims, runlog
 
 sm = snakemake  # noqa: F821
 with runlog.run("claims", sm.log[0]) as log:
-    t = {k: pd.read_csv(sm.input[k]) for k in ("mean", "bilayer", "activation", "layers", "transmural", "tips",
-                                                 "growth", "delamination")}
+    t = {
+        k: pd.read_csv(sm.input[k])
+        for k in ("mean", "bilayer", "activation", "layers", "transmural", "tips", "growth", "delamination")
+    }
     found = claims.calibration_claims(t["mean"], t["bilayer"], t["activation"], t["layers"], t["transmural"])
     found += claims.swelling_claims(t["tips"], sm.params.cases)
     found += claims.delamination_claims(t["growth"], t["delamination"], sm.params.criteria)

@@ -12,13 +12,31 @@ started = time.time()
 run = f"delamination_convergence_dx{sm.wildcards.dedx}"
 with runlog.run(run, sm.log[0]) as log:
     p = sm.params
-    table = delamination.convergence_study(float(sm.wildcards.dedx), p.bilayer, p.numerics, p.homeostasis,
-                                           p.delamination, p.gag, name=run)
+    table = delamination.convergence_study(
+        float(sm.wildcards.dedx), p.bilayer, p.numerics, p.homeostasis, p.delamination, p.gag, name=run
+    )
     table.to_csv(sm.output.table, index=False)
     for row in table.itertuples():
-        log.info("[%s] %s onset: at %s mEq/l, delaminated %.1f um at %g mEq/l", run, row.criterion,
-                 row.onset_concentration_mEq_l, row.final_length_um, p.delamination["max_concentration_mEq_l"])
-    provenance.write_record(sm.output.provenance, rule="delamination_convergence", params=dict(
-                            dx=sm.wildcards.dedx, bilayer=p.bilayer, numerics=p.numerics, homeostasis=p.homeostasis,
-                            delamination=p.delamination, gag=p.gag), outputs=list(sm.output),
-                            summary=dict(max_residual=float(table.max_residual.max())), started=started)
+        log.info(
+            "[%s] %s onset: at %s mEq/l, delaminated %.1f um at %g mEq/l",
+            run,
+            row.criterion,
+            row.onset_concentration_mEq_l,
+            row.final_length_um,
+            p.delamination["max_concentration_mEq_l"],
+        )
+    provenance.write_record(
+        sm.output.provenance,
+        rule="delamination_convergence",
+        params=dict(
+            dx=sm.wildcards.dedx,
+            bilayer=p.bilayer,
+            numerics=p.numerics,
+            homeostasis=p.homeostasis,
+            delamination=p.delamination,
+            gag=p.gag,
+        ),
+        outputs=list(sm.output),
+        summary=dict(max_residual=float(table.max_residual.max())),
+        started=started,
+    )

@@ -9,8 +9,14 @@ with runlog.run("homeostasis_target", sm.log[0]) as log:
     summary = pd.read_csv(sm.input.summary)
     target = float(sm.params.target_pressure)
     out = summary[["model", "carried_pressure_mmHg", "semi_analytical_pressure_mmHg"]].assign(
-        target_pressure_mmHg=target, relative_to_target=summary.carried_pressure_mmHg / target - 1.0)
+        target_pressure_mmHg=target, relative_to_target=summary.carried_pressure_mmHg / target - 1.0
+    )
     out.to_csv(sm.output[0], index=False)
     for r in out.itertuples():
-        log.info("[homeostasis_target] %s: carried %.2f mmHg, target %.0f (%+.1f %%)", r.model,
-                 r.carried_pressure_mmHg, target, 100 * r.relative_to_target)
+        log.info(
+            "[homeostasis_target] %s: carried %.2f mmHg, target %.0f (%+.1f %%)",
+            r.model,
+            r.carried_pressure_mmHg,
+            target,
+            100 * r.relative_to_target,
+        )

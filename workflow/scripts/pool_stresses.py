@@ -16,16 +16,30 @@ with runlog.run(run, sm.log[0]) as log:
     pool = artery.pool_sector(p.pool)
     model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=run, pool=pool, gag=p.gag)
     saved = state.load_series(sm.input.states, dict(state=cfg, pool=p.pool, settings=p.settings, gag=p.gag))
-    table = protocols.pool_table(model, [protocols.PoolState.from_saved(s) for s in saved], pool, p.probe_length,
-                                 p.gag)
+    table = protocols.pool_table(model, [protocols.PoolState.from_saved(s) for s in saved], pool, p.probe_length, p.gag)
     table.insert(0, "model", w.model)
     table.insert(1, "case", w.case)
     table.to_csv(sm.output.table, index=False)
     last = table.iloc[-1]
     first = table[table.stage == "converted"].iloc[0]
-    log.info("[%s] %d pool particles; tip radial stress %.1f kPa intact, %.1f converted, %.1f at %g mEq/l; "
-             "top hoop stress %.1f -> %.1f -> %.1f kPa", run, int(last.pool_particles), table.tip_radial_stress_kPa.iloc[0],
-             first.tip_radial_stress_kPa, last.tip_radial_stress_kPa, last.concentration_mEq_l,
-             table.top_circ_stress_kPa.iloc[0], first.top_circ_stress_kPa, last.top_circ_stress_kPa)
-    provenance.write_record(sm.output.provenance, rule="pool_stresses", params=dict(p), outputs=list(sm.output),
-                            summary=dict(max_residual=float(table.residual.max())), started=started)
+    log.info(
+        "[%s] %d pool particles; tip radial stress %.1f kPa intact, %.1f converted, %.1f at %g mEq/l; "
+        "top hoop stress %.1f -> %.1f -> %.1f kPa",
+        run,
+        int(last.pool_particles),
+        table.tip_radial_stress_kPa.iloc[0],
+        first.tip_radial_stress_kPa,
+        last.tip_radial_stress_kPa,
+        last.concentration_mEq_l,
+        table.top_circ_stress_kPa.iloc[0],
+        first.top_circ_stress_kPa,
+        last.top_circ_stress_kPa,
+    )
+    provenance.write_record(
+        sm.output.provenance,
+        rule="pool_stresses",
+        params=dict(p),
+        outputs=list(sm.output),
+        summary=dict(max_residual=float(table.residual.max())),
+        started=started,
+    )

@@ -16,12 +16,25 @@ with runlog.run(run, sm.log[0]) as log:
     pool = artery.pool_sector(sm.params.pool)
     model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=run, pool=pool, gag=sm.params.gag)
     saved = state.load(sm.input.state, expected_params=cfg)
-    states = protocols.swell_pool(model, solver.State(saved.load, saved.x, None, None), cfg["numerics"],
-                                  sm.params.settings)
+    states = protocols.swell_pool(
+        model, solver.State(saved.load, saved.x, None, None), cfg["numerics"], sm.params.settings
+    )
     params = dict(state=cfg, pool=sm.params.pool, settings=sm.params.settings, gag=sm.params.gag)
     state.save_series(sm.output.states, [(s.x, s.load, s.info(), None) for s in states], params)
     max_residual = max(s.residual for s in states)
-    log.info("[%s] %d pool particles; %d converged states up to %g mEq/l, largest residual %.2e", run,
-             model.props.converting.size, len(states), states[-1].concentration, max_residual)
-    provenance.write_record(sm.output.provenance, rule="swell", params=params, outputs=list(sm.output),
-                            summary=dict(max_residual=max_residual), started=started)
+    log.info(
+        "[%s] %d pool particles; %d converged states up to %g mEq/l, largest residual %.2e",
+        run,
+        model.props.converting.size,
+        len(states),
+        states[-1].concentration,
+        max_residual,
+    )
+    provenance.write_record(
+        sm.output.provenance,
+        rule="swell",
+        params=params,
+        outputs=list(sm.output),
+        summary=dict(max_residual=max_residual),
+        started=started,
+    )
