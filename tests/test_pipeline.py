@@ -318,7 +318,9 @@ def test_a_measurement_setting_reruns_the_measurement_not_the_simulations(workdi
     print("\nprobe_length_um edit reruns:", jobs)
     sw = ci_config["swelling"]
     assert jobs.pop("pool_stresses") == len(sw["models"]) * len(sw["cases"]) * len(sw["pressures_mmHg"])
-    assert "swell" not in jobs and "homeostasis" not in jobs and "delaminate" not in jobs, jobs
+    assert jobs.pop("swelling_convergence_stresses") == len(ci_config["swelling_convergence"]["dx_um"])
+    simulations = {"swell", "swelling_convergence_dx", "homeostasis", "bilayer_pressure_diameter", "delaminate"}
+    assert not simulations & set(jobs), jobs
 
 
 def edited_copy(workdir, tmp_path, module: str) -> Path:

@@ -103,17 +103,26 @@ def test_refining_changes_the_pool_state_at_150_mEq_l_by_less_than_the_measured_
     45 kPa and 30 %. (The full study's bar, < 10 % between its two finest spacings, is in the README.)"""
     sc = ci_config["swelling_convergence"]
     cases = {c: ci_config["swelling"]["cases"][c] for c in sc["cases"]}
+    c = ci_config
     table = pd.concat(
         [
-            convergence.study(
+            convergence.measure(
                 dx,
-                ci_config["bilayer"],
-                ci_config["numerics"],
-                ci_config["homeostasis"],
-                ci_config["swelling"],
-                ci_config["gag"],
+                c["bilayer"],
+                c["numerics"],
+                c["gag"],
                 cases,
-                sc["pressure_mmHg"],
+                convergence.swell_cases(
+                    dx,
+                    c["bilayer"],
+                    c["numerics"],
+                    c["homeostasis"],
+                    c["swelling"],
+                    c["gag"],
+                    cases,
+                    sc["pressure_mmHg"],
+                ),
+                c["swelling"]["probe_length_um"],
             )
             for dx in sc["dx_um"]
         ],

@@ -2,18 +2,20 @@
 
 For one particle spacing: the passive homeostatic state (figure 2b), pressurised
 to the study's lumen pressure under pressure control, then every chosen pool
-converted and swollen (:func:`sphgag.protocols.swell_pool`) and measured
-(:func:`sphgag.protocols.pool_table`). The rows carry the quantities whose
-convergence the study measures: the tip radial stress averaged
-over ``swelling.probe_length_um`` and its particle peak, the top hoop stress and
-the pool's volume change, with the residual of each converged state.
+converted and swollen (:func:`swell_cases`, rule ``swelling_convergence_dx``,
+which saves the states), then measured (:func:`measure`, rule
+``swelling_convergence_stresses``, so that ``swelling.probe_length_um`` reruns
+only the measurement). The rows carry the quantities whose convergence the
+study measures: the tip radial stress averaged over
+``swelling.probe_length_um`` and its particle peak, the top hoop stress and the
+pool's volume change, with the residual of each converged state.
 """
 
 from __future__ import annotations
 
 import pandas as pd
 
-from . import artery, protocols, solver
+from . import artery, protocols
 
 COLUMNS = [
     "dx_um",
@@ -28,7 +30,7 @@ COLUMNS = [
 ]
 
 
-def study(
+def swell_cases(
     dx: float,
     bilayer: dict,
     numerics: dict,
@@ -38,20 +40,45 @@ def study(
     cases: dict,
     pressure_mmHg: float,
     name: str = "convergence",
-) -> pd.DataFrame:
-    """Rows of ``results/swelling/convergence.csv`` for one particle spacing ``dx`` [um] (converted stage only)."""
+) -> dict[str, list[protocols.PoolState]]:
+    """The converged states of every study pool at particle spacing ``dx`` [um]: the passive wall pressurised at
+    this spacing, then each pool converted and swollen (:func:`sphgag.protocols.swell_pool`)."""
     p = dict(bilayer, dx_um=float(dx))
     wall = artery.bilayer_model(p, numerics, name=name)
     h = protocols.homeostasis(wall, numerics, homeostasis)
     start = protocols.pressurise(wall, h.state, pressure_mmHg, numerics)
+    return {
+        case: protocols.swell_pool(
+            case_model(dx, bilayer, numerics, gag, entry, f"{name}_{case}"), start, numerics, swelling
+        )
+        for case, entry in cases.items()
+    }
+
+
+def case_model(dx: float, bilayer: dict, numerics: dict, gag: dict, entry: dict, name: str):
+    """The bi-layered wall at spacing ``dx`` with the pool ``entry`` (a ``swelling.cases`` entry) seeded."""
+    return artery.bilayer_model(
+        dict(bilayer, dx_um=float(dx)), numerics, name=name, pool=artery.pool_sector(entry), gag=gag
+    )
+
+
+def measure(
+    dx: float,
+    bilayer: dict,
+    numerics: dict,
+    gag: dict,
+    cases: dict,
+    states: dict[str, list[protocols.PoolState]],
+    probe_length: float,
+    name: str = "convergence",
+) -> pd.DataFrame:
+    """Rows of ``results/swelling/convergence.csv`` for one particle spacing (converted stage only): the pool
+    stresses (:func:`sphgag.protocols.pool_table`) of the states of :func:`swell_cases`."""
     tables = []
     for case, entry in cases.items():
-        pool = artery.pool_sector(entry)
-        model = artery.bilayer_model(p, numerics, name=f"{name}_{case}", pool=pool, gag=gag)
-        states = protocols.swell_pool(model, solver.State(start.load, start.x, None, None), numerics, swelling)
-        table = protocols.pool_table(model, states, pool, swelling["probe_length_um"], gag)
-        table = table[table.stage == "converted"].assign(dx_um=float(dx), particles=model.n, case=case)
-        tables.append(table)
+        model = case_model(dx, bilayer, numerics, gag, entry, f"{name}_{case}")
+        table = protocols.pool_table(model, states[case], artery.pool_sector(entry), probe_length, gag)
+        tables.append(table[table.stage == "converted"].assign(dx_um=float(dx), particles=model.n, case=case))
     out = pd.concat(tables, ignore_index=True)
     return out[COLUMNS + [c for c in out.columns if c not in COLUMNS]]
 

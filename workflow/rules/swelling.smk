@@ -91,6 +91,16 @@ rule tip_stress:
 
 SC = config["swelling_convergence"]
 CONVERGENCE_DX = [f"{dx:g}" for dx in SC["dx_um"]]
+# what the study's simulations depend on (its measurement adds swelling.probe_length_um)
+SC_SIMULATION = dict(
+    bilayer=config["bilayer"],
+    numerics=config["numerics"],
+    homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
+    settings=SWELL_SETTINGS,
+    gag=config["gag"],
+    cases={c: SW["cases"][c] for c in SC["cases"]},
+    pressure=SC["pressure_mmHg"],
+)
 
 
 wildcard_constraints:
@@ -98,11 +108,11 @@ wildcard_constraints:
 
 
 rule swelling_convergence_dx:
-    """Resolution study, one particle spacing (dx = {dx} um): passive wall, every study pool swollen."""
+    """Resolution study, one particle spacing (dx = {dx} um): passive wall, every study pool swollen (states)."""
     input:
         code=SPHGAG,
     output:
-        table="results/swelling/convergence/dx{dx}.csv",
+        states="results/swelling/convergence/states/dx{dx}.npz",
         provenance="results/provenance/swelling_convergence_dx{dx}.json",
     log:
         "logs/swelling_convergence/dx{dx}.log",
@@ -115,21 +125,40 @@ rule swelling_convergence_dx:
         runtime=5,
         mem_mb=2500,
     params:
-        bilayer=config["bilayer"],
-        numerics=config["numerics"],
-        homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
-        settings=dict(SWELL_SETTINGS, probe_length_um=SW["probe_length_um"]),
-        gag=config["gag"],
-        cases={c: SW["cases"][c] for c in SC["cases"]},
-        pressure=SC["pressure_mmHg"],
+        **SC_SIMULATION,
     script:
         "../scripts/swelling_convergence.py"
+
+
+rule swelling_convergence_stresses:
+    """Resolution study, one particle spacing (dx = {dx} um): the pool stresses of the saved states."""
+    input:
+        code=SPHGAG,
+        states=rules.swelling_convergence_dx.output.states,
+    output:
+        table="results/swelling/convergence/dx{dx}.csv",
+        provenance="results/provenance/swelling_convergence_stresses_dx{dx}.json",
+    log:
+        "logs/swelling_convergence/stresses_dx{dx}.log",
+    benchmark:
+        "results/benchmarks/swelling_convergence_stresses_dx{dx}.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=5,
+        mem_mb=2500,
+    params:
+        **SC_SIMULATION,
+        probe_length=SW["probe_length_um"],
+    script:
+        "../scripts/swelling_convergence_stresses.py"
 
 
 rule swelling_convergence:
     """The resolution study of the pool stresses in one tidy table."""
     input:
-        expand(rules.swelling_convergence_dx.output.table, dx=CONVERGENCE_DX),
+        expand(rules.swelling_convergence_stresses.output.table, dx=CONVERGENCE_DX),
     output:
         report(
             "results/swelling/convergence.csv",

@@ -1,0 +1,42 @@
+"""Rule swelling_convergence_stresses: the pool stresses of the resolution study at one particle spacing, measured on
+the states of rule swelling_convergence_dx."""
+
+import time
+
+import numba
+
+from sphgag import convergence, protocols, provenance, runlog, state
+
+sm = snakemake  # noqa: F821
+numba.set_num_threads(sm.threads)
+started = time.time()
+run = f"swelling_convergence_stresses_dx{sm.wildcards.dx}"
+with runlog.run(run, sm.log[0]) as log:
+    p = sm.params
+    simulation = {k: v for k, v in dict(p).items() if k != "probe_length"}
+    saved = state.load_series(sm.input.states, dict(dx=sm.wildcards.dx, **simulation))
+    states = {case: [protocols.PoolState.from_saved(s) for s in saved if s.info["case"] == case] for case in p.cases}
+    dx = float(sm.wildcards.dx)
+    table = convergence.measure(dx, p.bilayer, p.numerics, p.gag, p.cases, states, p.probe_length, name=run)
+    table.to_csv(sm.output.table, index=False)
+    for case, g in table.groupby("case", sort=False):
+        last = g.iloc[-1]
+        log.info(
+            "[%s] case %s, %d particles: at %g mEq/l tip %.1f kPa (peak %.1f), top %.1f kPa, pool volume change %+.3f",
+            run,
+            case,
+            int(last.particles),
+            last.concentration_mEq_l,
+            last.tip_radial_stress_kPa,
+            last.tip_peak_radial_stress_kPa,
+            last.top_circ_stress_kPa,
+            last.pool_volume_change,
+        )
+    provenance.write_record(
+        sm.output.provenance,
+        rule="swelling_convergence_stresses",
+        params=dict(dx=sm.wildcards.dx, **dict(p)),
+        outputs=list(sm.output),
+        summary=dict(max_residual=float(table.residual.max())),
+        started=started,
+    )
