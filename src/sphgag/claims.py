@@ -257,7 +257,9 @@ def swelling_claims(tips: pd.DataFrame, cases: dict) -> list[Claim]:
                 "Activation lowers the tip stress at 103 and 145 mmHg",
                 "lower (section 3)",
                 f"active - passive at {c_max:g} mEq/l: "
-                + ", ".join(f"{r.case}@{r.pressure_mmHg:g}: {r.active_minus_passive:+.0f}" for r in low.itertuples())
+                + ", ".join(
+                    f"{r.case} at {r.pressure_mmHg:g} mmHg: {r.active_minus_passive:+.0f}" for r in low.itertuples()
+                )
                 + " kPa",
                 _yes(len(low) and (low.active_minus_passive < 0).all()) if len(low) else "n/a",
                 "negative for every case",
@@ -269,7 +271,9 @@ def swelling_claims(tips: pd.DataFrame, cases: dict) -> list[Claim]:
                 "... but raises it for the two smallest pools at 200 mmHg",
                 "higher for cases I-II (section 3)",
                 f"active - passive at {c_max:g} mEq/l: "
-                + ", ".join(f"{r.case}@{r.pressure_mmHg:g}: {r.active_minus_passive:+.0f}" for r in high_p.itertuples())
+                + ", ".join(
+                    f"{r.case} at {r.pressure_mmHg:g} mmHg: {r.active_minus_passive:+.0f}" for r in high_p.itertuples()
+                )
                 + " kPa",
                 _yes((high_p.active_minus_passive > 0).all()) if len(high_p) else "n/a",
                 "positive for the two smallest pools",
