@@ -147,7 +147,7 @@ rule swelling_convergence_stresses:
     threads: 1
     resources:
         runtime=5,
-        mem_mb=2500,
+        mem_mb=1500,
     params:
         **SC_SIMULATION,
         probe_length=SW["probe_length_um"],
