@@ -93,6 +93,10 @@ def test_all_problems_are_reported_at_once(full_config):
         (("swelling", "pressures_mmHg"), [103.0, 103.0], "swelling.pressures_mmHg = [103.0, 103.0] is invalid"),
         (("swelling", "cases", "I", "angular_extent_deg"), 0, "swelling.cases.I.angular_extent_deg = 0 is invalid"),
         (("bilayer_calibration", "state_pressures_mmHg"), [103.0, 103.0000001, 200.0], "all give the file name '103'"),
+        # found by the fuzz test: below round-off the layer's outer radius equals its inner one
+        (("bilayer", "adventitia_thickness_um"), 3.9e-56, "bilayer.adventitia_thickness_um = 3.9e-56 um is thinner"),
+        (("bilayer", "aligned_radii_um"), [646.9, 670.5], "the media sub-layer 646.8-646.9 um = 0.1 um is thinner"),
+        (("mean", "outer_radius_um"), 333.0, "must be at least half the particle spacing mean.dx_um"),
     ],
 )
 def test_inputs_the_schema_alone_misses_are_rejected_by_name(ci_config, path, value, expected):

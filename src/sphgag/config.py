@@ -209,6 +209,42 @@ def _empty_pools(config: dict) -> list[str]:
     return sorted(set(out))
 
 
+def _thin_layers(config: dict) -> list[str]:
+    """Layers (and media sub-layers between ``aligned_radii_um``) thinner than half the largest particle spacing they
+    are run at: their one ring of particles would get a cell of a sliver (or, below round-off, none at all)."""
+    out = []
+    m = config.get("mean", {})
+    if {"inner_radius_um", "outer_radius_um", "dx_um"} <= set(m) and m["outer_radius_um"] > m["inner_radius_um"]:
+        if m["outer_radius_um"] - m["inner_radius_um"] < m["dx_um"] / 2:
+            out.append(
+                f"mean.outer_radius_um - mean.inner_radius_um = {m['outer_radius_um'] - m['inner_radius_um']:g} um "
+                f"must be at least half the particle spacing mean.dx_um = {m['dx_um']:g} um"
+            )
+    bil = config.get("bilayer", {})
+    if not {"inner_radius_um", "media_thickness_um", "adventitia_thickness_um", "dx_um"} <= set(bil):
+        return out
+    spacings = [("bilayer.dx_um", bil["dx_um"])]
+    spacings += [("swelling_convergence.dx_um", dx) for dx in config.get("swelling_convergence", {}).get("dx_um", [])]
+    de_conv = config.get("delamination", {}).get("convergence", {})
+    spacings += [("delamination.convergence.dx_um", dx) for dx in de_conv.get("dx_um", [])]
+    source, dx = max(spacings, key=lambda item: item[1])
+    r0 = bil["inner_radius_um"]
+    border = r0 + bil["media_thickness_um"]
+    edges = sorted({r0, border, *(r for r in bil.get("aligned_radii_um", []) if r0 < r < border)})
+    layers = [
+        (f"bilayer.media_thickness_um / bilayer.aligned_radii_um: the media sub-layer {a:g}-{b:g} um", b - a)
+        for a, b in zip(edges, edges[1:])
+    ]
+    layers.append(("bilayer.adventitia_thickness_um", bil["adventitia_thickness_um"]))
+    for name, thickness in layers:
+        if thickness < dx / 2:
+            out.append(
+                f"{name} = {thickness:g} um is thinner than half the largest particle spacing it is run at "
+                f"({source} = {dx:g} um)"
+            )
+    return out
+
+
 def _consistency(config: dict) -> list[str]:
     """Relations between keys that a JSON schema cannot express."""
     problems = []
@@ -303,6 +339,7 @@ def _consistency(config: dict) -> list[str]:
                     f"{name}: angles {pool['centre_angle_deg'] - half:g}-"
                     f"{pool['centre_angle_deg'] + half:g} deg reach a symmetry edge (0 or 90 deg)"
                 )
+    problems += _thin_layers(config)
     if not problems and bil:
         problems += _empty_pools(config)
     act = bil.get("active", {})
