@@ -228,8 +228,9 @@ def _thin_layers(config: dict) -> list[str]:
     de_conv = config.get("delamination", {}).get("convergence", {})
     spacings += [("delamination.convergence.dx_um", dx) for dx in de_conv.get("dx_um", [])]
     source, dx = max(spacings, key=lambda item: item[1])
-    r0 = bil["inner_radius_um"]
-    border = r0 + bil["media_thickness_um"]
+    from .artery import bilayer_interfaces
+
+    r0, border, _ = bilayer_interfaces(bil)
     edges = sorted({r0, border, *(r for r in bil.get("aligned_radii_um", []) if r0 < r < border)})
     layers = [
         (f"bilayer.media_thickness_um / bilayer.aligned_radii_um: the media sub-layer {a:g}-{b:g} um", b - a)

@@ -21,6 +21,7 @@ import pandas as pd
 
 from . import analytic, measure, solver
 from .loading import MMHG_TO_KPA, Load
+from .materials import swelling_pressure
 from .model import Model
 
 log = logging.getLogger("sphgag")
@@ -453,8 +454,6 @@ def swell_pool(model: Model, start: solver.State, numerics: dict, sw: dict) -> l
 def pool_table(model: Model, states: list[PoolState], pool, probe_length: float, gag: dict) -> pd.DataFrame:
     """One row per state of :func:`swell_pool`: the Donnan swelling pressure (eq. 2.26), the carried lumen pressure
     and the stresses around the pool (:func:`pool_measurements`), with the residual of the state."""
-    from .materials import swelling_pressure
-
     members = model.props.converting  # the seeded pool (history.HistoryMaterial)
     rows = []
     for st in states:

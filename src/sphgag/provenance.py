@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import json
 import platform
 import subprocess
@@ -11,8 +12,10 @@ from pathlib import Path
 from . import CODE_HASH, __version__
 
 
+@functools.lru_cache
 def git_commit(path: Path | str = ".") -> str:
-    """The git commit of the working tree (``+dirty`` if it has local changes), or 'unknown'."""
+    """The git commit of the working tree (``+dirty`` if it has local changes), or 'unknown'; asked once per
+    process (state files of a series each record it)."""
     try:
         top = subprocess.run(
             ["git", "rev-parse", "--show-toplevel"], cwd=path, capture_output=True, text=True, check=True
