@@ -153,6 +153,9 @@ def _lu(model: Model, data: np.ndarray):
 # (a chord step costs one force evaluation and one LU solve, a fresh Newton step 20-30 times more).
 CHORD_CONTRACTION = 0.5
 CHORD_STEPS = 12
+# Newton's method gives up after STALL_ITERATIONS fresh iterations that do not halve the relative residual: near a
+# state with no equilibrium the residual has a positive local minimum, where further iterations only cost time.
+STALL_ITERATIONS = 8
 
 
 def newton(
@@ -190,6 +193,7 @@ def newton(
     n_eval, n_jac, damping, chords = 1, 0, 0.0, 0
     rel = relative_residual(model, ev)
     run_start, run_length = rel, 0  # the current sequence of chord steps
+    progress = (rel, 0)  # (residual, fresh iterations) when the residual last halved
     for it in range(max_iter + CHORD_STEPS + 1):
         if rel < tol and ev.constraint_error < 1e-9 * model.layout.outer_radius:
             return x, ev, Convergence(rel, it, n_eval, n_jac, time.perf_counter() - t0)
@@ -208,6 +212,7 @@ def newton(
             log.debug("[%s] chord %d rejected: residual %.3e -> %.3e", run, it, rel, rel_try)
         data = model.jacobian(ev)
         n_jac += 1
+        best = None  # (step, evaluation, factorisation, dx) of the best step a lower damping found
         while True:
             fac = _factorise(model, ev, data.copy(), damping, run)
             dx = fac.step(ev)
@@ -215,8 +220,18 @@ def newton(
             n_eval += evals
             if step >= 0.125 or damping >= 1e4:
                 break
+            if ev_try is not None and (best is None or _merit(ev_try, fac.scale) < _merit(best[1], fac.scale)):
+                best = (step, ev_try, fac, dx)
             damping = max(10.0 * damping, 1e-4)  # steps cut hard: damp the soft modes and solve again
             log.debug("[%s] newton %d: step %.3g, damping raised to %.0e", run, it, step, damping)
+        if ev_try is None and best is not None:
+            # with an indefinite stiffness a damped direction need not descend at all; the undamped Newton direction
+            # always does (exact Jacobian), so the short step found before the damping rose is taken
+            step, ev_try, fac, dx = best
+            damping = fac.damping
+            log.debug(
+                "[%s] newton %d: damped line search failed, step %.3g of damping %.0e kept", run, it, step, damping
+            )
         model.factorisation = fac if fac.damping == 0.0 else None
         if ev_try is None:
             raise NotConverged(run, load, f"line search failed at Newton iteration {it} (relative residual {rel:.3g})")
@@ -234,6 +249,14 @@ def newton(
         x, ev = ev_try.x, ev_try
         rel = relative_residual(model, ev)
         run_start, run_length = rel, 0
+        if rel < 0.5 * progress[0]:
+            progress = (rel, n_jac)
+        elif n_jac - progress[1] >= STALL_ITERATIONS:
+            raise NotConverged(
+                run,
+                load,
+                f"Newton stagnated: {STALL_ITERATIONS} iterations without halving the relative residual ({rel:.3g})",
+            )
     raise NotConverged(
         run,
         load,
