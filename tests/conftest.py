@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from sphgag import artery, config, geometry, kernel, materials
+from sphgag import artery, config, geometry, kernel, materials, protocols, solver
 from sphgag.model import Model
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -47,6 +47,16 @@ def full_config():
 @pytest.fixture(scope="session")
 def ci_config():
     return config.load_yaml(ROOT / "config" / "ci.yaml")
+
+
+@pytest.fixture(scope="session")
+def ci_wall(ci_config):
+    """The passive CI wall pressurised to the delamination pressure (a state to seed pools in)."""
+    numerics = ci_config["numerics"]
+    model = artery.bilayer_model(ci_config["bilayer"], numerics, name="test-wall")
+    h = protocols.homeostasis(model, numerics, ci_config["homeostasis"])
+    start = protocols.pressurise(model, h.state, ci_config["delamination"]["pressure_mmHg"], numerics)
+    return solver.State(start.load, start.x, None, None)
 
 
 @pytest.fixture(scope="session")

@@ -6,19 +6,15 @@ import numpy as np
 import pytest
 from scipy.spatial import cKDTree
 
-from sphgag import artery, delamination, geometry, protocols, solver, state
+from sphgag import artery, delamination, geometry, protocols, state
 from sphgag.history import DAMAGED, SEEDED, HistoryMaterial, ParticleHistory
 from sphgag.loading import Load
 
 
 @pytest.fixture(scope="module")
-def wall(ci_config):
+def wall(ci_wall):
     """The passive CI wall pressurised to the delamination pressure."""
-    numerics = ci_config["numerics"]
-    model = artery.bilayer_model(ci_config["bilayer"], numerics, name="test-delamination")
-    h = protocols.homeostasis(model, numerics, ci_config["homeostasis"])
-    start = protocols.pressurise(model, h.state, ci_config["delamination"]["pressure_mmHg"], numerics)
-    return solver.State(start.load, start.x, None, None)
+    return ci_wall
 
 
 def settings(ci_config, **changes):

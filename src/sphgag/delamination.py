@@ -15,6 +15,18 @@ the fixed-charge concentration ``c`` is raised level by level to
 3. the level ends when a pass changes no ``D`` by more than ``damage_tolerance`` and
    ruptures nothing.
 
+**Snaps.** A damage pass whose new history cannot be reached along its transition, or a
+concentration step with no equilibrium on its path (after bisection), has lost
+equilibrium: the wall snaps. The run follows the snap to where the overdamped
+pseudo-dynamics come to rest (:mod:`sphgag.snap`), records that state (converged below
+the tolerance, ``snap`` in growth.csv) and keeps growing from it at the same
+concentration. A run ends where a level arrests at the highest concentration
+(``arrested``), where the pools merge (``merged``), where a pool spans ``max_extent_deg``
+(``maximum extent``) or comes within the candidate window of a symmetry edge
+(``symmetry edge``), after ``max_passes`` (``pass limit``), or where a snap comes to rest at
+no equilibrium (``no stable state after a snap``, with the step and load): always at its
+last equilibrium.
+
 **Pseudo-time** is the number of damage-and-relax passes. The paper's normalised time
 is that of its explicit dynamics, in which every time step is one damage update with
 at most one step of relaxation; a pass here is one damage update with complete
@@ -46,11 +58,11 @@ import numpy as np
 import pandas as pd
 from scipy.spatial import cKDTree
 
-from . import artery, damage, forces, measure, protocols, solver
+from . import artery, damage, forces, measure, protocols, snap, solver
 from . import state as state_io
 from .geometry import Sector
 from .history import DAMAGED, HistoryMaterial, ParticleHistory
-from .loading import MMHG_TO_KPA
+from .loading import MMHG_TO_KPA, Load
 from .model import Model
 
 log = logging.getLogger("sphgag")
@@ -213,6 +225,7 @@ class Pass:
     length: float
     tip_stress: float
     residual: float
+    snap: bool = False  # reached through a snap (sphgag.snap)
 
 
 @dataclass
@@ -259,6 +272,327 @@ def intact_energy(model: Model, ev, base_props: np.ndarray) -> np.ndarray:
     return W
 
 
+@dataclass
+class GrowthRun:
+    """One delamination run as a record of its state, with one method per step of the protocol.
+
+    :meth:`seed` (or :meth:`resume`) makes the run; :meth:`raise_concentration` moves it to the next level of the
+    ramp; :meth:`damage_pass` updates the damage once and solves the new history; :meth:`follow_snap` follows a step that
+    has no equilibrium on its path; :meth:`level` repeats damage passes at one concentration until the pools
+    arrest or the run ends; :meth:`run` walks the ramp and returns the :class:`Result`. Every state the run holds
+    is converged below the solver tolerance.
+    """
+
+    model: Model
+    front: Front
+    settings: Settings
+    opts: dict  # solver options and the run name (protocols.solver_options)
+    material: HistoryMaterial
+    state: solver.State
+    step: int = 0  # pseudo-time: damage passes so far
+    wanted: frozenset = frozenset()  # pseudo-times at which to keep a snapshot
+    rows: list = field(default_factory=list)
+    snapshots: list = field(default_factory=list)
+    dissipated: float = 0.0  # kPa um^2 per unit axial length
+    onset_c: float = np.nan
+    merge_step: int | None = None
+    max_residual: float = 0.0
+    snaps: int = 0
+    snap_length: float = 0.0  # delaminated length gained through snaps [um]
+    tip: float = np.nan  # largest onset measure of the current state (the last row's tip stress)
+    _front: tuple = ()  # (candidates, their pools, their onset measures) of the current state
+
+    @property
+    def run_name(self) -> str:
+        return self.opts["run"]
+
+    @property
+    def hist(self) -> ParticleHistory:
+        return self.material.history
+
+    # -- making a run ---------------------------------------------------------------------------------------------
+    @classmethod
+    def seed(cls, model, start, sectors, settings, numerics, gag, base, run=None, snapshot_steps=()) -> GrowthRun:
+        """Convert the medial particles of ``sectors`` to GAG pools at c = 0 in the converged pressurised state
+        ``start`` (``settings.conversion_steps`` converged increments of the seeding path)."""
+        opts = dict(run=run or model.name, **protocols.solver_options(numerics))
+        material = artery.seeding(base, model.layout, sectors, gag)
+        model.set_props(material)
+        base_load = protocols.swelling_load(start.load, 0.0, 0.0)
+        law = settings.law
+        log.info(
+            "[%s] seeding %d pool(s) (%d particles) in %d steps at %.1f mmHg; sigma_cr %.0f kPa, %s onset, "
+            "rupture at +%.3g radial stretch",
+            opts["run"],
+            len(sectors),
+            int(material.history.gag.sum()),
+            settings.conversion_steps,
+            base_load.pressure_mmHg,
+            law.critical_stress_kPa,
+            settings.criterion,
+            law.rupture_stretch_increment,
+        )
+        fractions = np.linspace(0, 1, settings.conversion_steps + 1)[1:]
+        state = solver.follow_path(
+            model, start.x, base_load, [protocols.swelling_load(base_load, f, 0.0) for f in fractions], **opts
+        )[-1]
+        run = cls(model, Front(model, sectors, settings.candidate_window_deg), settings, opts, material, state)
+        run.wanted = frozenset(int(s) for s in snapshot_steps)
+        run._settle(material.settled())
+        run._accept(state)
+        return run
+
+    @classmethod
+    def resume(cls, model, snapshot, sectors, settings, numerics, gag, base, run=None, snapshot_steps=()) -> GrowthRun:
+        """Continue from ``snapshot = (state, history, pseudo_time)`` of this run (:func:`load_snapshot`)."""
+        state, hist, step = snapshot
+        opts = dict(run=run or model.name, **protocols.solver_options(numerics))
+        material = HistoryMaterial(base, hist, gag)
+        model.set_props(material)
+        log.info(
+            "[%s] resuming at pass %d, c = %g mEq/l (%d GAG particles)",
+            opts["run"],
+            step,
+            state.load.material_value("concentration"),
+            int(hist.gag.sum()),
+        )
+        if state.evaluation is None:  # a saved snapshot: evaluate it and measure its residual
+            ev = model.evaluate(state.x, state.load)
+            conv = state.convergence or solver.Convergence(solver.relative_residual(model, ev), 0, 1, 0, 0.0)
+            state = solver.State(state.load, state.x, ev, conv)
+        run = cls(model, Front(model, sectors, settings.candidate_window_deg), settings, opts, material, state, step)
+        run.wanted = frozenset(int(s) for s in snapshot_steps)
+        run._accept(state)
+        return run
+
+    # -- steps of the protocol ------------------------------------------------------------------------------------
+    @property
+    def concentration(self) -> float:
+        return float(self.state.load.material_value("concentration"))
+
+    def raise_concentration(self, c: float) -> None:
+        """Move the run to the fixed-charge concentration ``c`` (mEq/l) with its history fixed; a step with no
+        equilibrium on its path is followed as a snap."""
+        load = protocols.swelling_load(self.state.load, 1.0, float(c))
+        if load == self.state.load:
+            return
+        try:
+            state = solver.follow_path(self.model, self.state.x, self.state.load, [load], **self.opts)[-1]
+        except solver.NotConverged as exc:
+            state = self.follow_snap(load, f"c = {self.concentration:g} -> {c:g} mEq/l", exc)
+        self._accept(state)
+
+    def damage_pass(self) -> bool:
+        """One damage update (eq. 2.28) from the current state and the solve of the new history; False if it
+        would change no ``D`` by more than ``damage_tolerance`` and rupture nothing (new onsets are kept)."""
+        hist, lay = self.hist, self.model.layout
+        cand, pools, sigma = self._front
+        ev = self.state.evaluation
+        dmg = damage.DamageState(hist.D.copy(), hist.onset_stretch.copy())
+        radial = np.full(lay.n, -np.inf)
+        radial[cand] = sigma
+        dmg.update(self.settings.law, cand, radial, damage.radial_stretch(ev.F, lay.theta))
+        dmg.D[hist.gag] = hist.D[hist.gag]
+        ruptured = np.flatnonzero(dmg.ruptured & ~hist.gag)
+        if np.isnan(self.onset_c) and np.any(~np.isnan(dmg.onset_stretch)):
+            self.onset_c = self.concentration
+        if float(np.max(dmg.D - hist.D, initial=0.0)) <= self.settings.damage_tolerance and ruptured.size == 0:
+            if not np.array_equal(dmg.onset_stretch, hist.onset_stretch, equal_nan=True):
+                # new onsets are history; changes of D below the tolerance are not applied
+                self._settle(
+                    HistoryMaterial(self.material.base, hist.with_damage(hist.D, dmg.onset_stretch), self.material.gag)
+                )
+            return False
+        W0 = intact_energy(self.model, ev, self.material.base(ev.load))
+        released = float(np.sum((dmg.D - hist.D) * W0 * lay.volume))
+        step = self.step + 1
+        new = hist.with_damage(dmg.D, dmg.onset_stretch)
+        if ruptured.size:
+            owner = np.full(lay.n, -1)
+            owner[cand] = pools
+            new = new.rupture(ruptured, owner[ruptured], step)
+        path = self.material.towards(new)
+        self.model.set_props(path)
+        load = ev.load
+        snapped = False
+        try:
+            start = load.with_material(transition=0.0)
+            state = solver.follow_path(
+                self.model, self.state.x, start, [load.with_material(transition=1.0)], **self.opts
+            )[-1]
+        except solver.NotConverged as exc:
+            self.model.set_props(path.settled())
+            state = self.follow_snap(load, f"pass {step}", exc)  # NoStableState leaves the run as it was
+            snapped = True
+        self.step = step
+        self.dissipated += released
+        self._settle(path.settled())
+        self._accept(solver.State(load, state.x, self.model.evaluate(state.x, load), state.convergence))
+        if snapped:
+            self.snap_length += self.front.delaminated_length(new) - self.front.delaminated_length(hist)
+        self._record(snapped=snapped)
+        if ruptured.size:
+            log.info(
+                "[%s] pass %d, c = %g mEq/l: %d ruptured (%d converted in all), delaminated %.1f um, "
+                "max onset stress %.1f kPa%s",
+                self.run_name,
+                self.step,
+                self.concentration,
+                ruptured.size,
+                self.rows[-1].converted[0],
+                self.rows[-1].length,
+                self.tip,
+                " (through a snap)" if snapped else "",
+            )
+        return True
+
+    def follow_snap(self, load: Load, what: str, exc: solver.SimulationError) -> solver.State:
+        """Follow a step with no equilibrium on its path (:mod:`sphgag.snap`) from the current state to the
+        equilibrium the overdamped pseudo-dynamics come to rest at, under the model's current material and ``load``;
+        raises :class:`sphgag.snap.NoStableState` if there is none."""
+        log.info(
+            "[%s] %s at c = %g mEq/l has no equilibrium on its path (%s): following the snap",
+            self.run_name,
+            what,
+            load.material_value("concentration"),
+            exc.reason,
+        )
+        state = snap.follow(self.model, self.state.x, load, **self.opts)
+        self.snaps += 1
+        return state
+
+    def level(self, c: float) -> str:
+        """Damage passes at concentration ``c`` until the pools arrest (``arrested``) or the run must end (its
+        reason: ``merged``, ``maximum extent``, ``symmetry edge``, ``pass limit``)."""
+        self.raise_concentration(c)
+        self._record(first_of_level=True)
+        while self.damage_pass():
+            if self.merge_step is not None:
+                return "merged"
+            if self.step >= self.settings.max_passes:
+                return "pass limit"
+            if self.front.extent_deg(self.hist).max() >= self.settings.max_extent_deg:
+                return "maximum extent"
+            if self.front.at_symmetry_edge(self.hist):
+                return "symmetry edge"
+        return "arrested"
+
+    def run(self) -> Result:
+        """Walk the concentration ramp from the current concentration; the run ends where a level does not arrest,
+        or where a snap finds no stable state (``stop`` names the step and the load)."""
+        stop = "arrested"
+        for c in self.settings.levels[self.settings.levels >= self.concentration - 1e-9]:
+            try:
+                stop = self.level(float(c))
+            except snap.NoStableState as exc:
+                stop = f"no stable state after a snap ({exc.reason})"
+                log.warning(
+                    "[%s] c = %g mEq/l, pass %d: %s; the run ends at its last equilibrium",
+                    self.run_name,
+                    c,
+                    self.step + 1,
+                    stop,
+                )
+                self.model.set_props(self.material)
+                break
+            log.info(
+                "[%s] c = %g mEq/l: %s after %d passes, %d converted",
+                self.run_name,
+                c,
+                stop,
+                self.step,
+                self.rows[-1].converted[0],
+            )
+            if stop != "arrested":
+                break
+        return self.result(stop)
+
+    # -- bookkeeping ----------------------------------------------------------------------------------------------
+    def _settle(self, material: HistoryMaterial) -> None:
+        self.material = material
+        self.model.set_props(material)
+
+    def _accept(self, state: solver.State) -> None:
+        """Make ``state`` (converged under the current material) the run's state and measure its front."""
+        self.state = state
+        self.max_residual = max(self.max_residual, state.convergence.residual)
+        cand, pools = self.front.candidates(self.hist)
+        sigma = (
+            onset_measure(self.model, state.evaluation, self.hist, cand, self.settings) if cand.size else np.empty(0)
+        )
+        self._front = (cand, pools, sigma)
+        self.tip = float(sigma.max()) if sigma.size else np.nan
+        if self.merge_step is None and self.step and self.front.merged(self.hist):
+            self.merge_step = self.step
+            log.info("[%s] pools merged at pass %d (c = %g mEq/l)", self.run_name, self.step, self.concentration)
+
+    def _record(self, first_of_level=False, snapped=False) -> None:
+        st = self.state
+        self.rows.append(
+            Pass(
+                self.step,
+                self.concentration,
+                self.front.converted(self.hist),
+                self.front.delaminated_length(self.hist),
+                self.tip,
+                st.convergence.residual,
+                snapped,
+            )
+        )
+        if (first_of_level or self.step in self.wanted) and not any(
+            s[0] == self.step and s[1].load == st.load for s in self.snapshots
+        ):
+            self.snapshots.append((self.step, st, self.hist))
+            # the run continues from a snapshot exactly as a restart from it does: without a stale factorisation
+            # (equilibria need not be unique, e.g. a crushed tissue bridge between two GAG regions, so the
+            # solver's path must be the same)
+            self.model.factorisation = None
+
+    def result(self, stop: str) -> Result:
+        rows = self.rows
+        growth = pd.DataFrame(
+            [
+                dict(
+                    step=k,
+                    pseudo_time=r.step,
+                    concentration_mEq_l=r.concentration,
+                    converted_particles=r.converted[0],
+                    converted_interior=r.converted[1],
+                    converted_exterior=r.converted[2],
+                    delaminated_length_um=r.length,
+                    tip_radial_stress_kPa=r.tip_stress,
+                    residual=r.residual,
+                    snap=r.snap,
+                )
+                for k, r in enumerate(rows)
+            ]
+        )
+        rate_t, rate_c = growth_rates(growth, self.settings.concentration_step_mEq_l)
+        length = rows[-1].length
+        summary = dict(
+            onset_concentration_mEq_l=self.onset_c,
+            final_length_um=length,
+            max_tip_radial_stress_kPa=float(growth.tip_radial_stress_kPa.max()),
+            growth_rate_um_per_pseudo_time=rate_t,
+            growth_rate_um_per_mEq_l=rate_c,
+            merged=self.merge_step is not None,
+            merge_step=self.merge_step if self.merge_step is not None else np.nan,
+            dissipated_energy_J_m2=1e-3 * self.dissipated / length if length > 0 else np.nan,
+            dissipated_energy_kPa_um2=self.dissipated,
+            stop=stop,
+            passes=self.step,
+            snaps=self.snaps,
+            snap_length_um=self.snap_length,
+            max_residual=self.max_residual,
+            pressure_mmHg=measure.carried_pressure(self.model, self.state.evaluation) / MMHG_TO_KPA,
+        )
+        state = self.state
+        snapshots = list(self.snapshots)
+        if not any(s[0] == self.step and s[1].load == state.load for s in snapshots):
+            snapshots.append((self.step, state, self.hist))
+        return Result(growth, summary, snapshots, (state, self.hist))
+
+
 def grow(
     model: Model,
     start: solver.State,
@@ -271,205 +605,16 @@ def grow(
     run: str | None = None,
     resume: tuple | None = None,
 ) -> Result:
-    """Seed the pools of ``sectors`` in the wall at the converged pressurised state ``start`` and grow them.
+    """Seed the pools of ``sectors`` in the wall at the converged pressurised state ``start`` and grow them
+    (:class:`GrowthRun`).
 
     ``base``: the intact wall's material (``load -> props``, e.g. :class:`sphgag.artery.BilayerMaterial`).
     ``snapshot_steps``: pseudo-times at which to keep the state (the first state of every concentration level and
     the last state are always kept). ``resume``: ``(state, history, pseudo_time)`` of a snapshot of this run
     (:func:`load_snapshot`) to continue from instead of seeding; the rows then start there.
     """
-    run = run or model.name
-    opts = dict(run=run, **protocols.solver_options(numerics))
-    lay = model.layout
-    front = Front(model, sectors, settings.candidate_window_deg)
-    law = settings.law
-    if resume is None:
-        material = artery.seeding(base, lay, sectors, gag)
-        hist = material.history
-        model.set_props(material)
-        base_load = protocols.swelling_load(start.load, 0.0, 0.0)
-        log.info(
-            "[%s] seeding %d pool(s) (%d particles) in %d steps at %.1f mmHg; sigma_cr %.0f kPa, %s onset, "
-            "rupture at +%.3g radial stretch",
-            run,
-            len(sectors),
-            int(hist.gag.sum()),
-            settings.conversion_steps,
-            base_load.pressure_mmHg,
-            law.critical_stress_kPa,
-            settings.criterion,
-            law.rupture_stretch_increment,
-        )
-        state = solver.follow_path(
-            model,
-            start.x,
-            base_load,
-            [protocols.swelling_load(base_load, f, 0.0) for f in np.linspace(0, 1, settings.conversion_steps + 1)[1:]],
-            **opts,
-        )[-1]
-        material = material.settled()
-        step, c_from = 0, 0.0
-    else:
-        state, hist, step = resume
-        material = HistoryMaterial(base, hist, gag)
-        base_load = state.load
-        c_from = float(state.load.material_value("concentration"))
-        log.info("[%s] resuming at pass %d, c = %g mEq/l (%d GAG particles)", run, step, c_from, int(hist.gag.sum()))
-    model.set_props(material)
-    if state.evaluation is None:  # a resumed snapshot: evaluate it and measure its residual
-        ev = model.evaluate(state.x, state.load)
-        conv = state.convergence or solver.Convergence(solver.relative_residual(model, ev), 0, 1, 0, 0.0)
-        state = solver.State(state.load, state.x, ev, conv)
-    dmg = damage.DamageState(hist.D.copy(), hist.onset_stretch.copy())
-    rows, snapshots = [], []
-    dissipated = 0.0  # kPa um^2 per unit axial length
-    onset_c, merge_step = np.nan, None
-    stop = "pass limit"
-    max_residual = state.convergence.residual if state.convergence else 0.0
-    wanted = set(int(s) for s in snapshot_steps)
-
-    def record(c, tip, st, first_of_level=False):
-        rows.append(Pass(step, c, front.converted(hist), front.delaminated_length(hist), tip, st.convergence.residual))
-        if (first_of_level or step in wanted) and not any(s[0] == step and s[1].load == st.load for s in snapshots):
-            snapshots.append((step, st, hist))
-            # the run continues from a snapshot exactly as a restart from it does: without a stale factorisation
-            # (equilibria need not be unique, e.g. a crushed tissue bridge between two GAG regions, so the
-            # solver's path must be the same)
-            model.factorisation = None
-
-    def in_front(state):
-        """Candidates, their pools and onset measures, and the largest of these (the row's tip stress)."""
-        cand, pools = front.candidates(hist)
-        sigma = onset_measure(model, state.evaluation, hist, cand, settings) if cand.size else np.empty(0)
-        return cand, pools, sigma, float(sigma.max()) if sigma.size else np.nan
-
-    def level(c, state):
-        nonlocal hist, material, dmg, dissipated, onset_c, merge_step, step, max_residual
-        cand, pools, sigma, tip = in_front(state)
-        record(c, tip, state, first_of_level=True)
-        while True:
-            ev = state.evaluation
-            stretch = damage.radial_stretch(ev.F, lay.theta)
-            radial = np.full(lay.n, -np.inf)
-            radial[cand] = sigma
-            D_old = dmg.D.copy()
-            dmg.update(law, cand, radial, stretch)
-            dmg.D[hist.gag] = D_old[hist.gag]
-            change = float(np.max(dmg.D - D_old, initial=0.0))
-            ruptured = np.flatnonzero(dmg.ruptured & ~hist.gag)
-            if np.isnan(onset_c) and np.any(~np.isnan(dmg.onset_stretch)):
-                onset_c = c
-            if change <= settings.damage_tolerance and ruptured.size == 0:
-                dmg.D = D_old  # changes below the tolerance are not applied: D stays that of the solved state
-                if not np.array_equal(dmg.onset_stretch, hist.onset_stretch, equal_nan=True):
-                    hist = hist.with_damage(D_old, dmg.onset_stretch)  # new onsets are history (D unchanged)
-                    material = HistoryMaterial(material.base, hist, material.gag)
-                    model.set_props(material)
-                return state, "arrested"
-            W0 = intact_energy(model, ev, material.base(ev.load))
-            released = float(np.sum((dmg.D - D_old) * W0 * lay.volume))
-            step += 1
-            new = hist.with_damage(dmg.D, dmg.onset_stretch)
-            if ruptured.size:
-                owner = np.full(lay.n, -1)
-                owner[cand] = pools
-                new = new.rupture(ruptured, owner[ruptured], step)
-            path = material.towards(new)
-            model.set_props(path)
-            load = ev.load
-            try:
-                state = solver.follow_path(
-                    model, state.x, load.with_material(transition=0.0), [load.with_material(transition=1.0)], **opts
-                )[-1]
-            except solver.NotConverged as exc:
-                # no equilibrium along the path to the new history: the growth is unstable (a snap) at this
-                # concentration; the run ends at the last converged state, with the reason in the summary
-                log.warning(
-                    "[%s] pass %d, c = %g mEq/l: %s; growth is unstable here, the run stops at the last "
-                    "converged state",
-                    run,
-                    step,
-                    c,
-                    exc.reason,
-                )
-                step -= 1
-                dmg.D = D_old
-                model.set_props(material)
-                return state, "unstable"
-            dissipated += released
-            material, hist = path.settled(), new
-            model.set_props(material)
-            state = solver.State(ev.load, state.x, model.evaluate(state.x, ev.load), state.convergence)
-            max_residual = max(max_residual, state.convergence.residual)
-            if merge_step is None and front.merged(hist):
-                merge_step = step
-                log.info("[%s] pools merged at pass %d (c = %g mEq/l)", run, step, c)
-            cand, pools, sigma, tip = in_front(state)  # also the next pass's onset test
-            record(c, tip, state)
-            if ruptured.size:
-                log.info(
-                    "[%s] pass %d, c = %g mEq/l: %d ruptured (%d converted in all), delaminated %.1f um, "
-                    "max onset stress %.1f kPa",
-                    run,
-                    step,
-                    c,
-                    ruptured.size,
-                    rows[-1].converted[0],
-                    rows[-1].length,
-                    tip,
-                )
-            if step >= settings.max_passes:
-                return state, "pass limit"
-            if front.extent_deg(hist).max() >= settings.max_extent_deg:
-                return state, "maximum extent"
-            if front.at_symmetry_edge(hist):
-                return state, "symmetry edge"
-
-    for c in settings.levels[settings.levels >= c_from - 1e-9]:
-        load = protocols.swelling_load(base_load, 1.0, float(c))
-        if load != state.load:
-            state = solver.follow_path(model, state.x, state.load, [load], **opts)[-1]
-            max_residual = max(max_residual, state.convergence.residual)
-        state, stop = level(float(c), state)
-        log.info("[%s] c = %g mEq/l: %s after %d passes, %d converted", run, c, stop, step, rows[-1].converted[0])
-        if stop != "arrested":
-            break
-    length = rows[-1].length
-    growth = pd.DataFrame(
-        [
-            dict(
-                step=k,
-                pseudo_time=r.step,
-                concentration_mEq_l=r.concentration,
-                converted_particles=r.converted[0],
-                converted_interior=r.converted[1],
-                converted_exterior=r.converted[2],
-                delaminated_length_um=r.length,
-                tip_radial_stress_kPa=r.tip_stress,
-                residual=r.residual,
-            )
-            for k, r in enumerate(rows)
-        ]
-    )
-    rate_t, rate_c = growth_rates(growth, settings.concentration_step_mEq_l)
-    summary = dict(
-        onset_concentration_mEq_l=onset_c,
-        final_length_um=length,
-        max_tip_radial_stress_kPa=float(growth.tip_radial_stress_kPa.max()),
-        growth_rate_um_per_pseudo_time=rate_t,
-        growth_rate_um_per_mEq_l=rate_c,
-        merged=merge_step is not None,
-        merge_step=merge_step if merge_step is not None else np.nan,
-        dissipated_energy_J_m2=1e-3 * dissipated / length if length > 0 else np.nan,
-        dissipated_energy_kPa_um2=dissipated,
-        stop=stop,
-        passes=step,
-        max_residual=max_residual,
-        pressure_mmHg=measure.carried_pressure(model, state.evaluation) / MMHG_TO_KPA,
-    )
-    if not any(s[0] == step and s[1].load == state.load for s in snapshots):
-        snapshots.append((step, state, hist))
-    return Result(growth, summary, snapshots, (state, hist))
+    args = (model, resume if resume is not None else start, sectors, settings, numerics, gag, base, run, snapshot_steps)
+    return (GrowthRun.resume(*args) if resume is not None else GrowthRun.seed(*args)).run()
 
 
 def save_snapshots(path, model: Model, snapshots, params: dict) -> None:

@@ -1,0 +1,136 @@
+"""Following a loss of equilibrium (a snap) to the next equilibrium: implicit damped pseudo-dynamics.
+
+A quasi-static path can reach a point beyond which no equilibrium lies near the
+current state: a damage pass whose new history cannot be reached along its
+transition, or a load step past a limit point. Physically the wall then moves
+dynamically (it snaps) until it comes to rest at another equilibrium. The paper
+follows every change this way, with damped explicit pseudo-dynamics (eqs.
+2.12-2.13, mass scaling and viscosity, section 2.3). We follow only the snaps
+this way, and implicitly: pseudo-transient continuation (Kelley & Keyes 1998),
+the backward-Euler integration of the overdamped pseudo-dynamics
+
+    M dx/dtau = f_int(x) + f_ext(x),      M = diag|K| (the stiffness diagonal: mass scaling),
+
+one linearised step at a time, ``(M / dtau + K) dx = f_int + f_ext``, with no line
+search (the residual may rise while the wall moves: that is the snap). The
+pseudo-time step grows as the residual falls (switched evolution relaxation,
+``dtau_k+1 = dtau_k |r_k-1| / |r_k|``), so the iteration turns into Newton's method as
+it comes to rest, and the state is then converged by :func:`sphgag.solver.newton`
+to the same tolerance as every other state. The overdamped motion descends the
+energy, so where it comes to rest is a stable equilibrium (a saddle is not an
+attractor of it); a state it cannot converge within its budget is no state at all,
+and the caller ends its run there (:class:`NoStableState`).
+
+The damping matrix is that of the solver's Levenberg-Marquardt damping
+(:func:`sphgag.solver._factorise`, ``K + m diag|K|`` with ``m = 1/dtau``), so a snap
+costs one Jacobian and one LU per pseudo-time step.
+"""
+
+from __future__ import annotations
+
+import logging
+import time
+
+import numpy as np
+
+from . import solver
+from .loading import Load
+from .model import Model
+
+log = logging.getLogger("sphgag")
+
+
+SPEEDUP = 0.7
+
+
+class NoStableState(solver.SimulationError):
+    """The pseudo-dynamics after a snap came to rest at no equilibrium within its budget."""
+
+
+def follow(
+    model: Model,
+    x0: np.ndarray,
+    load: Load,
+    *,
+    tol: float = 1e-4,
+    max_iter: int = 30,
+    run: str | None = None,
+    max_steps: int = 300,
+    handoff: float = 1e-2,
+    damping: float = 1.0,
+    **_,
+) -> solver.State:
+    """The equilibrium at ``load`` that the overdamped pseudo-dynamics from ``x0`` comes to rest at.
+
+    ``damping``: the first ``m = 1/dtau``. Every ``handoff`` (relative residual below it, or
+    ``m`` below 1e-3), Newton's method (:func:`sphgag.solver.newton`) tries to converge
+    the state; if it fails, the pseudo-dynamics resume from the best state so far
+    with ten times more damping. Raises :class:`NoStableState` after ``max_steps``
+    pseudo-time steps. Extra keyword arguments (the solver options of a path) are ignored.
+    """
+    run = run or model.name
+    t0 = time.perf_counter()
+    ev = model.evaluate(x0, load)
+    solver._check(model, ev, run)
+    rel = solver.relative_residual(model, ev)
+    best = (rel, ev)
+    m, n_eval, n_jac, attempts = damping, 1, 0, 0
+    model.factorisation = None
+    for k in range(max_steps):
+        if rel < handoff or m < 1e-3:
+            attempts += 1
+            try:
+                x, ev_n, conv = solver.newton(model, ev.x, load, tol=tol, max_iter=max_iter, run=run)
+            except solver.SimulationError as exc:
+                log.debug("[%s] snap: Newton from pseudo-time step %d failed (%s)", run, k, exc.reason)
+                rel, ev = best
+                m = max(m, damping) * 10.0 ** attempts
+            else:
+                conv = solver.Convergence(
+                    conv.residual,
+                    k + conv.iterations,
+                    n_eval + conv.force_evaluations,
+                    n_jac + conv.jacobians,
+                    time.perf_counter() - t0,
+                )
+                log.info(
+                    "[%s] snap at %s: at rest after %d pseudo-time steps, moved %.3g um at most, residual %.2e",
+                    run,
+                    solver.describe(load),
+                    k,
+                    float(np.abs(x - x0).max()),
+                    conv.residual,
+                )
+                return solver.State(load, x, ev_n, conv)
+        data = model.jacobian(ev)
+        n_jac += 1
+        while True:
+            fac = solver._factorise(model, ev, data.copy(), m, run)
+            dx = fac.step(ev)
+            trial = solver._trial(model, ev, dx, 1.0, solver._bending(model, ev.x, dx))
+            n_eval += 1
+            if trial is not None:
+                break
+            m *= 10.0  # an inadmissible state (inverted particle): a shorter pseudo-time step
+            if m > 1e8:
+                raise NoStableState(run, load, f"no admissible pseudo-time step at step {k} (residual {rel:.3g})")
+        rel_new = solver.relative_residual(model, trial)
+        # switched evolution relaxation, bounded: the damping follows the residual, and falls by at least
+        # SPEEDUP per step while the residual falls
+        m *= min(max(rel_new / rel, 0.25), SPEEDUP) if rel_new < rel else min(rel_new / rel, 4.0)
+        rel, ev = rel_new, trial
+        if rel < best[0]:
+            best = (rel, ev)
+        log.debug(
+            "[%s] snap step %d: residual %.3e, damping %.2e, moved %.3g um at most",
+            run,
+            k,
+            rel,
+            m,
+            float(np.abs(ev.x - x0).max()),
+        )
+    raise NoStableState(
+        run,
+        load,
+        f"the pseudo-dynamics came to rest at no equilibrium in {max_steps} steps (lowest residual {best[0]:.3g})",
+    )
