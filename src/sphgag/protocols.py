@@ -14,12 +14,12 @@
 from __future__ import annotations
 
 import logging
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import pandas as pd
 
-from . import analytic, measure, solver
+from . import analytic, measure, pool_volume, solver
 from .loading import MMHG_TO_KPA, Load
 from .materials import swelling_pressure
 from .model import Model
@@ -375,7 +375,10 @@ def pool_measurements(model: Model, ev, pool, members: np.ndarray, probe_length:
 @dataclass(frozen=True)
 class PoolState:
     """One converged state of the figure 4 protocol: its stage (``intact`` or ``converted``), the GAG
-    concentration [mEq/l], the positions and load, and how the solver reached it."""
+    concentration [mEq/l], the positions and load, how the solver reached it (``control``: ``concentration``, or
+    ``volume`` where the concentration-controlled path had lost equilibrium, :mod:`sphgag.pool_volume`), and how
+    the run's path ended (the same for every state of a run: ``path_end`` ``complete``, ``limit point`` at
+    ``limit_concentration``, or ``no equilibrium``, with ``end_reason``)."""
 
     stage: str
     concentration: float
@@ -384,11 +387,17 @@ class PoolState:
     residual: float
     newton_iterations: int
     force_evaluations: int
+    control: str = "concentration"
+    path_end: str = "complete"
+    limit_concentration: float = np.nan
+    end_reason: str = ""
 
     @classmethod
-    def of(cls, stage: str, concentration: float, state: solver.State) -> PoolState:
+    def of(cls, stage: str, concentration: float, state: solver.State, control="concentration") -> PoolState:
         c = state.convergence
-        return cls(stage, float(concentration), state.x, state.load, c.residual, c.iterations, c.force_evaluations)
+        return cls(
+            stage, float(concentration), state.x, state.load, c.residual, c.iterations, c.force_evaluations, control
+        )
 
     def info(self) -> dict:
         """What a state file keeps beside positions and load (:func:`sphgag.state.save_series`)."""
@@ -398,12 +407,17 @@ class PoolState:
             residual=self.residual,
             newton_iterations=self.newton_iterations,
             force_evaluations=self.force_evaluations,
+            control=self.control,
+            path_end=self.path_end,
+            limit_concentration_mEq_l=None if np.isnan(self.limit_concentration) else self.limit_concentration,
+            end_reason=self.end_reason,
         )
 
     @classmethod
     def from_saved(cls, saved) -> PoolState:
         """The state of a :class:`sphgag.state.SavedState` written with :meth:`info`."""
         i = saved.info
+        limit = i.get("limit_concentration_mEq_l")
         return cls(
             i["stage"],
             i["concentration_mEq_l"],
@@ -412,6 +426,10 @@ class PoolState:
             i["residual"],
             i["newton_iterations"],
             i["force_evaluations"],
+            i.get("control", "concentration"),
+            i.get("path_end", "complete"),
+            np.nan if limit is None else float(limit),
+            i.get("end_reason", ""),
         )
 
 
@@ -427,6 +445,13 @@ def swell_pool(model: Model, start: solver.State, numerics: dict, sw: dict) -> l
     The lumen pressure stays constant throughout: it is a follower pressure load
     on the inner surface (pressure control), not a prescribed radius. The states
     are measured by :func:`pool_table`.
+
+    Where a concentration step finds no equilibrium on its path, the pool's own volume becomes the control
+    (:func:`sphgag.pool_volume.continue_path`): the path either passes a limit point (the states end at the last
+    equilibrium before it, and every state records the limit concentration), or reaches the remaining
+    concentrations (``control = volume``), or stops with the concentration still rising (``no equilibrium``: no
+    limit point there, the discretisation fails; the reason is recorded). No state beyond the last equilibrium is
+    returned.
     """
     run = model.name
     opts = dict(run=run, on_state=log_state(run), **solver_options(numerics))
@@ -445,10 +470,21 @@ def swell_pool(model: Model, start: solver.State, numerics: dict, sw: dict) -> l
     )[-1]
     cs = np.linspace(0.0, sw["max_concentration_mEq_l"], sw["concentration_points"])[1:]
     log.info("[%s] swelling: c = %s mEq/l", run, ", ".join(f"{c:g}" for c in cs))
-    states = solver.follow_path(model, conv.x, conv.load, [swelling_load(base, 1.0, c) for c in cs], **opts)
-    return [PoolState.of("intact", 0.0, intact), PoolState.of("converted", 0.0, conv)] + [
-        PoolState.of("converted", c, s) for c, s in zip(cs, states)
-    ]
+    states = [PoolState.of("intact", 0.0, intact), PoolState.of("converted", 0.0, conv)]
+    last = conv
+    for k, c in enumerate(cs):
+        try:
+            last = solver.follow_path(model, last.x, last.load, [swelling_load(base, 1.0, c)], **opts)[-1]
+        except solver.NotConverged as exc:
+            log.info("[%s] c = %g mEq/l: %s; the pool's volume becomes the control", run, c, exc.reason)
+            path, reached = pool_volume.continue_path(model, last, model.props.converting, list(cs[k:]), **opts)
+            states += [PoolState.of("converted", s.load.material_value("concentration"), s, "volume") for s in reached]
+            end = dict(path_end=path.end, limit_concentration=path.limit_concentration, end_reason=path.reason)
+            if path.end != "complete":
+                log.warning("[%s] the path ends at c = %g mEq/l: %s", run, states[-1].concentration, path.reason)
+            return [replace(s, **end) for s in states]
+        states.append(PoolState.of("converted", c, last))
+    return states
 
 
 def pool_table(model: Model, states: list[PoolState], pool, probe_length: float, gag: dict) -> pd.DataFrame:
@@ -467,6 +503,14 @@ def pool_table(model: Model, states: list[PoolState], pool, probe_length: float,
             pressure_mmHg=measure.carried_pressure(model, ev) / MMHG_TO_KPA,
         )
         row.update(pool_measurements(model, ev, pool, members, probe_length))
-        row.update(residual=st.residual, newton_iterations=st.newton_iterations, force_evaluations=st.force_evaluations)
+        row.update(
+            residual=st.residual,
+            newton_iterations=st.newton_iterations,
+            force_evaluations=st.force_evaluations,
+            control=st.control,
+            path_end=st.path_end,
+            limit_concentration_mEq_l=st.limit_concentration,
+            end_reason=st.end_reason,
+        )
         rows.append(row)
     return pd.DataFrame(rows)

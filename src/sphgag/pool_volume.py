@@ -1,0 +1,230 @@
+"""The pressure-volume path of a swelling pool, traced with the pool's volume as the control (figure 4 runs).
+
+Under concentration control (the paper's protocol: the fixed-charge
+concentration ``c`` of eqs. 2.25-2.27 is raised and the wall follows) a path can
+lose equilibrium for two reasons:
+
+* a **limit point** of the pool's pressure-volume path: beyond some ``c_lim`` the
+  swelling pressure the wall can hold falls as the pool grows, and a pool held
+  at ``c > c_lim`` has no equilibrium near the path (it snaps);
+* a **failure of the discretisation**: equilibria exist, but the solver cannot reach
+  them (or the particles cannot represent them).
+
+Volume control tells them apart. The pool's volume ``V = sum_i V_i J_i`` (its
+particles' reference areas times their J, eq. 2.9; per unit axial length) becomes
+the prescribed quantity and ``c`` the unknown that holds it (a bordered Newton
+system, the volume constraint's row added to the exact Jacobian of the forces):
+
+    [ K     dr/dc ] [dx]     [ r     ]
+    [ dV/dx   0   ] [dc] = - [ V - V*]
+
+A prescribed pool volume cannot snap, so the path passes a limit point of ``c``:
+``c`` rises with ``V``, reaches its largest value ``c_lim`` and falls. If instead the
+volume-controlled path also stops while ``c`` still rises, there was no limit point
+where concentration control failed; the path ends there, and the run says so.
+
+``dr/dc`` is a central difference of the exact residual (the residual is affine in
+the prescribed swelling pressure, and smooth in ``c``); ``dV/dx`` is the exact force
+of a unit swelling pressure on the pool's particles (the internal force of
+eq. 2.11 is the gradient of the discrete energy, and ``-Pi (J - 1)`` is the energy
+of eq. 2.27's pressure term).
+"""
+
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import materials, solver
+from .loading import Load
+from .model import Model
+
+log = logging.getLogger("sphgag")
+
+
+@dataclass
+class VolumeState:
+    """A converged state of the volume-controlled path."""
+
+    x: np.ndarray
+    load: Load
+    volume: float  # pool volume per unit axial length [um^2]
+    convergence: solver.Convergence
+
+    @property
+    def concentration(self) -> float:
+        return float(self.load.material_value("concentration"))
+
+
+@dataclass
+class Path:
+    """The volume-controlled continuation of a concentration-controlled path that lost equilibrium.
+
+    ``states``: converged states at increasing pool volume; ``end``: ``limit point`` (``c`` passed a largest value,
+    ``limit_concentration``) or ``no equilibrium`` (the volume-controlled path stopped with ``c`` still rising;
+    ``reason`` says where and why)."""
+
+    states: list
+    end: str
+    limit_concentration: float
+    reason: str
+
+
+class PoolVolume:
+    """The pool's volume ``V = sum V_i J_i`` over ``members`` and its exact gradient ``dV/dx``."""
+
+    def __init__(self, model: Model, members: np.ndarray):
+        self.members = np.asarray(members, dtype=np.int64)
+        self.V = model.layout.volume[self.members]
+        props = materials.empty_props(model.n)
+        props[self.members, materials.PI] = 1.0  # energy -(J - 1) per unit volume: its force is dV/dx
+        self._unit = Model(f"{model.name}_pool_volume", model.layout, model.nb, props, 0.0)
+
+    def __call__(self, ev) -> float:
+        F = ev.F[self.members]
+        J = (F[:, 0, 0] * F[:, 1, 1] - F[:, 0, 1] * F[:, 1, 0]) * ev.load.axial_stretch
+        return float(np.sum(self.V * J))
+
+    def gradient(self, x: np.ndarray, load: Load) -> np.ndarray:
+        return self._unit.evaluate(x, Load(load.axial_stretch, 0.0)).f_int
+
+
+def _at(load: Load, c: float) -> Load:
+    return load.with_material(concentration=float(c))
+
+
+def concentration_slope(model: Model, x: np.ndarray, load: Load, h: float = 1e-3) -> np.ndarray:
+    """``dr/dc`` by a central difference (``h`` in mEq/l)."""
+    c = float(load.material_value("concentration"))
+    up = model.evaluate(x, _at(load, c + h)).residual_vector
+    down = model.evaluate(x, _at(load, max(c - h, 0.0))).residual_vector
+    return (up - down) / (c + h - max(c - h, 0.0))
+
+
+def solve_at_volume(
+    model: Model, pool: PoolVolume, x0: np.ndarray, load0: Load, target: float, tol: float, max_iter: int, run: str
+) -> VolumeState:
+    """The equilibrium whose pool volume is ``target``, with the concentration as the unknown (bordered Newton with a
+    backtracking line search on the residual and the volume error)."""
+    x, load = x0.copy(), load0
+    ev = model.evaluate(x, load)
+    solver._check(model, ev, run)
+    n_eval, n_jac = 1, 0
+
+    def merit(ev):
+        return np.hypot(np.linalg.norm(ev.residual_vector) / ev.force_scale(model), (pool(ev) - target) / target)
+
+    progress = (merit(ev), 0)  # (merit, iteration) when the merit last halved
+    for it in range(max_iter + 1):
+        rel = solver.relative_residual(model, ev)
+        err = (pool(ev) - target) / target
+        if rel < tol and abs(err) < 1e-8:
+            return VolumeState(x, load, pool(ev), solver.Convergence(rel, it, n_eval, n_jac, 0.0))
+        if it == max_iter:
+            break
+        if merit(ev) < 0.5 * progress[0]:
+            progress = (merit(ev), it)
+        elif it - progress[1] >= solver.STALL_ITERATIONS:
+            raise solver.NotConverged(run, load, f"volume control stagnated (residual {rel:.3g})")
+        fac = solver._factorise(model, ev, model.jacobian(ev), 0.0, run)
+        n_jac += 1
+        a = -fac.step(ev).ravel()  # K^-1 r
+        b = fac.solve(concentration_slope(model, x, load).ravel())
+        g = pool.gradient(x, load).ravel()
+        n_eval += 3
+        dc = ((pool(ev) - target) - g @ a) / (g @ b)
+        dx = (-a - b * dc).reshape(-1, 2)
+        m0, step = merit(ev), 1.0
+        c = float(load.material_value("concentration"))
+        while step > 1e-4:
+            trial_load = _at(load, max(c + step * dc, 0.0))
+            trial = model.evaluate(x + step * dx, trial_load)
+            n_eval += 1
+            if trial.min_det > 0.0 and trial.finite and merit(trial) < (1.0 - 1e-4 * step) * m0:
+                break
+            step *= 0.5
+        else:
+            raise solver.NotConverged(run, load, f"volume control: line search failed (residual {rel:.3g})")
+        x, load, ev = trial.x, trial_load, trial
+    raise solver.NotConverged(run, load, f"volume control: no convergence in {max_iter} iterations")
+
+
+def continue_path(
+    model: Model,
+    last: solver.State,
+    members: np.ndarray,
+    targets: list[float],
+    *,
+    tol: float = 1e-4,
+    max_iter: int = 30,
+    run: str | None = None,
+    growth: float = 0.05,
+    max_ratio: float = 100.0,
+    min_growth: float = 1e-3,
+    **_,
+) -> tuple[Path, list[solver.State]]:
+    """Trace the pool's path from the converged state ``last`` with its volume as the control.
+
+    The volume grows by ``growth`` (relative) per step, halved when a step fails, down to ``min_growth``. Whenever
+    ``c`` passes one of ``targets`` (concentrations the concentration-controlled path could not reach) while it
+    rises, the state at exactly that concentration is solved by concentration control from the bracketing state
+    and returned too. Stops at a limit point, when the targets are done, when the volume reaches ``max_ratio``
+    times the pool's reference volume, or where volume control fails.
+    """
+    run = run or model.name
+    pool = PoolVolume(model, members)
+    reference = float(np.sum(pool.V))
+    states, reached = [], []
+    x, load = last.x, last.load
+    c = float(load.material_value("concentration"))
+    volume = pool(last.evaluation if last.evaluation is not None else model.evaluate(x, load))
+    todo = sorted(t for t in targets if t > c)
+    points = [(volume, c)]
+    step = growth
+    while todo:
+        if volume / reference > max_ratio:
+            return Path(states, "no equilibrium", np.nan, f"the pool reached {max_ratio:g} times its volume"), reached
+        try:
+            s = solve_at_volume(model, pool, x, load, volume * (1.0 + step), tol, max_iter, run)
+        except solver.SimulationError as exc:
+            step *= 0.5
+            if step < min_growth:
+                reason = (
+                    f"volume control stops at c = {c:.4g} mEq/l, pool volume {volume / reference:.3g} times its "
+                    f"reference, c still rising ({exc.reason})"
+                )
+                return Path(states, "no equilibrium", np.nan, reason), reached
+            continue
+        states.append(s)
+        log.info(
+            "[%s] volume control: pool at %.3g times its reference volume holds c = %.4g mEq/l (residual %.2e)",
+            run,
+            s.volume / reference,
+            s.concentration,
+            s.convergence.residual,
+        )
+        points.append((s.volume, s.concentration))
+        if s.concentration < c:  # past the largest concentration: a limit point
+            c_lim = _limit(points)
+            log.info("[%s] limit point of the pool's pressure-volume path at c = %.4g mEq/l", run, c_lim)
+            return Path(states, "limit point", c_lim, f"limit point at c = {c_lim:.4g} mEq/l"), reached
+        while todo and s.concentration >= todo[0]:
+            target = _at(load, todo.pop(0))
+            reached.append(solver.follow_path(model, s.x, s.load, [target], tol=tol, max_iter=max_iter, run=run)[-1])
+        x, load, c, volume = s.x, s.load, s.concentration, s.volume
+        step = min(step * 1.5, growth)
+    return Path(states, "complete", np.nan, ""), reached
+
+
+def _limit(points: list) -> float:
+    """The largest concentration of the path: a parabola ``c(V)`` through the point of largest ``c`` and its two
+    neighbours (``points``: ``(V, c)`` in order of volume)."""
+    k = int(np.argmax([c for _, c in points]))
+    near = points[max(k - 1, 0) : k + 2]
+    if len(near) < 3:
+        return float(points[k][1])
+    v0 = near[1][0]
+    a, b, c0 = np.polyfit([v / v0 - 1.0 for v, _ in near], [c for _, c in near], 2)
+    return float(c0 - b * b / (4.0 * a)) if a < 0.0 else float(points[k][1])
