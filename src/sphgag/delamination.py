@@ -83,6 +83,7 @@ GROWTH_COLUMNS = [
     "delaminated_length_um",
     "tip_radial_stress_kPa",
     "residual",
+    "snap",
 ]
 SUMMARY_COLUMNS = [
     "case",
@@ -91,6 +92,10 @@ SUMMARY_COLUMNS = [
     "dx_um",
     "onset_concentration_mEq_l",
     "final_length_um",
+    "outcome",
+    "stop",
+    "snaps",
+    "snap_length_um",
     "growth_rate_um_per_pseudo_time",
     "growth_rate_um_per_mEq_l",
     "merged",
@@ -265,6 +270,27 @@ def growth_rates(growth: pd.DataFrame, concentration_step: float) -> tuple[float
     return length / t_span, length / c_span
 
 
+def first_level_growth(growth: pd.DataFrame) -> tuple[float, float]:
+    """``(concentration, length)``: the first concentration level at which the pools grew, and the length they grew
+    at that level (snaps included); ``(nan, 0)`` without growth."""
+    grew = growth.delaminated_length_um.diff() > 0
+    if not grew.any():
+        return np.nan, 0.0
+    c = float(growth.concentration_mEq_l[grew].iloc[0])
+    level = growth[np.isclose(growth.concentration_mEq_l, c)].delaminated_length_um
+    return c, float(level.iloc[-1] - level.iloc[0])
+
+
+def outcome(stop: str, length: float, merged: bool) -> str:
+    """What a run did: ``merges``, ``grows`` (it ended growing, for the reason in ``stop``), ``arrests`` (it grew and
+    stopped at the highest concentration) or ``no growth``."""
+    if merged:
+        return "merges"
+    if length <= 0.0:
+        return "no growth"
+    return "arrests" if stop == "arrested" else "grows"
+
+
 def intact_energy(model: Model, ev, base_props: np.ndarray) -> np.ndarray:
     """``W_0`` (eq. 2.23) of every particle with the undamaged material, at the state ``ev``."""
     W = np.empty(model.n)
@@ -277,10 +303,10 @@ class GrowthRun:
     """One delamination run as a record of its state, with one method per step of the protocol.
 
     :meth:`seed` (or :meth:`resume`) makes the run; :meth:`raise_concentration` moves it to the next level of the
-    ramp; :meth:`damage_pass` updates the damage once and solves the new history; :meth:`follow_snap` follows a step that
-    has no equilibrium on its path; :meth:`level` repeats damage passes at one concentration until the pools
-    arrest or the run ends; :meth:`run` walks the ramp and returns the :class:`Result`. Every state the run holds
-    is converged below the solver tolerance.
+    ramp; :meth:`next_history` is one damage update; :meth:`damage_pass` solves the history it makes;
+    :meth:`follow_snap` follows a step that has no equilibrium on its path; :meth:`level` repeats damage passes at
+    one concentration until the pools arrest or the run ends; :meth:`run` walks the ramp and returns the
+    :class:`Result`. Every state the run holds is converged below the solver tolerance.
     """
 
     model: Model
@@ -382,9 +408,10 @@ class GrowthRun:
             state = self.follow_snap(load, f"c = {self.concentration:g} -> {c:g} mEq/l", exc)
         self._accept(state)
 
-    def damage_pass(self) -> bool:
-        """One damage update (eq. 2.28) from the current state and the solve of the new history; False if it
-        would change no ``D`` by more than ``damage_tolerance`` and rupture nothing (new onsets are kept)."""
+    def next_history(self) -> tuple[ParticleHistory, float] | None:
+        """The history one damage update (eq. 2.28) from the current state makes, and the energy the update releases
+        at the current deformation [kPa um^2 per unit axial length]; None if it would change no ``D`` by more than
+        ``damage_tolerance`` and rupture nothing (new onsets are then made history, D unchanged)."""
         hist, lay = self.hist, self.model.layout
         cand, pools, sigma = self._front
         ev = self.state.evaluation
@@ -402,18 +429,28 @@ class GrowthRun:
                 self._settle(
                     HistoryMaterial(self.material.base, hist.with_damage(hist.D, dmg.onset_stretch), self.material.gag)
                 )
-            return False
+            return None
         W0 = intact_energy(self.model, ev, self.material.base(ev.load))
         released = float(np.sum((dmg.D - hist.D) * W0 * lay.volume))
-        step = self.step + 1
         new = hist.with_damage(dmg.D, dmg.onset_stretch)
         if ruptured.size:
             owner = np.full(lay.n, -1)
             owner[cand] = pools
-            new = new.rupture(ruptured, owner[ruptured], step)
+            new = new.rupture(ruptured, owner[ruptured], self.step + 1)
+        return new, released
+
+    def damage_pass(self) -> bool:
+        """One damage pass: the next history (:meth:`next_history`) and the solve of its transition from the current
+        state (a snap where the transition has no equilibrium on its path); False if the damage did not change."""
+        update = self.next_history()
+        if update is None:
+            return False
+        new, released = update
+        hist, step = self.hist, self.step + 1
+        ruptured = np.flatnonzero(new.gag & ~hist.gag)
         path = self.material.towards(new)
         self.model.set_props(path)
-        load = ev.load
+        load = self.state.load
         snapped = False
         try:
             start = load.with_material(transition=0.0)
@@ -569,9 +606,13 @@ class GrowthRun:
         )
         rate_t, rate_c = growth_rates(growth, self.settings.concentration_step_mEq_l)
         length = rows[-1].length
+        first_c, first_length = first_level_growth(growth)
         summary = dict(
             onset_concentration_mEq_l=self.onset_c,
             final_length_um=length,
+            outcome=outcome(stop, length, self.merge_step is not None),
+            first_growth_concentration_mEq_l=first_c,
+            first_level_length_um=first_length,
             max_tip_radial_stress_kPa=float(growth.tip_radial_stress_kPa.max()),
             growth_rate_um_per_pseudo_time=rate_t,
             growth_rate_um_per_mEq_l=rate_c,

@@ -43,8 +43,9 @@ log = logging.getLogger("sphgag")
 class SimulationError(RuntimeError):
     """A simulation that cannot deliver a trustworthy equilibrium state."""
 
-    def __init__(self, run: str, load: Load | None, reason: str):
-        self.run, self.load, self.reason = run, load, reason
+    def __init__(self, run: str, load: Load | None, reason: str, evaluation: Evaluation | None = None):
+        # evaluation: the last iterate, where one exists (to diagnose why there was no equilibrium)
+        self.run, self.load, self.reason, self.evaluation = run, load, reason, evaluation
         super().__init__(f"[{run}] {reason}" + (f" at {describe(load)}" if load is not None else ""))
 
 
@@ -234,7 +235,8 @@ def newton(
             )
         model.factorisation = fac if fac.damping == 0.0 else None
         if ev_try is None:
-            raise NotConverged(run, load, f"line search failed at Newton iteration {it} (relative residual {rel:.3g})")
+            reason = f"line search failed at Newton iteration {it} (relative residual {rel:.3g})"
+            raise NotConverged(run, load, reason, ev)
         if step == 1.0:
             damping = 0.0 if damping <= 1e-4 else 0.1 * damping
         log.debug(
@@ -256,11 +258,13 @@ def newton(
                 run,
                 load,
                 f"Newton stagnated: {STALL_ITERATIONS} iterations without halving the relative residual ({rel:.3g})",
+                ev,
             )
     raise NotConverged(
         run,
         load,
         f"no convergence in {max_iter} Newton iterations (and {chords} chord steps; relative residual {rel:.3g})",
+        ev,
     )
 
 
