@@ -211,8 +211,17 @@ def continue_path(
             log.info("[%s] limit point of the pool's pressure-volume path at c = %.4g mEq/l", run, c_lim)
             return Path(states, "limit point", c_lim, f"limit point at c = {c_lim:.4g} mEq/l"), reached
         while todo and s.concentration >= todo[0]:
-            target = _at(load, todo.pop(0))
-            reached.append(solver.follow_path(model, s.x, s.load, [target], tol=tol, max_iter=max_iter, run=run)[-1])
+            target = _at(s.load, todo.pop(0))
+            try:
+                reached.append(
+                    solver.follow_path(model, s.x, s.load, [target], tol=tol, max_iter=max_iter, run=run)[-1]
+                )
+            except solver.SimulationError as exc:
+                reason = (
+                    f"c = {s.concentration:.4g} mEq/l was held at volume control, but concentration control from "
+                    f"there does not reach c = {target.material_value('concentration'):g} mEq/l ({exc.reason})"
+                )
+                return Path(states, "no equilibrium", np.nan, reason), reached
         x, load, c, volume = s.x, s.load, s.concentration, s.volume
         step = min(step * 1.5, growth)
     return Path(states, "complete", np.nan, ""), reached

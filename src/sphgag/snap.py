@@ -69,6 +69,15 @@ def follow(
     pseudo-time steps. Extra keyword arguments (the solver options of a path) are ignored.
     """
     run = run or model.name
+    try:
+        return _follow(model, x0, load, tol, max_iter, run, max_steps, handoff, damping)
+    except NoStableState:
+        raise
+    except solver.SimulationError as exc:  # a singular or inadmissible pseudo-time step
+        raise NoStableState(run, load, f"the pseudo-dynamics failed ({exc.reason})") from exc
+
+
+def _follow(model, x0, load, tol, max_iter, run, max_steps, handoff, damping) -> solver.State:
     t0 = time.perf_counter()
     ev = model.evaluate(x0, load)
     solver._check(model, ev, run)
@@ -84,7 +93,7 @@ def follow(
             except solver.SimulationError as exc:
                 log.debug("[%s] snap: Newton from pseudo-time step %d failed (%s)", run, k, exc.reason)
                 rel, ev = best
-                m = max(m, damping) * 10.0 ** attempts
+                m = max(m, damping) * 10.0**attempts
             else:
                 conv = solver.Convergence(
                     conv.residual,
