@@ -403,7 +403,9 @@ class GrowthRun:
         if load == self.state.load:
             return
         try:
-            state = solver.follow_path(self.model, self.state.x, self.state.load, [load], **self.opts)[-1]
+            state = solver.follow_path(
+                self.model, self.state.x, self.state.load, [load], **solver.with_fallback(self.opts)
+            )[-1]
         except solver.NotConverged as exc:
             state = self.follow_snap(load, f"c = {self.concentration:g} -> {c:g} mEq/l", exc)
         self._accept(state)
@@ -455,7 +457,7 @@ class GrowthRun:
         try:
             start = load.with_material(transition=0.0)
             state = solver.follow_path(
-                self.model, self.state.x, start, [load.with_material(transition=1.0)], **self.opts
+                self.model, self.state.x, start, [load.with_material(transition=1.0)], **solver.with_fallback(self.opts)
             )[-1]
         except solver.NotConverged as exc:
             self.model.set_props(path.settled())

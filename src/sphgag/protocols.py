@@ -474,7 +474,8 @@ def swell_pool(model: Model, start: solver.State, numerics: dict, sw: dict) -> l
     last = conv
     for k, c in enumerate(cs):
         try:
-            last = solver.follow_path(model, last.x, last.load, [swelling_load(base, 1.0, c)], **opts)[-1]
+            target = [swelling_load(base, 1.0, c)]
+            last = solver.follow_path(model, last.x, last.load, target, **solver.with_fallback(opts))[-1]
         except solver.NotConverged as exc:
             log.info("[%s] c = %g mEq/l: %s; the pool's volume becomes the control", run, c, exc.reason)
             path, reached = pool_volume.continue_path(model, last, model.props.converting, list(cs[k:]), **opts)
