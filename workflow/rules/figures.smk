@@ -208,15 +208,21 @@ FIG5_SIGMA = min(DE["critical_stresses_kPa"], key=lambda s: abs(s - DE["critical
 DE_SIGMA = f"{DE['critical_stress_kPa']:g}"
 
 
-def de_snapshots(poolsets, sigma):
-    """The snapshot files of these pool sets at ``sigma``, ordered by law, then pool set, then criterion (the order of
-    the keys the figure scripts zip them with)."""
-    return [
+# the snapshot files of each figure's pool sets, ordered by law, then pool set, then criterion (the order of the keys
+# the figure scripts zip them with)
+DE_FIGURE_SNAPSHOTS = {
+    figure: [
         f"{DE_RUN}_snapshots.npz".format(law=law, poolset=case, sigma=sigma, criterion=criterion)
         for law in LAWS
         for case in poolsets
         for criterion in DE["criteria"]
     ]
+    for figure, poolsets, sigma in (
+        ("fig5", [FIG5_SET], f"{FIG5_SIGMA:g}"),
+        ("fig6", FIG6_SETS, DE_SIGMA),
+        ("fig7", [FIG7_SET], DE_SIGMA),
+    )
+}
 
 
 rule fig5:
@@ -225,7 +231,7 @@ rule fig5:
         code=PLOTS,
         growth=rules.delamination_growth.output[0],
         summary=rules.delamination_summary.output[0],
-        snapshots=de_snapshots([FIG5_SET], f"{FIG5_SIGMA:g}"),
+        snapshots=DE_FIGURE_SNAPSHOTS["fig5"],
     output:
         pdf="figures/fig5.pdf",
         png=report(
@@ -259,7 +265,7 @@ rule fig6:
         code=PLOTS,
         growth=rules.delamination_growth.output[0],
         summary=rules.delamination_summary.output[0],
-        snapshots=de_snapshots(FIG6_SETS, DE_SIGMA),
+        snapshots=DE_FIGURE_SNAPSHOTS["fig6"],
     output:
         pdf="figures/fig6.pdf",
         png=report(
@@ -291,7 +297,7 @@ rule fig7:
         code=PLOTS,
         growth=rules.delamination_growth.output[0],
         summary=rules.delamination_summary.output[0],
-        snapshots=de_snapshots([FIG7_SET], DE_SIGMA),
+        snapshots=DE_FIGURE_SNAPSHOTS["fig7"],
     output:
         pdf="figures/fig7.pdf",
         png=report(

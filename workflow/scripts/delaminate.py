@@ -34,7 +34,9 @@ with runlog.run(run, sm.log[0]) as log:
     summary.insert(0, "charge_law", sm.params.gag["charge_law"])
     growth.to_csv(sm.output.growth, index=False)
     summary.to_csv(sm.output.summary, index=False)
-    delamination.save_snapshots(sm.output.snapshots, model, result.snapshots, dict(cfg, delamination=de))
+    delamination.save_snapshots(
+        sm.output.snapshots, model, result.snapshots, dict(cfg, delamination=de, gag=sm.params.gag)
+    )
     s = summary.iloc[0]
     log.info(
         "[%s] stopped (%s) after %d passes: onset at %s mEq/l, delaminated %.1f um, merged %s, dissipated "
