@@ -14,6 +14,7 @@ os.environ.update(PYTHONPATH=os.pathsep.join(filter(None, [SRC, os.environ.get("
 from snakemake.utils import update_config  # noqa: E402
 
 from sphgag.config import canonical, load_yaml, typed_overrides, validate  # noqa: E402
+from sphgag.materials import law_gag  # noqa: E402
 
 # The full study is the default only when no --configfile is given: a user's config stands alone (Snakemake would
 # otherwise merge it over config/config.yaml, so that pools, pressures and whole sections leak in from the full study).
@@ -29,6 +30,15 @@ update_config(config, typed_overrides(workflow.config_settings.config))
 validate(config, Path(workflow.basedir, "config", "schema.yaml"))
 # key order must not matter when Snakemake compares a rule's params with its last run
 config = canonical(config)
+# the Donnan laws run side by side (wildcard {law}); a run's params hold its own law only (gag.charge_law), so that
+# adding or removing a law adds or removes its jobs and reruns no other simulation
+LAWS = config["gag"]["charge_laws"]
+GAG = {law: canonical(law_gag(config["gag"], law)) for law in LAWS}
+
+
+wildcard_constraints:
+    law="|".join(LAWS),
+
 
 # Snakemake tracks a rule's script, not the modules it imports: every simulation
 # rule depends on the package's physics sources, so a physics edit reruns what it

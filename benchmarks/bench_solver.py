@@ -50,13 +50,14 @@ def measure(dx: float, config_path: str) -> dict:
     import numba
     import scipy.sparse.linalg as spla
 
-    from sphgag import artery, config, geometry, protocols, solver
+    from sphgag import artery, config, geometry, materials, protocols, solver
     from sphgag.history import HistoryMaterial
     from sphgag.loading import MMHG_TO_KPA, Load
     from sphgag.model import Model
 
     numba.set_num_threads(1)
     cfg = config.validate(config.load_yaml(config_path), ROOT / "config" / "schema.yaml")
+    cfg["gag"] = materials.law_gag(cfg["gag"], "conserved")  # the charge law of the measured states
     p, numerics = dict(cfg["bilayer"], dx_um=dx), cfg["numerics"]
     wall = artery.bilayer_model(p, numerics, name=f"bench_dx{dx:g}")
     # a pool of one medial particle: the particle nearest (663 um, 51.5 deg)

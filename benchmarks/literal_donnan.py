@@ -1,5 +1,5 @@
 """The pools under the Donnan law as eq. (2.27) is printed: a swelling pressure Pi(c) that does not fall as the
-pool swells (``gag.fixed_charge_dilution: false``).
+pool swells (``gag.charge_laws: [prescribed]``, the law ``prescribed`` of :data:`sphgag.materials.CHARGE_LAWS`).
 
 For each particle spacing: passive homeostatic state at 103 mmHg, then the figure 4
 protocol for cases I and IV. Prints, per run, the pool's volume ratio and the tip
@@ -22,7 +22,7 @@ import pandas as pd
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
-from sphgag import artery, config, protocols, solver  # noqa: E402
+from sphgag import artery, config, materials, protocols, solver  # noqa: E402
 
 
 def main():
@@ -34,7 +34,7 @@ def main():
     numba.set_num_threads(1)
     cfg = config.validate(config.load_yaml(args.config), ROOT / "config" / "schema.yaml")
     numerics, sw = cfg["numerics"], cfg["swelling"]
-    gag = dict(cfg["gag"], fixed_charge_dilution=False)
+    gag = materials.law_gag(cfg["gag"], "prescribed")
     rows = []
     for dx in args.dx:
         p = dict(cfg["bilayer"], dx_um=dx)

@@ -39,6 +39,11 @@ def project_copy(dest):
     return dest
 
 
+def law_gag(cfg: dict, law: str = "conserved") -> dict:
+    """The ``gag`` parameters of one run of ``cfg`` under one charge law (what the pipeline passes a run)."""
+    return materials.law_gag(cfg["gag"], law)
+
+
 @pytest.fixture(scope="session")
 def full_config():
     return config.load_yaml(ROOT / "config" / "config.yaml")

@@ -117,3 +117,78 @@ def test_a_corrupt_state_file_names_the_file_and_the_remedy(tmp_path):
     path.write_bytes(b"PK\x03\x04 truncated")
     with pytest.raises(state.CorruptState, match="homeostatic.npz is not a readable state file.*rerun snakemake"):
         state.load(path)
+
+
+# -- charge laws and pool-set roles (issue 15) ------------------------------------------------------------------
+
+
+def test_the_schema_names_the_charge_laws_of_the_package():
+    from sphgag import materials
+
+    schema = config.load_yaml(SCHEMA)
+    assert tuple(schema["properties"]["gag"]["properties"]["charge_laws"]["items"]["enum"]) == materials.CHARGE_LAWS
+
+
+@pytest.mark.parametrize(
+    "value, expected",
+    [
+        (["literal"], "gag.charge_laws[0] = 'literal' is invalid"),
+        (["conserved", "conserved"], "gag.charge_laws = ['conserved', 'conserved'] is invalid"),
+        ([], "gag.charge_laws = [] is invalid"),
+        (True, "gag.charge_laws = True is invalid"),
+    ],
+)
+def test_a_bad_charge_law_list_is_rejected_by_name(ci_config, value, expected):
+    assert expected in bad(ci_config, ["gag", "charge_laws"], value)
+
+
+def test_the_old_charge_switch_is_an_unknown_key(ci_config):
+    cfg = copy.deepcopy(ci_config)
+    cfg["gag"]["fixed_charge_dilution"] = True
+    with pytest.raises(config.ConfigError, match=r"unknown key 'gag.fixed_charge_dilution'.*charge_laws"):
+        config.validate(cfg, SCHEMA)
+
+
+@pytest.mark.parametrize(
+    "role, value, expected",
+    [
+        ("fig6", ["low_separation", "pair_2deg"], "delamination.figures.fig6[1] = 'pair_2deg' is not a pool set"),
+        ("fig5", "one_pool", "delamination.figures.fig5 = 'one_pool' is not a pool set"),
+        ("fig7", "offset", "delamination.figures.fig7 = 'offset' is not a pool set"),
+        ("fig7", "single", "delamination.figures.fig7 = 'single' is figure 5's set"),
+        ("fig6", [], "delamination.figures.fig6 = [] is invalid"),
+    ],
+)
+def test_a_figure_without_its_pool_set_is_rejected_by_name(ci_config, role, value, expected):
+    assert expected in bad(ci_config, ["delamination", "figures", role], value)
+
+
+def test_a_missing_figure_role_is_rejected_by_name(ci_config):
+    assert "missing key 'delamination.figures.fig7'" in bad(ci_config, ["delamination", "figures", "fig7"], KeyError)
+
+
+def test_pool_sets_with_any_name_are_valid(ci_config):
+    """A renamed set (in the set and its role), an extra set no figure shows, and figure 5's set renamed."""
+    cfg = copy.deepcopy(ci_config)
+    de = cfg["delamination"]
+    de["pool_sets"]["pair_2deg"] = de["pool_sets"].pop("low_separation")
+    de["pool_sets"]["alone"] = de["pool_sets"].pop("single")
+    de["pool_sets"]["extra"] = de["pool_sets"]["high_separation"]
+    de["figures"] = dict(fig5="alone", fig6=["pair_2deg", "high_separation"], fig7="radial_offset")
+    config.validate(cfg, SCHEMA)
+
+
+def test_figure_5s_set_is_checked_at_the_resolution_studys_spacings(ci_config):
+    """The set of the resolution study is figure 5's, whatever its name: its pools must hold particles at every
+    delamination.convergence.dx_um."""
+    cfg = copy.deepcopy(ci_config)
+    de = cfg["delamination"]
+    tiny = dict(centre_radius_um=660.0, centre_angle_deg=46.0, radial_extent_um=3.0, angular_extent_deg=0.3)
+    de["pool_sets"]["tiny"] = [tiny]  # one particle at dx = 6 um, none at 8 um
+    de["convergence"]["dx_um"] = [8.0, 6.0]
+    config.validate(cfg, SCHEMA)  # no figure's set: run at bilayer.dx_um = 6 um only, where it holds a particle
+    de["figures"]["fig5"] = "tiny"
+    with pytest.raises(
+        config.ConfigError, match=r"delamination.pool_sets.tiny\[0\]: the pool holds no medial particle at dx = 8 um"
+    ):
+        config.validate(cfg, SCHEMA)

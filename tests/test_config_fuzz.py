@@ -19,7 +19,7 @@ from hypothesis import strategies as st
 from sphgag import artery, config
 from sphgag.loading import Load
 
-from .conftest import ROOT
+from .conftest import ROOT, law_gag
 
 SCHEMA = ROOT / "config" / "schema.yaml"
 BASE = yaml.safe_load((ROOT / "config" / "ci.yaml").read_text())
@@ -138,9 +138,11 @@ def test_a_mutated_config_is_rejected_by_name_or_really_valid(case):
     ):
         TRIED["too_large"] += 1  # valid, but too big to build in a unit test
         return
-    for case in cfg["swelling"]["cases"].values():  # each pool is its own run
-        model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], pool=artery.pool_sector(case), gag=cfg["gag"])
-        assert np.isfinite(model.props(Load(1.0, 10.0, material=(("transition", 1.0),)))).all()
+    for case in cfg["swelling"]["cases"].values():  # each pool is its own run, under each charge law
+        for law in cfg["gag"]["charge_laws"]:
+            sector = artery.pool_sector(case)
+            model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], pool=sector, gag=law_gag(cfg, law))
+            assert np.isfinite(model.props(Load(1.0, 10.0, material=(("transition", 1.0),)))).all()
     artery.mean_model(cfg["mean"], cfg["numerics"])
 
 

@@ -10,6 +10,8 @@ from sphgag import artery, delamination, geometry, protocols, state
 from sphgag.history import DAMAGED, SEEDED, HistoryMaterial, ParticleHistory
 from sphgag.loading import Load
 
+from .conftest import law_gag
+
 
 @pytest.fixture(scope="module")
 def wall(ci_wall):
@@ -27,7 +29,9 @@ def settings(ci_config, **changes):
 
 def grow(ci_config, wall, sectors, st, **kwargs):
     model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-grow")
-    result = delamination.grow(model, wall, sectors, st, ci_config["numerics"], ci_config["gag"], model.props, **kwargs)
+    result = delamination.grow(
+        model, wall, sectors, st, ci_config["numerics"], law_gag(ci_config), model.props, **kwargs
+    )
     return model, result
 
 
@@ -62,7 +66,7 @@ def test_history_is_immutable_and_damage_never_decreases():
 def test_seeded_pool_material_is_the_swelling_material(ci_config):
     """The figure 4 runs are the special case 'pool seeded, no damage': conversion is the history transition."""
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
-    model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], pool=pool, gag=ci_config["gag"])
+    model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], pool=pool, gag=law_gag(ci_config))
     base = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"]).props
     load = Load(1.0, 10.0, material=(("concentration", 150.0), ("transition", 1.0)))
     table = model.props(load)
@@ -79,7 +83,7 @@ def test_a_material_path_of_damage_is_linear_in_d_and_ends_at_the_new_history(ci
     n = base(Load()).shape[0]
     before = ParticleHistory.intact(n)
     after = before.with_damage(np.where(np.arange(n) == 3, 0.8, 0.0), before.onset_stretch)
-    path = HistoryMaterial(base, before, ci_config["gag"], after)
+    path = HistoryMaterial(base, before, law_gag(ci_config), after)
     half = path(Load(material=(("transition", 0.5),)))
     intact = base(Load())
     assert np.isclose(half[3, 0], 0.6 * intact[3, 0])
@@ -107,13 +111,13 @@ def test_a_huge_critical_stress_gives_no_growth_and_the_swelling_state(ci_config
     assert (result.growth.converted_particles == 0).all() and result.summary["passes"] == 0
     # the same equilibrium as the figure 4 protocol at the highest concentration
     sw = dict(ci_config["swelling"], concentration_points=4, max_concentration_mEq_l=st.max_concentration_mEq_l)
-    seeded = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], pool=pool, gag=ci_config["gag"])
+    seeded = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], pool=pool, gag=law_gag(ci_config))
     table = protocols.pool_table(
         seeded,
         protocols.swell_pool(seeded, wall, ci_config["numerics"], sw),
         pool,
         sw["probe_length_um"],
-        ci_config["gag"],
+        law_gag(ci_config),
     )
     final, hist = result.final
     members = np.flatnonzero(hist.gag)

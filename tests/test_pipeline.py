@@ -50,6 +50,7 @@ CONTRACT = {
         "residual",
     ],
     "results/swelling/tip_stress.csv": [
+        "charge_law",
         "model",
         "case",
         "pressure_mmHg",
@@ -60,7 +61,7 @@ CONTRACT = {
         "top_circ_stress_kPa",
         "residual",
     ],
-    "results/claims.csv": ["claim_id", "statement", "paper_value", "our_value", "holds"],
+    "results/claims.csv": ["claim_id", "charge_law", "statement", "paper_value", "our_value", "holds"],
     "results/verification/elliptic_pool.csv": [
         "dx_um",
         "semi_axis_a_um",
@@ -73,6 +74,7 @@ CONTRACT = {
         "residual",
     ],
     "results/swelling/convergence.csv": [
+        "charge_law",
         "dx_um",
         "particles",
         "case",
@@ -84,6 +86,7 @@ CONTRACT = {
         "residual",
     ],
     "results/delamination/growth.csv": [
+        "charge_law",
         "case",
         "sigma_cr_kPa",
         "criterion",
@@ -99,6 +102,7 @@ CONTRACT = {
         "residual",
     ],
     "results/delamination/summary.csv": [
+        "charge_law",
         "case",
         "sigma_cr_kPa",
         "criterion",
@@ -113,6 +117,7 @@ CONTRACT = {
         "max_residual",
     ],
     "results/delamination/convergence.csv": [
+        "charge_law",
         "case",
         "sigma_cr_kPa",
         "criterion",
@@ -205,9 +210,19 @@ def test_outputs_follow_the_data_contracts(workdir, ci_config):
     assert (
         pd.read_csv(workdir / "results/delamination/growth.csv").residual < ci_config["numerics"]["tolerance"]
     ).all()
-    de = ci_config["delamination"]
+    de, laws = ci_config["delamination"], ci_config["gag"]["charge_laws"]
     summary = pd.read_csv(workdir / "results/delamination/summary.csv")
-    assert set(summary.case) == set(de["pool_sets"]) and set(summary.criterion) == set(de["criteria"])
+    for law in laws:  # every pool set runs under every law, whatever its name and role
+        runs = summary[summary.charge_law == law]
+        assert set(runs.case) == set(de["pool_sets"]) and set(runs.criterion) == set(de["criteria"]), law
+    for table in (
+        "swelling/tip_stress.csv",
+        "swelling/convergence.csv",
+        "delamination/growth.csv",
+        "delamination/summary.csv",
+        "delamination/convergence.csv",
+    ):  # every pool table holds both laws, by name
+        assert sorted(pd.read_csv(workdir / "results" / table).charge_law.unique()) == sorted(laws), table
     transmural = pd.read_csv(workdir / "results/calibration/transmural.csv")
     assert set(transmural.model) == {"mean", "passive", "active"}
     assert set(pd.read_csv(workdir / "results/calibration/bilayer_pressure_diameter.csv").model) == {
@@ -216,13 +231,23 @@ def test_outputs_follow_the_data_contracts(workdir, ci_config):
     }
     tips = pd.read_csv(workdir / "results/swelling/tip_stress.csv")
     sw = ci_config["swelling"]
-    runs = tips.groupby(["model", "case", "pressure_mmHg"])
-    assert runs.ngroups == len(sw["models"]) * len(sw["cases"]) * len(sw["pressures_mmHg"])
+    runs = tips.groupby(["charge_law", "model", "case", "pressure_mmHg"])
+    assert runs.ngroups == len(laws) * len(sw["models"]) * len(sw["cases"]) * len(sw["pressures_mmHg"])
     assert (runs.stage.apply(lambda s: (s == "intact").sum()) == 1).all()
-    assert (runs.size() == 1 + sw["concentration_points"]).all()
-    claims = pd.read_csv(workdir / "results/claims.csv")
+    # a run ends at its last converged state (the prescribed law may find no equilibrium up to the maximum)
+    assert (runs.size() <= 1 + sw["concentration_points"]).all()
+    assert (
+        tips[tips.charge_law == "conserved"].groupby(["model", "case", "pressure_mmHg"]).size()
+        == 1 + sw["concentration_points"]
+    ).all()
+    claims = pd.read_csv(workdir / "results/claims.csv", keep_default_na=False)
     assert set(claims.holds) <= {"yes", "no", "n/a"} and len(claims) >= 10
-    assert "| C7 |" in (workdir / "figures/claims.md").read_text()
+    calibration = claims.claim_id.isin([f"C{k}" for k in range(1, 6)])
+    assert set(claims[calibration].charge_law) == {"-"}
+    pool = claims[~calibration]  # C6-C17: one row per claim and law
+    assert all(sorted(rows.charge_law) == sorted(laws) for _, rows in pool.groupby("claim_id"))
+    markdown = (workdir / "figures/claims.md").read_text()
+    assert all(f"| C7 | {law} |" in markdown and f"| C13 | {law} |" in markdown for law in laws)
     for fig in FIGURES:
         assert (workdir / fig).stat().st_size > 5000
 
@@ -316,9 +341,9 @@ def test_a_measurement_setting_reruns_the_measurement_not_the_simulations(workdi
     assert run.returncode == 0, out
     jobs = planned_jobs(out)
     print("\nprobe_length_um edit reruns:", jobs)
-    sw = ci_config["swelling"]
-    assert jobs.pop("pool_stresses") == len(sw["models"]) * len(sw["cases"]) * len(sw["pressures_mmHg"])
-    assert jobs.pop("swelling_convergence_stresses") == len(ci_config["swelling_convergence"]["dx_um"])
+    sw, laws = ci_config["swelling"], len(ci_config["gag"]["charge_laws"])
+    assert jobs.pop("pool_stresses") == laws * len(sw["models"]) * len(sw["cases"]) * len(sw["pressures_mmHg"])
+    assert jobs.pop("swelling_convergence_stresses") == laws * len(ci_config["swelling_convergence"]["dx_um"])
     simulations = {"swell", "swelling_convergence_dx", "homeostasis", "bilayer_pressure_diameter", "delaminate"}
     assert not simulations & set(jobs), jobs
 
@@ -344,7 +369,7 @@ def test_an_edit_of_the_plotting_module_redraws_the_figures_only(workdir, tmp_pa
     assert jobs and all(rule.startswith("fig") or rule.endswith("_figure") or rule == "all" for rule in jobs), jobs
 
 
-def test_a_warm_numba_cache_gives_the_bytes_of_a_cold_one(workdir, numba_cache, tmp_path):
+def test_a_warm_numba_cache_gives_the_bytes_of_a_cold_one(workdir, numba_cache, tmp_path, ci_config):
     """Same config, same bytes, whatever the state of the Numba cache: the CI run compiled every kernel itself
     (cold cache); these jobs, rerun in a copy of it, load them all from that cache (warm)."""
     warm = tmp_path / "warm"
@@ -352,8 +377,8 @@ def test_a_warm_numba_cache_gives_the_bytes_of_a_cold_one(workdir, numba_cache, 
     targets = [
         "results/calibration/mean_pressure_diameter.csv",
         "results/homeostasis/summary.csv",
-        "results/swelling/runs/passive_I_103mmHg.csv",
-        "results/delamination/runs/single_30kPa_particle_growth.csv",
+        "results/swelling/runs/conserved/passive_I_103mmHg.csv",
+        f"results/delamination/runs/conserved/{ci_config['delamination']['figures']['fig5']}_30kPa_particle_growth.csv",
     ]
     run = snakemake(
         warm,
@@ -425,13 +450,14 @@ def test_a_configfile_stands_alone(fresh_copy, ci_config):
     """--configfile X means X: nothing of config/config.yaml (pools II, III, pressure 145) leaks in."""
     run, out = plan(fresh_copy, "--configfile", "config/ci.yaml")
     assert run.returncode == 0, out
-    sw = ci_config["swelling"]
-    expected = len(sw["models"]) * len(sw["cases"]) * len(sw["pressures_mmHg"])
+    sw, laws = ci_config["swelling"], len(ci_config["gag"]["charge_laws"])
+    expected = laws * len(sw["models"]) * len(sw["cases"]) * len(sw["pressures_mmHg"])
     swell = [line for line in out.splitlines() if line.startswith("swell ")]
     assert swell and int(swell[0].split()[-1]) == expected, swell
     run, out = plan(fresh_copy)  # no --configfile: the full study
-    full = yaml.safe_load((ROOT / "config/config.yaml").read_text())["swelling"]
-    assert f"swell {len(full['models']) * len(full['cases']) * len(full['pressures_mmHg'])}".split() in [
+    full = yaml.safe_load((ROOT / "config/config.yaml").read_text())
+    runs = len(full["gag"]["charge_laws"]) * len(full["swelling"]["models"]) * len(full["swelling"]["cases"])
+    assert f"swell {runs * len(full['swelling']['pressures_mmHg'])}".split() in [
         line.split() for line in out.splitlines()
     ]
 
@@ -452,3 +478,118 @@ def test_a_nested_config_override_is_read_as_yaml(fresh_copy):
     assert run.returncode == 0, out[-2000:]
     run, out = plan(fresh_copy, "--configfile", "config/ci.yaml", "--config", "numerics={tolerance: 1e-4}")
     assert run.returncode != 0 and "write 1.0e-4" in out
+
+
+# -- charge laws and pool sets by name (issue 15) ----------------------------------------------------------------
+
+SIMULATIONS = {
+    "swell",
+    "pool_stresses",
+    "swelling_convergence_dx",
+    "swelling_convergence_stresses",
+    "delaminate",
+    "delamination_convergence_dx",
+}
+
+
+def written_config(tmp_path, cfg, name="edited.yaml"):
+    path = tmp_path / name
+    path.write_text(yaml.safe_dump(cfg, sort_keys=False))
+    return path
+
+
+def law_jobs(cfg) -> dict:
+    """The simulation jobs of one charge law of ``cfg``, per rule."""
+    sw, de = cfg["swelling"], cfg["delamination"]
+    runs = sum(len(de["critical_stresses_kPa"]) if name == de["figures"]["fig5"] else 1 for name in de["pool_sets"])
+    return {
+        "swell": len(sw["models"]) * len(sw["cases"]) * len(sw["pressures_mmHg"]),
+        "pool_stresses": len(sw["models"]) * len(sw["cases"]) * len(sw["pressures_mmHg"]),
+        "swelling_convergence_dx": len(cfg["swelling_convergence"]["dx_um"]),
+        "swelling_convergence_stresses": len(cfg["swelling_convergence"]["dx_um"]),
+        "delaminate": runs * len(de["criteria"]),
+        "delamination_convergence_dx": len(de["convergence"]["dx_um"]),
+    }
+
+
+def test_removing_a_charge_law_reruns_no_simulation(workdir, ci_config, tmp_path):
+    """Each run's params hold its own law only: without ``prescribed`` the ``conserved`` runs stay, and only the tables,
+    figures and claims that showed both laws are redone."""
+    cfg = copy.deepcopy(ci_config)
+    cfg["gag"]["charge_laws"] = ["conserved"]
+    run = snakemake(workdir, "-n", "all", configfile=written_config(tmp_path, cfg))
+    out = run.stdout + run.stderr
+    assert run.returncode == 0, out[-3000:]
+    jobs = planned_jobs(out)
+    print("\nremoving a charge law reruns:", jobs)
+    assert jobs and not SIMULATIONS & set(jobs), jobs
+
+
+def test_adding_a_charge_law_adds_its_own_jobs(fresh_copy, ci_config, tmp_path):
+    """From nothing, the two laws plan each law's simulation jobs once: a law adds its jobs and no others."""
+    one = copy.deepcopy(ci_config)
+    one["gag"]["charge_laws"] = ["conserved"]
+    alone = planned_jobs(plan(fresh_copy, "--configfile", str(written_config(tmp_path, one)))[1])
+    both = planned_jobs(plan(fresh_copy, "--configfile", "config/ci.yaml")[1])
+    assert ci_config["gag"]["charge_laws"] == ["prescribed", "conserved"]
+    for rule, n in law_jobs(ci_config).items():
+        assert (alone[rule], both[rule]) == (n, 2 * n), rule
+
+
+def renamed(ci_config, old="low_separation", new="pair_2deg"):
+    """The CI config with one pool set renamed, in the set and in its figure's role."""
+    cfg = copy.deepcopy(ci_config)
+    de = cfg["delamination"]
+    de["pool_sets"] = {new if k == old else k: v for k, v in de["pool_sets"].items()}
+    de["figures"] = {
+        k: [new if n == old else n for n in v] if isinstance(v, list) else v for k, v in de["figures"].items()
+    }
+    return cfg
+
+
+def test_a_renamed_pool_set_builds_its_dag_and_runs(workdir, ci_config, tmp_path):
+    """Renaming figure 6's low-separation set (set and role) runs that set under its new name, and nothing else."""
+    cfg = renamed(ci_config)
+    config = written_config(tmp_path, cfg)
+    copy_dir = tmp_path / "copy"
+    shutil.copytree(workdir, copy_dir, symlinks=True)
+    run = snakemake(copy_dir, "-n", "all", configfile=config)
+    out = run.stdout + run.stderr
+    assert run.returncode == 0, out[-3000:]
+    jobs = planned_jobs(out)
+    laws, criteria = len(cfg["gag"]["charge_laws"]), len(cfg["delamination"]["criteria"])
+    assert jobs.get("delaminate") == laws * criteria and "fig6" in jobs, jobs
+    assert set(re.findall(r"poolset=(\w+)", out)) == {"pair_2deg"}
+    assert not (SIMULATIONS - {"delaminate"}) & set(jobs), jobs
+    run = snakemake(copy_dir, "all", configfile=config)
+    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
+    summary = pd.read_csv(copy_dir / "results/delamination/summary.csv")
+    assert "pair_2deg" in set(summary.case) and "low_separation" not in set(summary.case)
+    assert (copy_dir / "figures/fig6.png").stat().st_mtime > (workdir / "figures/fig6.png").stat().st_mtime
+    assert "pair_2deg" in pd.read_csv(copy_dir / "results/claims.csv").query("claim_id == 'C16'").our_value.iloc[0]
+
+
+def test_an_extra_pool_set_runs_and_joins_the_tables(workdir, ci_config, tmp_path):
+    """A set that no figure shows runs under every law and criterion, and its rows join the delamination tables (the
+    figures of the delamination runs, which read those tables, are redrawn)."""
+    cfg = copy.deepcopy(ci_config)
+    de = cfg["delamination"]
+    de["pool_sets"]["extra"] = copy.deepcopy(de["pool_sets"][de["figures"]["fig7"]])
+    run = snakemake(workdir, "-n", "all", configfile=written_config(tmp_path, cfg))
+    out = run.stdout + run.stderr
+    assert run.returncode == 0, out[-3000:]
+    jobs = planned_jobs(out)
+    assert jobs.get("delaminate") == len(cfg["gag"]["charge_laws"]) * len(de["criteria"]), jobs
+    assert set(re.findall(r"poolset=(\w+)", out)) == {"extra"}
+    assert {"delamination_growth", "delamination_summary", "claims"} <= set(jobs)
+    assert not (SIMULATIONS - {"delaminate"}) & set(jobs), jobs
+
+
+def test_a_figure_without_its_pool_set_is_rejected_by_name_before_any_job(fresh_copy, ci_config, tmp_path):
+    cfg = copy.deepcopy(ci_config)
+    cfg["delamination"]["figures"]["fig6"] = ["pair_2deg", "high_separation"]  # no such set
+    run = snakemake(fresh_copy, "all", configfile=written_config(tmp_path, cfg))
+    out = run.stdout + run.stderr
+    assert run.returncode != 0
+    assert "delamination.figures.fig6[0] = 'pair_2deg' is not a pool set of delamination.pool_sets" in out, out[-2000:]
+    assert "Job stats" not in out and not (fresh_copy / "results").exists()

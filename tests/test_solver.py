@@ -6,13 +6,15 @@ import pytest
 from sphgag import artery, protocols, solver
 from sphgag.loading import MMHG_TO_KPA, Load
 
+from .conftest import law_gag
+
 
 @pytest.fixture(scope="module")
 def wall(ci_config):
     """The passive CI wall with a pool of case I, pressurised to 103 mmHg (pool still intact)."""
     numerics = ci_config["numerics"]
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
-    model = artery.bilayer_model(ci_config["bilayer"], numerics, name="test-solver", pool=pool, gag=ci_config["gag"])
+    model = artery.bilayer_model(ci_config["bilayer"], numerics, name="test-solver", pool=pool, gag=law_gag(ci_config))
     h = protocols.homeostasis(model, numerics, ci_config["homeostasis"])
     return model, protocols.pressurise(model, h.state, 103.0, numerics)
 

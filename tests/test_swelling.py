@@ -7,6 +7,8 @@ import pytest
 from sphgag import artery, convergence, geometry, materials, protocols, solver
 from sphgag.loading import Load
 
+from .conftest import law_gag
+
 RT = 8.314462618 * 310.0 / 1000.0  # kPa per mEq/l
 
 
@@ -36,7 +38,7 @@ def test_conversion_is_a_change_of_the_material_row_only():
 
 
 def pool_model(cfg, sector, name="test-pool"):
-    return artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=name, pool=sector, gag=cfg["gag"])
+    return artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=name, pool=sector, gag=law_gag(cfg))
 
 
 def test_converted_unswollen_pool_in_an_unloaded_wall_is_in_equilibrium(ci_config):
@@ -66,7 +68,7 @@ def swell(cfg, start, sector):
     states = protocols.swell_pool(
         model, solver.State(start.load, start.x, None, None), cfg["numerics"], cfg["swelling"]
     )
-    table = protocols.pool_table(model, states, sector, cfg["swelling"]["probe_length_um"], cfg["gag"])
+    table = protocols.pool_table(model, states, sector, cfg["swelling"]["probe_length_um"], law_gag(cfg))
     return model, table
 
 
@@ -110,7 +112,7 @@ def test_refining_changes_the_pool_state_at_150_mEq_l_by_less_than_the_measured_
                 dx,
                 c["bilayer"],
                 c["numerics"],
-                c["gag"],
+                law_gag(c),
                 cases,
                 convergence.swell_cases(
                     dx,
@@ -118,7 +120,7 @@ def test_refining_changes_the_pool_state_at_150_mEq_l_by_less_than_the_measured_
                     c["numerics"],
                     c["homeostasis"],
                     c["swelling"],
-                    c["gag"],
+                    law_gag(c),
                     cases,
                     sc["pressure_mmHg"],
                 ),
@@ -137,3 +139,25 @@ def test_refining_changes_the_pool_state_at_150_mEq_l_by_less_than_the_measured_
         assert abs(dv[8.0] - dv[6.0]) < 0.30 * dv[6.0]
     change = convergence.bar(table, 150.0)
     assert set(change.case) == set(sc["cases"])
+
+
+def test_the_charge_law_of_a_run_selects_its_donnan_term(ci_config):
+    """``prescribed``: the pool carries Pi(c) of the load's concentration (eq. 2.27 as printed), no fixed charge;
+    ``conserved``: no prescribed Pi, the fixed charge c per reference volume (Pi at c/J, materials.donnan). The
+    configuration's list of laws is not a run's law: a material needs ``charge_law``."""
+    sector = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
+    load = Load(1.0, 10.0, material=(("transition", 1.0), ("concentration", 150.0)))
+    rows = {}
+    wall = ci_config["bilayer"], ci_config["numerics"]
+    for law in materials.CHARGE_LAWS:
+        model = artery.bilayer_model(*wall, name="test-law", pool=sector, gag=law_gag(ci_config, law))
+        assert model.props.gag["charge_law"] == law and "charge_laws" not in model.props.gag
+        rows[law] = model.props(load)[model.props.converting]
+    g = ci_config["gag"]
+    pi = materials.swelling_pressure(150.0, g["bath_concentration_mEq_l"], g["temperature_K"])
+    assert np.allclose(rows["prescribed"][:, materials.PI], pi) and not rows["prescribed"][:, materials.FCD].any()
+    assert not rows["conserved"][:, materials.PI].any() and np.allclose(rows["conserved"][:, materials.FCD], 150.0)
+    with pytest.raises(ValueError, match="charge_law"):
+        artery.bilayer_model(*wall, pool=sector, gag=ci_config["gag"])  # as configured: a list of laws, no law
+    with pytest.raises(ValueError, match="unknown charge law 'literal'"):
+        materials.law_gag(ci_config["gag"], "literal")

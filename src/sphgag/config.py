@@ -194,8 +194,9 @@ def _empty_pools(config: dict) -> list[str]:
         for dx in config["swelling_convergence"]["dx_um"]
         if n in sw.get("cases", {})
     ]
+    study = de.get("figures", {}).get("fig5")  # figure 5's set is also the set of the resolution study
     for name, pools in de.get("pool_sets", {}).items():
-        spacings = [bil["dx_um"]] + (de["convergence"]["dx_um"] if name == "single" else [])
+        spacings = [bil["dx_um"]] + (de["convergence"]["dx_um"] if name == study else [])
         runs += [(f"delamination.pool_sets.{name}[{k}]", pool, dx) for k, pool in enumerate(pools) for dx in spacings]
     for name, pool, dx in runs:
         if dx not in layouts:
@@ -246,9 +247,36 @@ def _thin_layers(config: dict) -> list[str]:
     return out
 
 
+def _pool_set_roles(de: dict) -> list[str]:
+    """Every figure's pool set (``delamination.figures``) exists in ``delamination.pool_sets``, and a set that figures
+    6-7 share with figure 5 is run at their sigma_cr (figure 5's set runs at ``critical_stresses_kPa`` only)."""
+    out, sets = [], de.get("pool_sets", {})
+    fig5 = de.get("figures", {}).get("fig5")
+    for role, names in de.get("figures", {}).items():
+        for k, name in enumerate(names if isinstance(names, list) else [names]):
+            key = f"delamination.figures.{role}" + (f"[{k}]" if isinstance(names, list) else "")
+            if name not in sets:
+                out.append(
+                    f"{key} = {name!r} is not a pool set of delamination.pool_sets ({', '.join(sets)}): "
+                    f"figure {role.removeprefix('fig')} would have no set to show"
+                )
+            elif role != "fig5" and name == fig5 and de["critical_stress_kPa"] not in de["critical_stresses_kPa"]:
+                out.append(
+                    f"{key} = {name!r} is figure 5's set (delamination.figures.fig5), which runs at "
+                    f"delamination.critical_stresses_kPa = {de['critical_stresses_kPa']}, not at "
+                    f"delamination.critical_stress_kPa = {de['critical_stress_kPa']}: give the figure a set of its own"
+                )
+    return out
+
+
 def _consistency(config: dict) -> list[str]:
     """Relations between keys that a JSON schema cannot express."""
+    from .materials import CHARGE_LAWS
+
     problems = []
+    for k, law in enumerate(config.get("gag", {}).get("charge_laws", [])):
+        if law not in CHARGE_LAWS:
+            problems.append(f"gag.charge_laws[{k}] = {law!r} is not a charge law of sphgag: one of {CHARGE_LAWS}")
     m = config.get("mean", {})
     if m.get("outer_radius_um", 0) <= m.get("inner_radius_um", 0):
         problems.append(
@@ -314,6 +342,7 @@ def _consistency(config: dict) -> list[str]:
                 f"delamination.pressure_mmHg = {de['pressure_mmHg']} has no saved state: it must be one "
                 f"of bilayer_calibration.state_pressures_mmHg = {saved}"
             )
+        problems += _pool_set_roles(de)
         coarsest = max([bil.get("dx_um", 0)] + de["convergence"]["dx_um"])
         if "averaged" in de["criteria"] and de["averaging_length_um"] < coarsest:
             problems.append(

@@ -702,13 +702,17 @@ def convergence_study(
     gag: dict,
     name: str = "delamination_convergence",
 ) -> pd.DataFrame:
-    """Rows of ``results/delamination/convergence.csv`` for one particle spacing: the single pool at
-    ``critical_stress_kPa``, every onset criterion, from the passive wall pressurised at this spacing."""
+    """Rows of ``results/delamination/convergence.csv`` for one particle spacing: the one pool set of
+    ``de["pool_sets"]`` (figure 5's, by any name) at ``critical_stress_kPa``, every onset criterion, from the passive
+    wall pressurised at this spacing."""
+    if len(de["pool_sets"]) != 1:
+        raise ValueError(f"the resolution study runs one pool set, got {', '.join(de['pool_sets'])}")
+    [(case, pools)] = de["pool_sets"].items()
     p = dict(bilayer, dx_um=float(dx))
     wall = artery.bilayer_model(p, numerics, name=name)
     h = protocols.homeostasis(wall, numerics, homeostasis)
     start = protocols.pressurise(wall, h.state, de["pressure_mmHg"], numerics)
-    sectors = [artery.pool_sector(s) for s in de["pool_sets"]["single"]]
+    sectors = [artery.pool_sector(s) for s in pools]
     rows = []
     for criterion in de["criteria"]:
         settings = Settings.from_config(de, de["critical_stress_kPa"], criterion)
@@ -716,5 +720,5 @@ def convergence_study(
         result = grow(
             model, solver.State(start.load, start.x, None, None), sectors, settings, numerics, gag, model.props
         )
-        rows.append(labelled(result, "single", settings, dx)[1].assign(particles=model.n))
+        rows.append(labelled(result, case, settings, dx)[1].assign(particles=model.n))
     return pd.concat(rows, ignore_index=True)

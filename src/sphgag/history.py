@@ -123,7 +123,10 @@ class HistoryMaterial:
     """Property table of a wall as a pure function of ``(load, history)``, on a path from ``before`` to ``after``.
 
     ``base(load)``: the intact wall's table (e.g. :class:`sphgag.artery.BilayerMaterial`);
-    ``gag``: the ``gag`` configuration (eq. 2.27 and the Donnan law).
+    ``gag``: the ``gag`` parameters of one run (eq. 2.27), with its Donnan law ``charge_law``
+    (:data:`sphgag.materials.CHARGE_LAWS`, :func:`sphgag.materials.law_gag`): ``prescribed`` gives GAG particles
+    the swelling pressure Pi(c) of the load's concentration (eqs. 2.25-2.27 as printed), ``conserved`` the Donnan
+    pressure of the conserved fixed charge at the current concentration c/J (:func:`sphgag.materials.donnan`).
 
     The load's ``transition`` t in [0, 1] moves between the two histories (a load without one is at
     ``before``), so that the quasi-static solver can follow (and bisect) any change of history:
@@ -144,6 +147,11 @@ class HistoryMaterial:
         gag: dict,
         after: ParticleHistory | None = None,
     ):
+        if gag.get("charge_law") not in materials.CHARGE_LAWS:
+            raise ValueError(
+                f"gag['charge_law'] = {gag.get('charge_law')!r}: one of {', '.join(materials.CHARGE_LAWS)} "
+                "(materials.law_gag gives the parameters of one law)"
+            )
         self.base, self.gag = base, gag
         self.before, self.after = before, before if after is None else after
         if self.before.n != self.after.n:
@@ -172,10 +180,11 @@ class HistoryMaterial:
         if np.any(D > 0.0):
             out = damage.weaken(out, D)
         g = self.gag
+        conserved = g["charge_law"] == "conserved"
         for rows, fraction, charge in ((self.kept, 1.0, c), (self.converting, t, t * c)):
             if not rows.size or fraction == 0.0:
                 continue
-            if g["fixed_charge_dilution"]:
+            if conserved:
                 pi, fixed = 0.0, (charge, g["bath_concentration_mEq_l"], g["temperature_K"])
             else:
                 pi = float(materials.swelling_pressure(charge, g["bath_concentration_mEq_l"], g["temperature_K"]))

@@ -54,6 +54,21 @@ FCD, CBATH, RT = FAM_END + 1, FAM_END + 2, FAM_END + 3
 NPROP = RT + 1
 GAS_CONSTANT = 8.314462618  # J / (mol K)
 
+# The Donnan laws of a GAG pool (eqs. 2.25-2.27; docs/physics.md), by their names in the configuration
+# (``gag.charge_laws``) and in every pool table (column ``charge_law``):
+# ``prescribed``: the paper's law as printed, a swelling pressure Pi(c) of the load's concentration c;
+# ``conserved``: the fixed charge stays in the pool, so the Donnan pressure acts at the current concentration c/J
+# (:func:`donnan`; a documented deviation).
+CHARGE_LAWS = ("prescribed", "conserved")
+
+
+def law_gag(gag: dict, law: str) -> dict:
+    """The ``gag`` parameters of one run under the charge law ``law``: the configuration's ``gag`` section without its
+    list ``charge_laws``, with ``charge_law = law`` (what :class:`sphgag.history.HistoryMaterial` reads)."""
+    if law not in CHARGE_LAWS:
+        raise ValueError(f"unknown charge law {law!r}: one of {', '.join(CHARGE_LAWS)}")
+    return dict({k: v for k, v in gag.items() if k not in ("charge_laws", "charge_law")}, charge_law=law)
+
 
 def empty_props(n: int) -> np.ndarray:
     """A property table for ``n`` particles: stress-free, no constituents."""

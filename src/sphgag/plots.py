@@ -57,6 +57,29 @@ def style_legend(ax, loc="best", fontsize=7, **kws):
     sns.move_legend(ax, loc, frameon=False, fontsize=fontsize, **kws)
 
 
+# the Donnan laws of the pools (sphgag.materials.CHARGE_LAWS, column charge_law of every pool table), as the figures
+# name them: the prescribed law is the paper's model, the one to compare with the paper's panels
+LAW_TITLES = {
+    "prescribed": "prescribed charge law: Pi(c), eqs. 2.25-2.27 as printed (the paper's model: compare with the paper)",
+    "conserved": "conserved charge law: Pi at the current concentration c/J (mixture theory; a deviation)",
+}
+LAW_SHORT = {"prescribed": "prescribed Pi(c), paper", "conserved": "conserved charge, c/J"}
+
+
+def law_title(law: str) -> str:
+    return LAW_TITLES.get(law, f"{law} charge law")
+
+
+def law_blocks(laws, heights, width: float = 11.0):
+    """A figure with one titled block (a sub-figure, constrained layout) per charge law, stacked in the order of
+    ``laws`` (``heights`` in inches); returns the figure and the blocks."""
+    fig = plt.figure(figsize=(width, sum(heights) + 0.5), layout="constrained")
+    blocks = fig.subfigures(len(laws), 1, height_ratios=list(heights), squeeze=False)[:, 0]
+    for block, law in zip(blocks, laws):
+        block.suptitle(law_title(law), x=0.01, ha="left", fontsize=10, fontweight="bold")
+    return fig, list(blocks)
+
+
 def save(fig, paths, description: str):
     """Save ``fig`` to every path (format from the suffix) with provenance metadata."""
     for path in paths:
@@ -326,9 +349,10 @@ STATISTIC_LINES = dict(
 )
 
 
-def swelling_lines(data: pd.DataFrame, colours: dict, **_):
+def swelling_lines(data: pd.DataFrame, colours: dict, max_concentration: float, **_):
     """One facet of figure 4 (FacetGrid.map_dataframe): a stress against concentration after conversion, a colour
-    per pressure, a line style per statistic; the intact wall's value as a large dot at zero concentration."""
+    per pressure, a line style per statistic; the intact wall's value as a large dot at zero concentration; a cross
+    at the last converged state of a run that stopped below ``max_concentration`` (no equilibrium beyond it)."""
     ax = plt.gca()
     conv, intact = data[data.stage == "converted"], data[data.stage == "intact"]
     sns.lineplot(
@@ -355,25 +379,50 @@ def swelling_lines(data: pd.DataFrame, colours: dict, **_):
         legend=False,
         ax=ax,
     )
+    means = conv[conv.statistic == "region mean"].sort_values("concentration_mEq_l")
+    ends = means.groupby("pressure").tail(1)
+    ends = ends[ends.concentration_mEq_l < max_concentration - 1e-9]
+    if len(ends):
+        ax.scatter(
+            ends.concentration_mEq_l,
+            ends.value,
+            marker="X",
+            s=40,
+            c=[colours[p] for p in ends.pressure],
+            edgecolors="k",
+            linewidths=0.5,
+            zorder=5,
+            label=LAST_CONVERGED,
+        )
     if (data.quantity == TIP).any():
         ax.axhline(0.0, color="0.7", lw=0.6)
 
 
-def fig4(tips: pd.DataFrame, particles: pd.DataFrame, cases: dict, probe_length: float):
-    """Figure 4: (a) the pools; (b) passive and (c) active tip radial and top hoop stress vs concentration (seaborn
-    facets of tip_stress.csv: a row per model and stress, a column per pool, a colour per pressure)."""
+LAST_CONVERGED = "last converged state (run stopped)"
+
+
+def fig4(tips: pd.DataFrame, particles: pd.DataFrame, cases: dict, probe_length: float, laws, max_concentration):
+    """Figure 4: (a) the pools; then for each charge law (``laws``, column ``charge_law``) the passive and active tip
+    radial and top hoop stress vs concentration (seaborn facets of tip_stress.csv: a row per law, model and stress,
+    a column per pool, a colour per pressure). A run's line ends at its last converged state (a cross if that is
+    below ``max_concentration``)."""
     _style()
     names = sorted(cases, key=lambda k: cases[k]["angular_extent_deg"])
+    laws = [law for law in laws if law in set(tips.charge_law)]
     models = [m for m in ("passive", "active") if m in set(tips.model)]
     pressures = palette(sorted(tips.pressure_mmHg.unique()), PRESSURE_COLOURS, "{:g} mmHg".format)
     long = long_measures(
         tips.assign(pressure=tips.pressure_mmHg.map("{:g} mmHg".format)),
         {c: POOL_MEASURES[c] for c in ("tip_radial_stress_kPa", "tip_peak_radial_stress_kPa", "top_circ_stress_kPa")},
-        ["model", "case", "stage", "pressure", "concentration_mEq_l"],
+        ["charge_law", "model", "case", "stage", "pressure", "concentration_mEq_l"],
     )
     long = long[(long.stage == "converted") | (long.statistic == "region mean")]  # no peak of the intact wall
-    long["panel"] = long.model.map({m: f"({'bc'[i]}) {m}\n" for i, m in enumerate(models)}) + long.quantity
-    panels = [f"({'bc'[i]}) {m}\n{q}" for i, m in enumerate(models) for q in (TIP, TOP)]
+    blocks = [(law, m) for law in laws for m in models]
+    letters = {block: "bcdefghij"[k] for k, block in enumerate(blocks)}
+    long["panel"] = [
+        f"({letters[law, m]}) {m}, {law}\n{q}" for law, m, q in zip(long.charge_law, long.model, long.quantity)
+    ]
+    panels = [f"({letters[law, m]}) {m}, {law}\n{q}" for law, m in blocks for q in (TIP, TOP)]
     grid = sns.FacetGrid(
         long,
         row="panel",
@@ -382,15 +431,19 @@ def fig4(tips: pd.DataFrame, particles: pd.DataFrame, cases: dict, probe_length:
         col_order=names,
         sharex=False,
         sharey="row",
-        height=2.3,
-        aspect=3.0 / 2.3,
+        height=2.1,
+        aspect=3.0 / 2.1,
     )
-    grid.map_dataframe(swelling_lines, colours=pressures)
+    grid.map_dataframe(swelling_lines, colours=pressures, max_concentration=max_concentration)
     grid.add_legend()
     grid.set_titles("")
     grid.set_axis_labels(GAG_CONCENTRATION, "")
     for ax, panel in zip(grid.axes[1:, 0], panels):
         ax.set_ylabel(panel)
+    for ax in grid.axes[1:].flat:  # one concentration axis: a run that ended early ends short of the others
+        ax.set_xlim(-0.04 * max_concentration, 1.04 * max_concentration)
+    for k, law in enumerate(laws):  # a heading above each law's rows
+        grid.axes[1 + 2 * len(models) * k, 0].set_title(law_title(law), loc="left", fontweight="bold", fontsize=9)
     for ax, name in zip(grid.axes[0], names):
         pool_geometry_panel(
             ax, particles, cases[name], probe_length, f"(a) case {name}: {cases[name]['angular_extent_deg']:g} deg"
@@ -517,15 +570,23 @@ def resolution_panel(ax, errors: pd.DataFrame, measures: dict, ratios: dict):
     style_legend(ax, "upper left", fontsize=6.5, bbox_to_anchor=(1.0, 1.0))
 
 
-def swelling_convergence(table: pd.DataFrame):
+def swelling_convergence(table: pd.DataFrame, laws=None):
     """Resolution study (seaborn facets of convergence.csv): tip radial stress (mean over the probe, and particle
     peak), top hoop stress and pool volume change against concentration, a colour per particle spacing, a column
-    per pool."""
+    per pool and charge law (``laws``: their order; default: as in the table)."""
     _style()
+    laws = [law for law in (laws or table.charge_law.unique()) if law in set(table.charge_law)]
     spacings = sorted(table.dx_um.unique(), reverse=True)
     shades = dict(zip([f"{dx:g} um" for dx in spacings], plt.cm.viridis(np.linspace(0.1, 0.85, len(spacings)))))
+    cases = list(dict.fromkeys(table.case))
+    column = {(law, c): f"case {c}\n{LAW_SHORT.get(law, law)}" for law in laws for c in cases}
     long = long_measures(
-        table.assign(dx=table.dx_um.map("{:g} um".format)), POOL_MEASURES, ["case", "dx", "concentration_mEq_l"]
+        table.assign(
+            dx=table.dx_um.map("{:g} um".format),
+            facet=[column.get(key) for key in zip(table.charge_law, table.case)],
+        ),
+        POOL_MEASURES,
+        ["facet", "dx", "concentration_mEq_l"],
     )
     quantities = list(dict.fromkeys(q for q, _ in POOL_MEASURES.values()))
     grid = sns.relplot(
@@ -538,7 +599,8 @@ def swelling_convergence(table: pd.DataFrame):
         palette=shades,
         row="quantity",
         row_order=quantities,
-        col="case",
+        col="facet",
+        col_order=list(column.values()),
         estimator=None,
         lw=1.0,
         height=7.0 / 3,
@@ -546,7 +608,7 @@ def swelling_convergence(table: pd.DataFrame):
         facet_kws=dict(sharey=False, margin_titles=True),
         **STATISTIC_LINES,
     )
-    grid.set_titles(row_template="", col_template="case {col_name}")
+    grid.set_titles(row_template="", col_template="{col_name}")
     grid.set_axis_labels(GAG_CONCENTRATION, "")
     for ax, quantity in zip(grid.axes[:, 0], quantities):
         ax.set_ylabel(quantity)
@@ -653,8 +715,8 @@ def fit_particle_sizes(fig):
             coll.set_sizes([(0.95 * dx * points_per_um) ** 2])
 
 
-def material_key(fig, cax):
-    """The legend of the snapshot panels' colours (above the figure) and the colour bar of the damage in ``cax``."""
+def material_key(fig):
+    """The legend of the snapshot panels' colours, above the figure."""
     key = {
         "media": "intact media",
         "adventitia": "intact adventitia",
@@ -666,6 +728,10 @@ def material_key(fig, cax):
         for m, text in key.items()
     ]
     fig.legend(handles=handles, loc="outside upper center", ncols=4, frameon=False)
+
+
+def damage_colourbar(fig, cax):
+    """The colour bar of the damage of the snapshot panels, in ``cax``."""
     bar = fig.colorbar(matplotlib.cm.ScalarMappable(matplotlib.colors.Normalize(0.0, 1.0), DAMAGE_CMAP), cax=cax)
     bar.set_label("damage D of tissue (eq. 2.28)")
 
@@ -677,10 +743,11 @@ def run_note(summary: pd.DataFrame, **labels) -> str:
         return "not run"
     s = summary[sel].iloc[0]
     if not np.isfinite(s.onset_concentration_mEq_l):
-        return "no damage onset"
-    note = f"damage onset at {s.onset_concentration_mEq_l:g} mEq/l, {s.final_length_um:.3g} um delaminated"
-    note += f", merged at pass {s.merge_step:g}" if bool(s.merged) else ""
-    return note + (f", stop: {s.stop}" if s.stop != "arrested" else "")
+        note = "no damage onset"
+    else:
+        note = f"damage onset at {s.onset_concentration_mEq_l:g} mEq/l, {s.final_length_um:.3g} um delaminated"
+        note += f", merged at pass {s.merge_step:g}" if bool(s.merged) else ""
+    return note + (f"\n    stop: {s.stop}" if s.stop != "arrested" else "")  # (a second line in a legend)
 
 
 def no_growth_note(ax, runs: pd.DataFrame):
@@ -776,14 +843,16 @@ def tip_stress_panel(
         )
     ax.axhline(0.0, color="0.7", lw=0.6)
     lo, hi = ax.get_ylim()
-    ax.set_ylim(lo, hi + 0.12 * len(labels) * (hi - lo))  # room for the legend above the curves
+    lines = sum(1 + str(text).count("\n") for text in labels.values())
+    ax.set_ylim(lo, hi + 0.12 * lines * (hi - lo))  # room for the legend above the curves
     ax.set(xlabel=PSEUDO_TIME, ylabel="tip radial stress (kPa)", title=title)
     style_legend(ax, "upper left", title=None)
 
 
 def snapshot_grid(fig, spec, columns, media_outer_um):
-    """Snapshot panels in ``spec`` (a gridspec cell): ``columns`` is a list of lists of ``(snapshot, k, label)``,
-    one list per column, each column with one angular window; the material key and the damage colour bar."""
+    """Snapshot panels in ``spec`` (a gridspec cell of ``fig``, a figure or a law's block): ``columns`` is a list of
+    lists of ``(snapshot, k, label)``, one list per column, each column with one angular window; the damage colour
+    bar beside them."""
     rows = max(len(col) for col in columns)
     grid = spec.subgridspec(rows, len(columns) + 1, width_ratios=[1.0] * len(columns) + [0.015])
     windows = [snapshot_window([(snap, k) for snap, k, _ in col]) for col in columns]
@@ -800,14 +869,13 @@ def snapshot_grid(fig, spec, columns, media_outer_um):
                 ax.set_xlabel("current angle (deg)")
             if j == 0:
                 ax.set_ylabel("radius (um)")
-    material_key(fig, fig.add_subplot(grid[:, -1]))
+    damage_colourbar(fig, fig.add_subplot(grid[:, -1]))
 
 
-def criterion_snapshot_figure(
-    snapshots: dict, criteria, n_snapshots: int, label: str, media_outer_um: float, row_height: float
-):
-    """A figure whose upper part has one column of ``n_snapshots`` snapshots per onset criterion (``snapshots``:
-    criterion -> snapshots; titles "(a) <criterion><label>"); returns it with the grid cell left below."""
+def criterion_snapshots(block, snapshots: dict, criteria, n_snapshots: int, label: str, media_outer_um: float, rows):
+    """In ``block`` (a law's sub-figure), above: one column of ``n_snapshots`` snapshots per onset criterion
+    (``snapshots``: criterion -> snapshots; titles "(a) <criterion><label>"), ``rows`` parts high; returns the
+    gridspec cell left below (3 parts)."""
     columns = [
         [
             (snapshots[c], k, f"(a) {c}{' (default)' * (j == 0)}{label}")
@@ -815,85 +883,109 @@ def criterion_snapshot_figure(
         ]
         for j, c in enumerate(criteria)
     ]
-    rows = max(len(col) for col in columns)
-    fig = plt.figure(figsize=(11, 3.3 + row_height * rows), layout="constrained")
-    gs = fig.add_gridspec(2, 1, height_ratios=[row_height * rows, 3.0])
-    snapshot_grid(fig, gs[0], columns, media_outer_um)
-    return fig, gs[1]
+    gs = block.add_gridspec(2, 1, height_ratios=[rows, 3.0])
+    snapshot_grid(block, gs[0], columns, media_outer_um)
+    return gs[1]
+
+
+def of_law(table: pd.DataFrame, law: str) -> pd.DataFrame:
+    """The rows of one charge law (column ``charge_law``)."""
+    return table[table.charge_law == law]
 
 
 def fig5(
     growth: pd.DataFrame,
     summary: pd.DataFrame,
     snapshots: dict,
+    case: str,
     sigma: float,
     criteria,
+    laws,
     media_outer_um: float,
     n_snapshots: int = 3,
 ):
-    """Figure 5, the single pool: (a) snapshots at sigma_cr = ``sigma`` (``snapshots``: criterion -> snapshots),
-    one column per onset criterion; (b) the tip radial stress against pseudo-time for every sigma_cr, one panel per
-    criterion; (c) the delaminated length against the GAG concentration."""
+    """Figure 5, one pool set grown alone (``case``, figure 5's set), one block per charge law (``laws``): (a)
+    snapshots at sigma_cr = ``sigma`` (``snapshots``: (law, criterion) -> snapshots), one column per onset criterion;
+    (b) the tip radial stress against pseudo-time for every sigma_cr, one panel per criterion; (c) the delaminated
+    length against the GAG concentration."""
     _style()
-    single = growth[growth.case == "single"]
-    sigmas = sorted(single.sigma_cr_kPa.unique())
+    runs = growth[growth.case == case]
+    sigmas = sorted(runs.sigma_cr_kPa.unique())
     colours = dict(zip(sigmas, plt.cm.Dark2.colors))
-    fig, lower = criterion_snapshot_figure(snapshots, criteria, n_snapshots, f", {sigma:g} kPa: ", media_outer_um, 1.3)
-    bottom = lower.subgridspec(1, len(criteria) + 1)
-    tip_axes = []
-    for j, criterion in enumerate(criteria):
-        ax = fig.add_subplot(bottom[j], sharey=tip_axes[0] if tip_axes else None)
-        runs = single[single.criterion == criterion]
-        notes = {
-            s: f"{s:g} kPa: {run_note(summary, case='single', sigma_cr_kPa=s, criterion=criterion)}" for s in sigmas
-        }
-        tip_stress_panel(
-            ax, runs, "sigma_cr_kPa", notes, colours, colours, f"(b) {criterion} onset measure, single pool"
+    rows = 1.3 * max(len(snapshot_indices(snap, n_snapshots)) for snap in snapshots.values())
+    fig, blocks = law_blocks(laws, [0.3 + rows + 3.0] * len(laws))
+    for block, law in zip(blocks, laws):
+        own, notes_of = of_law(runs, law), of_law(summary, law)
+        lower = criterion_snapshots(
+            block,
+            {c: snapshots[law, c] for c in criteria},
+            criteria,
+            n_snapshots,
+            f", {sigma:g} kPa: ",
+            media_outer_um,
+            rows,
         )
-        no_growth_note(ax, runs)
-        tip_axes.append(ax)
-    ax = fig.add_subplot(bottom[-1])
-    sns.lineplot(
-        single.sort_values("step").assign(sigma_cr=single.sigma_cr_kPa.map("{:g} kPa".format)),
-        x="concentration_mEq_l",
-        y="delaminated_length_um",
-        hue="sigma_cr",
-        palette=palette(sigmas, colours, "{:g} kPa".format),
-        style="criterion",
-        style_order=list(criteria),
-        dashes=dict(zip(criteria, CRITERION_DASHES)),
-        estimator=None,
-        sort=False,
-        lw=1.0,
-        ax=ax,
-    )
-    no_growth_note(ax, single)
-    ax.set(xlabel=GAG_CONCENTRATION, ylabel="delaminated length (um)", title="(c) growth, single pool")
-    style_legend(ax, "upper left")
+        bottom = lower.subgridspec(1, len(criteria) + 1)
+        tip_axes = []
+        for j, criterion in enumerate(criteria):
+            ax = block.add_subplot(bottom[j], sharey=tip_axes[0] if tip_axes else None)
+            crit = own[own.criterion == criterion]
+            notes = {
+                s: f"{s:g} kPa: {run_note(notes_of, case=case, sigma_cr_kPa=s, criterion=criterion)}" for s in sigmas
+            }
+            tip_stress_panel(
+                ax, crit, "sigma_cr_kPa", notes, colours, colours, f"(b) {criterion} onset measure, {case}"
+            )
+            no_growth_note(ax, crit)
+            tip_axes.append(ax)
+        ax = block.add_subplot(bottom[-1])
+        sns.lineplot(
+            own.sort_values("step").assign(sigma_cr=own.sigma_cr_kPa.map("{:g} kPa".format)),
+            x="concentration_mEq_l",
+            y="delaminated_length_um",
+            hue="sigma_cr",
+            palette=palette(sigmas, colours, "{:g} kPa".format),
+            style="criterion",
+            style_order=list(criteria),
+            dashes=dict(zip(criteria, CRITERION_DASHES)),
+            estimator=None,
+            sort=False,
+            lw=1.0,
+            ax=ax,
+        )
+        no_growth_note(ax, own)
+        ax.set(xlabel=GAG_CONCENTRATION, ylabel="delaminated length (um)", title=f"(c) growth, {case}")
+        style_legend(ax, "upper left")
+    material_key(fig)
     fit_particle_sizes(fig)
     return fig
 
 
-def fig6(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, cases, criteria, media_outer_um: float):
-    """Figure 6, two pools at one radius (``cases``: low and high separation; ``snapshots``: (case, criterion) ->
-    snapshots): (a, b) the first snapshot and the last one of every criterion; (c) the particles converted between
-    the pools (interior) and away from them (exterior) against pseudo-time."""
+def fig6(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, cases, criteria, laws, media_outer_um: float):
+    """Figure 6, pools at one radius (``cases``: figure 6's sets, e.g. low and high separation), one block per charge
+    law (``laws``; ``snapshots``: (law, case, criterion) -> snapshots): (a, b, ...) the first snapshot and the last
+    one of every criterion, a column per set; (c) the particles converted between the pools (interior) and away from
+    them (exterior) against pseudo-time."""
     _style()
     n_rows = 1 + len(criteria)
-    fig = plt.figure(figsize=(11, 3.4 + 1.25 * n_rows), layout="constrained")
-    gs = fig.add_gridspec(2, 1, height_ratios=[1.25 * n_rows, 3.0])
-    columns = []
-    for j, case in enumerate(cases):
-        letter, first = "ab"[j], snapshots[case, criteria[0]]
-        col = [(first, 0, f"({letter}) {case}, first state: ")]
-        col += [
-            (snapshots[case, c], len(snapshots[case, c]["steps"]) - 1, f"({letter}) {case}, {c}: ") for c in criteria
-        ]
-        columns.append(col)
-    snapshot_grid(fig, gs[0], columns, media_outer_um)
-    bottom = gs[1].subgridspec(1, len(cases))
-    for j, case in enumerate(cases):
-        converted_panel(fig.add_subplot(bottom[j]), growth, summary, case, criteria, f"(c) {case}: converted particles")
+    fig, blocks = law_blocks(laws, [0.3 + 1.25 * n_rows + 3.0] * len(laws))
+    for block, law in zip(blocks, laws):
+        gs = block.add_gridspec(2, 1, height_ratios=[1.25 * n_rows, 3.0])
+        columns = []
+        for j, case in enumerate(cases):
+            letter, first = "abdefghij"[j], snapshots[law, case, criteria[0]]
+            col = [(first, 0, f"({letter}) {case}, first state: ")]
+            col += [
+                (snapshots[law, case, c], len(snapshots[law, case, c]["steps"]) - 1, f"({letter}) {case}, {c}: ")
+                for c in criteria
+            ]
+            columns.append(col)
+        snapshot_grid(block, gs[0], columns, media_outer_um)
+        bottom = gs[1].subgridspec(1, len(cases))
+        g, sm = of_law(growth, law), of_law(summary, law)
+        for j, case in enumerate(cases):
+            converted_panel(block.add_subplot(bottom[j]), g, sm, case, criteria, f"(c) {case}: converted particles")
+    material_key(fig)
     fit_particle_sizes(fig)
     return fig
 
@@ -905,28 +997,37 @@ def fig7(
     case: str,
     sigma: float,
     criteria,
+    laws,
     media_outer_um: float,
     n_snapshots: int = 4,
 ):
-    """Figure 7, two pools offset in radius (``snapshots``: criterion -> snapshots): (a) ``n_snapshots`` snapshots
-    per criterion; (b) the tip radial stress and (c) the converted particles against pseudo-time."""
+    """Figure 7, two pools offset in radius (``case``, figure 7's set), one block per charge law (``laws``;
+    ``snapshots``: (law, criterion) -> snapshots): (a) ``n_snapshots`` snapshots per criterion; (b) the tip radial
+    stress and (c) the converted particles against pseudo-time."""
     _style()
-    fig, lower = criterion_snapshot_figure(snapshots, criteria, n_snapshots, ": ", media_outer_um, 1.15)
-    bottom = lower.subgridspec(1, 2)
-    runs = growth[growth.case == case]
-    ax = fig.add_subplot(bottom[0])
-    notes = {c: f"{c}: {run_note(summary, case=case, criterion=c)}" for c in criteria}
-    tip_stress_panel(
-        ax,
-        runs,
-        "criterion",
-        notes,
-        dict(zip(criteria, CRITERION_COLOURS)),
-        {sigma: "0.45"},
-        f"(b) {case}: tip radial stress, sigma_cr = {sigma:g} kPa",
-        dict(zip(criteria, CRITERION_DASHES)),
-    )
-    no_growth_note(ax, runs)
-    converted_panel(fig.add_subplot(bottom[1]), growth, summary, case, criteria, f"(c) {case}: converted particles")
+    rows = 1.15 * max(len(snapshot_indices(snap, n_snapshots)) for snap in snapshots.values())
+    fig, blocks = law_blocks(laws, [0.3 + rows + 3.0] * len(laws))
+    for block, law in zip(blocks, laws):
+        lower = criterion_snapshots(
+            block, {c: snapshots[law, c] for c in criteria}, criteria, n_snapshots, ": ", media_outer_um, rows
+        )
+        bottom = lower.subgridspec(1, 2)
+        g, sm = of_law(growth, law), of_law(summary, law)
+        runs = g[g.case == case]
+        ax = block.add_subplot(bottom[0])
+        notes = {c: f"{c}: {run_note(sm, case=case, criterion=c)}" for c in criteria}
+        tip_stress_panel(
+            ax,
+            runs,
+            "criterion",
+            notes,
+            dict(zip(criteria, CRITERION_COLOURS)),
+            {sigma: "0.45"},
+            f"(b) {case}: tip radial stress, sigma_cr = {sigma:g} kPa",
+            dict(zip(criteria, CRITERION_DASHES)),
+        )
+        no_growth_note(ax, runs)
+        converted_panel(block.add_subplot(bottom[1]), g, sm, case, criteria, f"(c) {case}: converted particles")
+    material_key(fig)
     fit_particle_sizes(fig)
     return fig

@@ -2,20 +2,23 @@ import re
 
 DE = config["delamination"]
 DE_PRESSURE = f"{DE['pressure_mmHg']:g}"
-# one run per (pool set, sigma_cr, onset criterion): the single pool at every sigma_cr of figure 5, the other sets at
+# the pool sets' roles in the figures (delamination.figures): figure 5's set runs at every critical_stresses_kPa and
+# is the set of the resolution study; figures 6 and 7 show theirs; every set runs and appears in the tables
+DE_FIGURES = DE["figures"]
+FIG5_SET, FIG6_SETS, FIG7_SET = DE_FIGURES["fig5"], DE_FIGURES["fig6"], DE_FIGURES["fig7"]
+# one run per (charge law, pool set, sigma_cr, onset criterion): figure 5's set at every sigma_cr, the other sets at
 # critical_stress_kPa
 DE_RUNS = [
     dict(poolset=case, sigma=f"{sigma:g}", criterion=criterion)
     for case in DE["pool_sets"]
-    for sigma in (DE["critical_stresses_kPa"] if case == "single" else [DE["critical_stress_kPa"]])
+    for sigma in (DE["critical_stresses_kPa"] if case == FIG5_SET else [DE["critical_stress_kPa"]])
     for criterion in DE["criteria"]
 ]
-DE_SETTINGS = {k: v for k, v in DE.items() if k not in ("pool_sets", "critical_stresses_kPa", "convergence")}
+DE_SETTINGS = {k: v for k, v in DE.items() if k not in ("pool_sets", "critical_stresses_kPa", "convergence", "figures")}
 DE_DX = [f"{dx:g}" for dx in DE["convergence"]["dx_um"]]
-DE_GROWTH = [f"results/delamination/runs/{r['poolset']}_{r['sigma']}kPa_{r['criterion']}_growth.csv" for r in DE_RUNS]
-DE_SUMMARIES = [
-    f"results/delamination/runs/{r['poolset']}_{r['sigma']}kPa_{r['criterion']}_summary.csv" for r in DE_RUNS
-]
+DE_RUN = "results/delamination/runs/{law}/{poolset}_{sigma}kPa_{criterion}"
+DE_GROWTH = [f"{DE_RUN}_growth.csv".format(law=law, **r) for law in LAWS for r in DE_RUNS]
+DE_SUMMARIES = [f"{DE_RUN}_summary.csv".format(law=law, **r) for law in LAWS for r in DE_RUNS]
 
 
 wildcard_constraints:
@@ -26,19 +29,20 @@ wildcard_constraints:
 
 
 rule delaminate:
-    """Pool set {poolset} in the passive wall: seeded, swollen, grown by damage at sigma_cr = {sigma} kPa ({criterion})."""
+    """Pool set {poolset} in the passive wall, {law} charge: seeded, swollen, grown by damage at sigma_cr = {sigma} kPa
+    ({criterion})."""
     input:
         code=SPHGAG,
         state=f"results/states/passive_{DE_PRESSURE}mmHg.npz",
     output:
-        growth="results/delamination/runs/{poolset}_{sigma}kPa_{criterion}_growth.csv",
-        summary="results/delamination/runs/{poolset}_{sigma}kPa_{criterion}_summary.csv",
-        snapshots="results/delamination/runs/{poolset}_{sigma}kPa_{criterion}_snapshots.npz",
-        provenance="results/provenance/delaminate_{poolset}_{sigma}kPa_{criterion}.json",
+        growth=f"{DE_RUN}_growth.csv",
+        summary=f"{DE_RUN}_summary.csv",
+        snapshots=f"{DE_RUN}_snapshots.npz",
+        provenance="results/provenance/delaminate_{law}_{poolset}_{sigma}kPa_{criterion}.json",
     log:
-        "logs/delaminate/{poolset}_{sigma}kPa_{criterion}.log",
+        "logs/delaminate/{law}/{poolset}_{sigma}kPa_{criterion}.log",
     benchmark:
-        "results/benchmarks/delaminate_{poolset}_{sigma}kPa_{criterion}.tsv"
+        "results/benchmarks/delaminate_{law}_{poolset}_{sigma}kPa_{criterion}.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -49,13 +53,13 @@ rule delaminate:
         state_slice=dict(PRESSURISED_SLICE, model="passive"),
         pools=lambda wildcards: DE["pool_sets"][wildcards.poolset],
         delamination=DE_SETTINGS,
-        gag=config["gag"],
+        gag=lambda wildcards: GAG[wildcards.law],
     script:
         "../scripts/delaminate.py"
 
 
 rule delamination_growth:
-    """Every delamination run's growth rows in one tidy table."""
+    """Every delamination run's growth rows (every charge law) in one tidy table."""
     input:
         DE_GROWTH,
     output:
@@ -69,7 +73,7 @@ rule delamination_growth:
 
 
 rule delamination_summary:
-    """One row per delamination run."""
+    """One row per delamination run (every charge law)."""
     input:
         DE_SUMMARIES,
     output:
@@ -88,16 +92,17 @@ rule delamination_summary:
 
 
 rule delamination_convergence_dx:
-    """Resolution study of delamination, one particle spacing (dx = {dedx} um): the single pool, every criterion."""
+    """Resolution study of delamination, one particle spacing (dx = {dedx} um), {law} charge: figure 5's pool set,
+    every criterion."""
     input:
         code=SPHGAG,
     output:
-        table="results/delamination/convergence/dx{dedx}.csv",
-        provenance="results/provenance/delamination_convergence_dx{dedx}.json",
+        table="results/delamination/convergence/{law}/dx{dedx}.csv",
+        provenance="results/provenance/delamination_convergence_{law}_dx{dedx}.json",
     log:
-        "logs/delamination_convergence/dx{dedx}.log",
+        "logs/delamination_convergence/{law}/dx{dedx}.log",
     benchmark:
-        "results/benchmarks/delamination_convergence_dx{dedx}.tsv"
+        "results/benchmarks/delamination_convergence_{law}_dx{dedx}.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -108,16 +113,16 @@ rule delamination_convergence_dx:
         bilayer=config["bilayer"],
         numerics=config["numerics"],
         homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
-        delamination=dict(DE_SETTINGS, pool_sets=dict(single=DE["pool_sets"]["single"])),
-        gag=config["gag"],
+        delamination=dict(DE_SETTINGS, pool_sets={FIG5_SET: DE["pool_sets"][FIG5_SET]}),
+        gag=lambda wildcards: GAG[wildcards.law],
     script:
         "../scripts/delamination_convergence.py"
 
 
 rule delamination_convergence:
-    """The delamination resolution study in one tidy table."""
+    """The delamination resolution study (every charge law) in one tidy table."""
     input:
-        expand(rules.delamination_convergence_dx.output.table, dedx=DE_DX),
+        expand(rules.delamination_convergence_dx.output.table, law=LAWS, dedx=DE_DX),
     output:
         report(
             "results/delamination/convergence.csv",

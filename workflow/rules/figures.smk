@@ -109,7 +109,7 @@ rule fig1:
 
 
 rule fig4:
-    """Figure 4: the pools, and the tip radial and top hoop stress against GAG concentration."""
+    """Figure 4: the pools, and the tip radial and top hoop stress against GAG concentration, for every charge law."""
     input:
         code=PLOTS,
         tips=rules.tip_stress.output[0],
@@ -133,6 +133,8 @@ rule fig4:
     params:
         cases=config["swelling"]["cases"],
         probe_length=config["swelling"]["probe_length_um"],
+        laws=LAWS,
+        max_concentration=config["swelling"]["max_concentration_mEq_l"],
     script:
         "../scripts/fig4.py"
 
@@ -163,13 +165,16 @@ rule claims:
         "../envs/sphgag.yaml"
     params:
         cases=config["swelling"]["cases"],
+        max_concentration=config["swelling"]["max_concentration_mEq_l"],
         criteria=config["delamination"]["criteria"],
+        figures=config["delamination"]["figures"],
+        laws=LAWS,
     script:
         "../scripts/claims.py"
 
 
 rule swelling_convergence_figure:
-    """Resolution study of the pool stresses: tip, top and pool volume change against concentration per dx."""
+    """Resolution study of the pool stresses: tip, top and pool volume change against concentration per dx and law."""
     input:
         code=PLOTS,
         table=rules.swelling_convergence.output[0],
@@ -189,25 +194,44 @@ rule swelling_convergence_figure:
     resources:
         runtime=5,
         mem_mb=1000,
+    params:
+        laws=LAWS,
     script:
         "../scripts/swelling_convergence_figure.py"
 
 
-# figures 5-7: the delamination runs (rule delaminate), one column or line style per onset criterion
+# figures 5-7: the delamination runs (rule delaminate) of the pool sets named by delamination.figures, one block per
+# charge law, one column or line style per onset criterion
 DE_MEDIA_OUTER = config["bilayer"]["inner_radius_um"] + config["bilayer"]["media_thickness_um"]
-# figure 5a shows the single pool at critical_stress_kPa if that is one of its sigma_cr, else at the nearest one
+# figure 5a shows its set at critical_stress_kPa if that is one of its sigma_cr, else at the nearest one
 FIG5_SIGMA = min(DE["critical_stresses_kPa"], key=lambda s: abs(s - DE["critical_stress_kPa"]))
-FIG6_CASES = ["low_separation", "high_separation"]
-DE_SNAPSHOTS = "results/delamination/runs/{poolset}_{sigma}kPa_{criterion}_snapshots.npz"  # expanded over pool sets (outer) and criteria (inner)
+DE_SIGMA = f"{DE['critical_stress_kPa']:g}"
+
+
+# the snapshot files of each figure's pool sets, ordered by law, then pool set, then criterion (the order of the keys
+# the figure scripts zip them with)
+DE_FIGURE_SNAPSHOTS = {
+    figure: [
+        f"{DE_RUN}_snapshots.npz".format(law=law, poolset=case, sigma=sigma, criterion=criterion)
+        for law in LAWS
+        for case in poolsets
+        for criterion in DE["criteria"]
+    ]
+    for figure, poolsets, sigma in (
+        ("fig5", [FIG5_SET], f"{FIG5_SIGMA:g}"),
+        ("fig6", FIG6_SETS, DE_SIGMA),
+        ("fig7", [FIG7_SET], DE_SIGMA),
+    )
+}
 
 
 rule fig5:
-    """Figure 5: the single pool's growth (snapshots), its tip radial stress against pseudo-time for every sigma_cr."""
+    """Figure 5: figure 5's pool set grown (snapshots), its tip radial stress against pseudo-time for every sigma_cr."""
     input:
         code=PLOTS,
         growth=rules.delamination_growth.output[0],
         summary=rules.delamination_summary.output[0],
-        snapshots=expand(DE_SNAPSHOTS, poolset=["single"], sigma=f"{FIG5_SIGMA:g}", criterion=DE["criteria"]),
+        snapshots=DE_FIGURE_SNAPSHOTS["fig5"],
     output:
         pdf="figures/fig5.pdf",
         png=report(
@@ -225,22 +249,23 @@ rule fig5:
         runtime=5,
         mem_mb=1000,
     params:
+        case=FIG5_SET,
         sigma=FIG5_SIGMA,
         criteria=DE["criteria"],
+        laws=LAWS,
         media_outer=DE_MEDIA_OUTER,
     script:
         "../scripts/fig5.py"
 
 
 rule fig6:
-    """Figure 6: two pools at one radius, low and high separation: snapshots, interior and exterior growth."""
+    """Figure 6: pools at one radius (figure 6's sets, e.g. low and high separation): snapshots, interior and exterior
+    growth."""
     input:
         code=PLOTS,
         growth=rules.delamination_growth.output[0],
         summary=rules.delamination_summary.output[0],
-        snapshots=expand(
-            DE_SNAPSHOTS, poolset=FIG6_CASES, sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"]
-        ),
+        snapshots=DE_FIGURE_SNAPSHOTS["fig6"],
     output:
         pdf="figures/fig6.pdf",
         png=report(
@@ -258,8 +283,9 @@ rule fig6:
         runtime=5,
         mem_mb=1000,
     params:
-        cases=FIG6_CASES,
+        cases=FIG6_SETS,
         criteria=DE["criteria"],
+        laws=LAWS,
         media_outer=DE_MEDIA_OUTER,
     script:
         "../scripts/fig6.py"
@@ -271,9 +297,7 @@ rule fig7:
         code=PLOTS,
         growth=rules.delamination_growth.output[0],
         summary=rules.delamination_summary.output[0],
-        snapshots=expand(
-            DE_SNAPSHOTS, poolset=["radial_offset"], sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"]
-        ),
+        snapshots=DE_FIGURE_SNAPSHOTS["fig7"],
     output:
         pdf="figures/fig7.pdf",
         png=report(
@@ -291,9 +315,10 @@ rule fig7:
         runtime=5,
         mem_mb=1000,
     params:
-        case="radial_offset",
+        case=FIG7_SET,
         sigma=DE["critical_stress_kPa"],
         criteria=DE["criteria"],
+        laws=LAWS,
         media_outer=DE_MEDIA_OUTER,
     script:
         "../scripts/fig7.py"

@@ -5,8 +5,13 @@ CASES = list(SW["cases"])
 SWELL_PRESSURES = [f"{p:g}" for p in SW["pressures_mmHg"]]
 # what the simulations depend on; probe_length_um only sets where rule pool_stresses measures
 SWELL_SETTINGS = {k: v for k, v in SW.items() if k not in ("cases", "models", "pressures_mmHg", "probe_length_um")}
+# one run per (charge law, model, pool, pressure), each with its own law only
 SWELL_RUNS = expand(
-    "results/swelling/runs/{model}_{case}_{pressure}mmHg.csv", model=SW["models"], case=CASES, pressure=SWELL_PRESSURES
+    "results/swelling/runs/{law}/{model}_{case}_{pressure}mmHg.csv",
+    law=LAWS,
+    model=SW["models"],
+    case=CASES,
+    pressure=SWELL_PRESSURES,
 )
 
 
@@ -16,17 +21,17 @@ wildcard_constraints:
 
 
 rule swell:
-    """One GAG pool ({case}) in the {model} wall at {pressure} mmHg: conversion, then swelling 0-150 mEq/l (states)."""
+    """One GAG pool ({case}) in the {model} wall at {pressure} mmHg, {law} charge: conversion, then swelling (states)."""
     input:
         code=SPHGAG,
         state="results/states/{model}_{pressure}mmHg.npz",
     output:
-        states="results/swelling/states/{model}_{case}_{pressure}mmHg.npz",
-        provenance="results/provenance/swell_{model}_{case}_{pressure}mmHg.json",
+        states="results/swelling/states/{law}/{model}_{case}_{pressure}mmHg.npz",
+        provenance="results/provenance/swell_{law}_{model}_{case}_{pressure}mmHg.json",
     log:
-        "logs/swell/{model}_{case}_{pressure}mmHg.log",
+        "logs/swell/{law}/{model}_{case}_{pressure}mmHg.log",
     benchmark:
-        "results/benchmarks/swell_{model}_{case}_{pressure}mmHg.tsv"
+        "results/benchmarks/swell_{law}_{model}_{case}_{pressure}mmHg.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -37,23 +42,23 @@ rule swell:
         state_slice=lambda wildcards: dict(PRESSURISED_SLICE, model=wildcards.model),
         pool=lambda wildcards: SW["cases"][wildcards.case],
         settings=SWELL_SETTINGS,
-        gag=config["gag"],
+        gag=lambda wildcards: GAG[wildcards.law],
     script:
         "../scripts/swell.py"
 
 
 rule pool_stresses:
-    """The stresses around the pool ({case}, {model} wall, {pressure} mmHg) in every state of its swelling run."""
+    """The stresses around the pool ({case}, {model} wall, {pressure} mmHg, {law} charge) in every state of its run."""
     input:
         code=SPHGAG,
         states=rules.swell.output.states,
     output:
-        table="results/swelling/runs/{model}_{case}_{pressure}mmHg.csv",
-        provenance="results/provenance/pool_stresses_{model}_{case}_{pressure}mmHg.json",
+        table="results/swelling/runs/{law}/{model}_{case}_{pressure}mmHg.csv",
+        provenance="results/provenance/pool_stresses_{law}_{model}_{case}_{pressure}mmHg.json",
     log:
-        "logs/pool_stresses/{model}_{case}_{pressure}mmHg.log",
+        "logs/pool_stresses/{law}/{model}_{case}_{pressure}mmHg.log",
     benchmark:
-        "results/benchmarks/pool_stresses_{model}_{case}_{pressure}mmHg.tsv"
+        "results/benchmarks/pool_stresses_{law}_{model}_{case}_{pressure}mmHg.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -64,14 +69,14 @@ rule pool_stresses:
         state_slice=lambda wildcards: dict(PRESSURISED_SLICE, model=wildcards.model),
         pool=lambda wildcards: SW["cases"][wildcards.case],
         settings=SWELL_SETTINGS,
-        gag=config["gag"],
+        gag=lambda wildcards: GAG[wildcards.law],
         probe_length=SW["probe_length_um"],
     script:
         "../scripts/pool_stresses.py"
 
 
 rule tip_stress:
-    """All swelling runs in one tidy table (figure 4)."""
+    """All swelling runs (every charge law) in one tidy table (figure 4)."""
     input:
         SWELL_RUNS,
     output:
@@ -91,13 +96,13 @@ rule tip_stress:
 
 SC = config["swelling_convergence"]
 CONVERGENCE_DX = [f"{dx:g}" for dx in SC["dx_um"]]
-# what the study's simulations depend on (its measurement adds swelling.probe_length_um)
+# what the study's simulations depend on besides their charge law (params gag; the measurement adds
+# swelling.probe_length_um)
 SC_SIMULATION = dict(
     bilayer=config["bilayer"],
     numerics=config["numerics"],
     homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
     settings=SWELL_SETTINGS,
-    gag=config["gag"],
     cases={c: SW["cases"][c] for c in SC["cases"]},
     pressure=SC["pressure_mmHg"],
 )
@@ -108,16 +113,16 @@ wildcard_constraints:
 
 
 rule swelling_convergence_dx:
-    """Resolution study, one particle spacing (dx = {dx} um): passive wall, every study pool swollen (states)."""
+    """Resolution study, one particle spacing (dx = {dx} um), {law} charge: passive wall, every study pool swollen."""
     input:
         code=SPHGAG,
     output:
-        states="results/swelling/convergence/states/dx{dx}.npz",
-        provenance="results/provenance/swelling_convergence_dx{dx}.json",
+        states="results/swelling/convergence/states/{law}/dx{dx}.npz",
+        provenance="results/provenance/swelling_convergence_{law}_dx{dx}.json",
     log:
-        "logs/swelling_convergence/dx{dx}.log",
+        "logs/swelling_convergence/{law}/dx{dx}.log",
     benchmark:
-        "results/benchmarks/swelling_convergence_dx{dx}.tsv"
+        "results/benchmarks/swelling_convergence_{law}_dx{dx}.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -126,22 +131,23 @@ rule swelling_convergence_dx:
         mem_mb=2500,
     params:
         **SC_SIMULATION,
+        gag=lambda wildcards: GAG[wildcards.law],
     script:
         "../scripts/swelling_convergence.py"
 
 
 rule swelling_convergence_stresses:
-    """Resolution study, one particle spacing (dx = {dx} um): the pool stresses of the saved states."""
+    """Resolution study, one particle spacing (dx = {dx} um), {law} charge: the pool stresses of the saved states."""
     input:
         code=SPHGAG,
         states=rules.swelling_convergence_dx.output.states,
     output:
-        table="results/swelling/convergence/dx{dx}.csv",
-        provenance="results/provenance/swelling_convergence_stresses_dx{dx}.json",
+        table="results/swelling/convergence/{law}/dx{dx}.csv",
+        provenance="results/provenance/swelling_convergence_stresses_{law}_dx{dx}.json",
     log:
-        "logs/swelling_convergence/stresses_dx{dx}.log",
+        "logs/swelling_convergence/{law}/stresses_dx{dx}.log",
     benchmark:
-        "results/benchmarks/swelling_convergence_stresses_dx{dx}.tsv"
+        "results/benchmarks/swelling_convergence_stresses_{law}_dx{dx}.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -150,15 +156,16 @@ rule swelling_convergence_stresses:
         mem_mb=1500,
     params:
         **SC_SIMULATION,
+        gag=lambda wildcards: GAG[wildcards.law],
         probe_length=SW["probe_length_um"],
     script:
         "../scripts/swelling_convergence_stresses.py"
 
 
 rule swelling_convergence:
-    """The resolution study of the pool stresses in one tidy table."""
+    """The resolution study of the pool stresses (every charge law) in one tidy table."""
     input:
-        expand(rules.swelling_convergence_stresses.output.table, dx=CONVERGENCE_DX),
+        expand(rules.swelling_convergence_stresses.output.table, law=LAWS, dx=CONVERGENCE_DX),
     output:
         report(
             "results/swelling/convergence.csv",

@@ -1,4 +1,7 @@
-"""Rule claims: evaluate the paper's claims from the CSV tables and write a table and a Markdown page."""
+"""Rule claims: evaluate the paper's claims from the CSV tables and write a table and a Markdown page.
+
+The pool claims (figure 4, delamination) are evaluated once per charge law (``params.laws``), the delamination
+claims on the pool sets of their figures (``params.figures``, i.e. ``delamination.figures``)."""
 
 import pandas as pd
 
@@ -6,16 +9,26 @@ from sphgag import claims, runlog
 
 sm = snakemake  # noqa: F821
 with runlog.run("claims", sm.log[0]) as log:
+    p = sm.params
     t = {
         k: pd.read_csv(sm.input[k])
         for k in ("mean", "bilayer", "activation", "layers", "transmural", "tips", "growth", "delamination")
     }
     found = claims.calibration_claims(t["mean"], t["bilayer"], t["activation"], t["layers"], t["transmural"])
-    found += claims.swelling_claims(t["tips"], sm.params.cases)
-    found += claims.delamination_claims(t["growth"], t["delamination"], sm.params.criteria)
+    found += claims.by_law(
+        p.laws, lambda law: claims.swelling_claims(claims.of_law(t["tips"], law), p.cases, p.max_concentration)
+    )
+    found += claims.by_law(
+        p.laws,
+        lambda law: claims.delamination_claims(
+            claims.of_law(t["growth"], law), claims.of_law(t["delamination"], law), p.criteria, p.figures
+        ),
+    )
     df = claims.table(found)
     df.to_csv(sm.output.table, index=False)
     with open(sm.output.markdown, "w") as fh:
         fh.write(claims.markdown(df))
     for c in found:
-        log.info("[claims] %s holds: %s -- %s (ours: %s)", c.claim_id, c.holds, c.statement, c.our_value)
+        log.info(
+            "[claims] %s (%s) holds: %s -- %s (ours: %s)", c.claim_id, c.charge_law, c.holds, c.statement, c.our_value
+        )

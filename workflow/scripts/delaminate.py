@@ -1,23 +1,25 @@
-"""Rule delaminate: seed one pool set in the passive wall, swell it and let damage grow it (figures 5-7)."""
+"""Rule delaminate: seed one pool set in the passive wall, swell it under one charge law and let damage grow it
+(figures 5-7)."""
 
 import time
 
 import numba
 
-from sphgag import artery, delamination, provenance, runlog, solver, state
+from sphgag import artery, delamination, interim, provenance, runlog, solver, state
 
 sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)
 started = time.time()
 w = sm.wildcards
-run = f"delaminate_{w.poolset}_{w.sigma}kPa_{w.criterion}"
+run = f"delaminate_{w.law}_{w.poolset}_{w.sigma}kPa_{w.criterion}"
 with runlog.run(run, sm.log[0]) as log:
     cfg, de = sm.params.state_slice, sm.params.delamination
     model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=run)
     saved = state.load(sm.input.state, expected_params=cfg)
     settings = delamination.Settings.from_config(de, float(w.sigma), w.criterion)
     sectors = [artery.pool_sector(s) for s in sm.params.pools]
-    result = delamination.grow(
+    # a concentration step without equilibrium ends the run there (stop in the summary; interim, sphgag.interim)
+    result = interim.grow(
         model,
         solver.State(saved.load, saved.x, None, None),
         sectors,
@@ -28,9 +30,13 @@ with runlog.run(run, sm.log[0]) as log:
         run=run,
     )
     growth, summary = delamination.labelled(result, w.poolset, settings, cfg["bilayer"]["dx_um"])
+    growth.insert(0, "charge_law", sm.params.gag["charge_law"])
+    summary.insert(0, "charge_law", sm.params.gag["charge_law"])
     growth.to_csv(sm.output.growth, index=False)
     summary.to_csv(sm.output.summary, index=False)
-    delamination.save_snapshots(sm.output.snapshots, model, result.snapshots, dict(cfg, delamination=de))
+    delamination.save_snapshots(
+        sm.output.snapshots, model, result.snapshots, dict(cfg, delamination=de, gag=sm.params.gag)
+    )
     s = summary.iloc[0]
     log.info(
         "[%s] stopped (%s) after %d passes: onset at %s mEq/l, delaminated %.1f um, merged %s, dissipated "

@@ -1,29 +1,32 @@
-"""Rule delamination_convergence_dx: the single pool grown at one particle spacing, every onset criterion."""
+"""Rule delamination_convergence_dx: figure 5's pool set grown at one particle spacing under one charge law, every
+onset criterion."""
 
 import time
 
 import numba
 
-from sphgag import delamination, provenance, runlog
+from sphgag import interim, provenance, runlog
 
 sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)
 started = time.time()
-run = f"delamination_convergence_dx{sm.wildcards.dedx}"
+run = f"delamination_convergence_{sm.wildcards.law}_dx{sm.wildcards.dedx}"
 with runlog.run(run, sm.log[0]) as log:
     p = sm.params
-    table = delamination.convergence_study(
+    # an onset criterion whose concentration ramp has no equilibrium ends there (stop; interim, sphgag.interim)
+    table = interim.convergence_study(
         float(sm.wildcards.dedx), p.bilayer, p.numerics, p.homeostasis, p.delamination, p.gag, name=run
     )
+    table.insert(0, "charge_law", p.gag["charge_law"])
     table.to_csv(sm.output.table, index=False)
     for row in table.itertuples():
         log.info(
-            "[%s] %s onset: at %s mEq/l, delaminated %.1f um at %g mEq/l",
+            "[%s] %s onset: at %s mEq/l, delaminated %.1f um, stop: %s",
             run,
             row.criterion,
             row.onset_concentration_mEq_l,
             row.final_length_um,
-            p.delamination["max_concentration_mEq_l"],
+            row.stop,
         )
     provenance.write_record(
         sm.output.provenance,

@@ -1,4 +1,4 @@
-"""Rule fig4: the four pools and the stresses around them against GAG concentration (figure 4)."""
+"""Rule fig4: the four pools and the stresses around them against GAG concentration, every charge law (figure 4)."""
 
 import pandas as pd
 
@@ -8,5 +8,6 @@ sm = snakemake  # noqa: F821
 with runlog.run("fig4", sm.log[0]):
     tips = pd.read_csv(sm.input.tips)
     plots.finite_or_raise(tips, ["tip_radial_stress_kPa", "top_circ_stress_kPa", "concentration_mEq_l"], "fig4")
-    fig = plots.fig4(tips, pd.read_csv(sm.input.particles), sm.params.cases, sm.params.probe_length)
+    p = sm.params
+    fig = plots.fig4(tips, pd.read_csv(sm.input.particles), p.cases, p.probe_length, p.laws, p.max_concentration)
     plots.save(fig, [sm.output.pdf, sm.output.png], "Figure 4 (GAG pool swelling), sphgag")

@@ -1,4 +1,4 @@
-"""Rule fig6: two pools at one radius, low and high separation, grown by damage (figure 6)."""
+"""Rule fig6: pools at one radius (e.g. low and high separation) grown by damage, every charge law (figure 6)."""
 
 import pandas as pd
 
@@ -6,13 +6,14 @@ from sphgag import plots, runlog
 
 sm = snakemake  # noqa: F821
 with runlog.run("fig6", sm.log[0]):
+    p = sm.params
     growth, summary = pd.read_csv(sm.input.growth), pd.read_csv(sm.input.summary)
     plots.finite_or_raise(
-        growth[growth.case.isin(sm.params.cases)],
+        growth[growth.case.isin(p.cases)],
         ["concentration_mEq_l", "converted_interior", "converted_exterior"],
         "fig6",
     )
-    keys = [(case, c) for case in sm.params.cases for c in sm.params.criteria]  # the order of the rule's input
+    keys = [(law, case, c) for law in p.laws for case in p.cases for c in p.criteria]  # the order of the rule's input
     snapshots = {key: plots.read_snapshots(path) for key, path in zip(keys, sm.input.snapshots)}
-    fig = plots.fig6(growth, summary, snapshots, sm.params.cases, sm.params.criteria, sm.params.media_outer)
+    fig = plots.fig6(growth, summary, snapshots, p.cases, p.criteria, p.laws, p.media_outer)
     plots.save(fig, [sm.output.pdf, sm.output.png], "Figure 6 (coalescence of two GAG pools at one radius), sphgag")

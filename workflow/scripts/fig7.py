@@ -1,4 +1,4 @@
-"""Rule fig7: two pools offset in radius, grown by damage (figure 7)."""
+"""Rule fig7: two pools offset in radius, grown by damage, every charge law (figure 7)."""
 
 import pandas as pd
 
@@ -6,14 +6,14 @@ from sphgag import plots, runlog
 
 sm = snakemake  # noqa: F821
 with runlog.run("fig7", sm.log[0]):
+    p = sm.params
     growth, summary = pd.read_csv(sm.input.growth), pd.read_csv(sm.input.summary)
     plots.finite_or_raise(
-        growth[growth.case == sm.params.case],
+        growth[growth.case == p.case],
         ["concentration_mEq_l", "converted_interior", "converted_exterior"],
         "fig7",
     )
-    snapshots = {c: plots.read_snapshots(path) for c, path in zip(sm.params.criteria, sm.input.snapshots)}
-    fig = plots.fig7(
-        growth, summary, snapshots, sm.params.case, sm.params.sigma, sm.params.criteria, sm.params.media_outer
-    )
+    keys = [(law, c) for law in p.laws for c in p.criteria]  # the order of the rule's input
+    snapshots = {key: plots.read_snapshots(path) for key, path in zip(keys, sm.input.snapshots)}
+    fig = plots.fig7(growth, summary, snapshots, p.case, p.sigma, p.criteria, p.laws, p.media_outer)
     plots.save(fig, [sm.output.pdf, sm.output.png], "Figure 7 (coalescence of two radially offset GAG pools), sphgag")

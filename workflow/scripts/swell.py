@@ -1,33 +1,36 @@
-"""Rule swell: convert one medial pool to GAG and swell it at fixed lumen pressure (figure 4); saves the states."""
+"""Rule swell: convert one medial pool to GAG and swell it at fixed lumen pressure under one charge law (figure 4);
+saves the states."""
 
 import time
 
 import numba
 
-from sphgag import artery, protocols, provenance, runlog, solver, state
+from sphgag import artery, interim, provenance, runlog, solver, state
 
 sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)
 started = time.time()
 w = sm.wildcards
-run = f"swell_{w.model}_{w.case}_{w.pressure}mmHg"
+run = f"swell_{w.law}_{w.model}_{w.case}_{w.pressure}mmHg"
 with runlog.run(run, sm.log[0]) as log:
     cfg = sm.params.state_slice
     pool = artery.pool_sector(sm.params.pool)
     model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=run, pool=pool, gag=sm.params.gag)
     saved = state.load(sm.input.state, expected_params=cfg)
-    states = protocols.swell_pool(
+    # the states up to the last converged concentration, and why the ramp ended there (interim, sphgag.interim)
+    states, end = interim.swell_pool(
         model, solver.State(saved.load, saved.x, None, None), cfg["numerics"], sm.params.settings
     )
     params = dict(state=cfg, pool=sm.params.pool, settings=sm.params.settings, gag=sm.params.gag)
     state.save_series(sm.output.states, [(s.x, s.load, s.info(), None) for s in states], params)
     max_residual = max(s.residual for s in states)
     log.info(
-        "[%s] %d pool particles; %d converged states up to %g mEq/l, largest residual %.2e",
+        "[%s] %d pool particles; %d converged states up to %g mEq/l (end: %s), largest residual %.2e",
         run,
         model.props.converting.size,
         len(states),
         states[-1].concentration,
+        end,
         max_residual,
     )
     provenance.write_record(
@@ -35,6 +38,6 @@ with runlog.run(run, sm.log[0]) as log:
         rule="swell",
         params=params,
         outputs=list(sm.output),
-        summary=dict(max_residual=max_residual),
+        summary=dict(max_residual=max_residual, end=end, last_concentration_mEq_l=states[-1].concentration),
         started=started,
     )

@@ -4,15 +4,16 @@ import time
 
 import numba
 
-from sphgag import convergence, provenance, runlog, state
+from sphgag import interim, provenance, runlog, state
 
 sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)
 started = time.time()
-run = f"swelling_convergence_dx{sm.wildcards.dx}"
+run = f"swelling_convergence_{sm.wildcards.law}_dx{sm.wildcards.dx}"
 with runlog.run(run, sm.log[0]) as log:
     p = sm.params
-    states = convergence.swell_cases(
+    # each case's states up to its last converged concentration, and why its ramp ended (interim, sphgag.interim)
+    states, ends = interim.swell_cases(
         float(sm.wildcards.dx), p.bilayer, p.numerics, p.homeostasis, p.settings, p.gag, p.cases, p.pressure, name=run
     )
     params = dict(dx=sm.wildcards.dx, **dict(p))
@@ -20,11 +21,13 @@ with runlog.run(run, sm.log[0]) as log:
     state.save_series(sm.output.states, series, params)
     max_residual = max(s.residual for ss in states.values() for s in ss)
     log.info("[%s] %d converged states of %d pools, largest residual %.2e", run, len(series), len(states), max_residual)
+    for case, end in ends.items():
+        log.info("[%s] case %s: up to %g mEq/l (end: %s)", run, case, states[case][-1].concentration, end)
     provenance.write_record(
         sm.output.provenance,
         rule="swelling_convergence",
         params=params,
         outputs=list(sm.output),
-        summary=dict(max_residual=max_residual),
+        summary=dict(max_residual=max_residual, ends=ends),
         started=started,
     )

@@ -9,7 +9,7 @@ with runlog.run("swelling_convergence_figure", sm.log[0]):
     table = pd.read_csv(sm.input.table)
     plots.finite_or_raise(table, ["tip_radial_stress_kPa", "pool_volume_change"], "swelling_convergence")
     plots.save(
-        plots.swelling_convergence(table),
+        plots.swelling_convergence(table, sm.params.laws),
         [sm.output.pdf, sm.output.png],
         "Resolution study of the GAG-pool stresses, sphgag",
     )

@@ -10,7 +10,7 @@ from sphgag import convergence, protocols, provenance, runlog, state
 sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)
 started = time.time()
-run = f"swelling_convergence_stresses_dx{sm.wildcards.dx}"
+run = f"swelling_convergence_stresses_{sm.wildcards.law}_dx{sm.wildcards.dx}"
 with runlog.run(run, sm.log[0]) as log:
     p = sm.params
     simulation = {k: v for k, v in dict(p).items() if k != "probe_length"}
@@ -18,6 +18,7 @@ with runlog.run(run, sm.log[0]) as log:
     states = {case: [protocols.PoolState.from_saved(s) for s in saved if s.info["case"] == case] for case in p.cases}
     dx = float(sm.wildcards.dx)
     table = convergence.measure(dx, p.bilayer, p.numerics, p.gag, p.cases, states, p.probe_length, name=run)
+    table.insert(0, "charge_law", p.gag["charge_law"])
     table.to_csv(sm.output.table, index=False)
     for case, g in table.groupby("case", sort=False):
         last = g.iloc[-1]

@@ -1,0 +1,97 @@
+"""The claims table: pool claims once per charge law, runs that end below the requested concentration, pool sets by
+their roles (synthetic tables; the pipeline test runs the real ones)."""
+
+import numpy as np
+import pandas as pd
+
+from sphgag import claims
+
+CASES = {"I": {"angular_extent_deg": 3.0}, "IV": {"angular_extent_deg": 16.0}}
+
+
+def tips_table(law: str, last: dict | None = None, levels=(0.0, 50.0, 100.0, 150.0)) -> pd.DataFrame:
+    """A tip_stress.csv of one law: every (model, case, pressure) run, an intact row and one converted row per level;
+    ``last`` cuts the runs named by (model, case, pressure) at that concentration."""
+    rows = []
+    for model in ("passive", "active"):
+        for case, size in (("I", 1.0), ("IV", 2.0)):
+            for pressure in (103.0, 200.0):
+                rows.append(
+                    dict(model=model, case=case, pressure_mmHg=pressure, stage="intact", concentration_mEq_l=0.0)
+                    | dict(tip_radial_stress_kPa=0.0, top_circ_stress_kPa=100.0)
+                )
+                end = (last or {}).get((model, case, pressure), levels[-1])
+                for c in levels:
+                    if c > end:
+                        break
+                    tip = -50.0 * size + c * (1.0 if law == "prescribed" else 0.1) - (pressure - 103.0) / 100.0
+                    rows.append(
+                        dict(model=model, case=case, pressure_mmHg=pressure, stage="converted", concentration_mEq_l=c)
+                        | dict(tip_radial_stress_kPa=tip, top_circ_stress_kPa=200.0 * size + c)
+                    )
+    return pd.DataFrame(rows).assign(charge_law=law)
+
+
+def test_every_run_at_the_requested_concentration_reads_as_before():
+    found = {c.claim_id: c for c in claims.swelling_claims(tips_table("conserved"), CASES, 150.0)}
+    assert found["C8"].our_value.startswith("at 150 mEq/l: ")
+    assert "tip radial stress at 150 mEq/l decreases" in found["C9"].our_value
+
+
+def test_a_run_that_ended_early_is_read_at_its_last_converged_state():
+    tips = tips_table("prescribed", last={("passive", "IV", 103.0): 100.0})
+    top = claims.last_converged(tips)
+    assert len(top) == 8 and sorted(top.concentration_mEq_l.unique()) == [100.0, 150.0]
+    found = {c.claim_id: c for c in claims.swelling_claims(tips, CASES, 150.0)}
+    assert "at each run's last converged state (100-150 mEq/l; 1/8 runs found no equilibrium up to 150)" in (
+        found["C8"].our_value
+    )
+    # the truncated run's own last state counts: its tip stress at 100 mEq/l, not a missing value
+    assert f"{-100.0 + 100.0:.0f} to" in found["C8"].our_value
+    assert found["C10"].holds in ("yes", "no") and np.isfinite(float(found["C10"].our_value.split()[4]))
+
+
+def test_pool_claims_are_one_row_per_claim_and_law():
+    tips = pd.concat([tips_table("prescribed"), tips_table("conserved")], ignore_index=True)
+    found = claims.by_law(
+        ["prescribed", "conserved"], lambda law: claims.swelling_claims(claims.of_law(tips, law), CASES, 150.0)
+    )
+    table = claims.table(found)
+    assert list(table.columns[:2]) == ["claim_id", "charge_law"]
+    assert list(table.claim_id[:4]) == ["C6", "C6", "C7", "C7"]
+    assert list(table.charge_law[:4]) == ["prescribed", "conserved"] * 2
+    c8 = table[table.claim_id == "C8"].set_index("charge_law")
+    assert c8.loc["prescribed", "our_value"] != c8.loc["conserved", "our_value"]  # each law its own numbers
+    assert set(c8.criterion) == {c8.criterion.iloc[0]}  # one criterion for both
+    md = claims.markdown(table)
+    assert "| C8 | prescribed |" in md and "| C8 | conserved |" in md
+
+
+def delamination_tables(names: dict):
+    """growth.csv and summary.csv of one law with the pool sets named ``names`` (role -> name)."""
+    growth, summary = [], []
+    runs = [(names["fig5"], s) for s in (30.0, 60.0)] + [(n, 40.0) for n in names["fig6"]] + [(names["fig7"], 40.0)]
+    for case, sigma in runs:
+        for step in range(3):
+            growth.append(
+                dict(case=case, sigma_cr_kPa=sigma, criterion="averaged", step=step, pseudo_time=step)
+                | dict(concentration_mEq_l=50.0 * step, converted_particles=step, converted_interior=step)
+                | dict(converted_exterior=0, tip_radial_stress_kPa=10.0 * step)
+            )
+        summary.append(
+            dict(case=case, sigma_cr_kPa=sigma, criterion="averaged", merged=case == names["fig7"], merge_step=2.0)
+            | dict(final_length_um=2.0, growth_rate_um_per_pseudo_time=1.0, growth_rate_um_per_mEq_l=0.1)
+        )
+    return pd.DataFrame(growth), pd.DataFrame(summary)
+
+
+def test_delamination_claims_follow_the_pool_sets_roles():
+    """The same runs under other names give the same claims when the roles name them."""
+    default = dict(fig5="single", fig6=["low_separation", "high_separation"], fig7="radial_offset")
+    renamed = dict(fig5="alone", fig6=["pair_2deg", "high_separation"], fig7="offset")
+    a = claims.delamination_claims(*delamination_tables(default), ["averaged"], default)
+    b = claims.delamination_claims(*delamination_tables(renamed), ["averaged"], renamed)
+    assert [c.holds for c in a] == [c.holds for c in b]
+    assert [c.our_value.replace("pair_2deg", "low_separation") for c in b] == [c.our_value for c in a]
+    assert {c.claim_id: c.holds for c in a}["C17"] == "yes"  # figure 7's set, found by its role
+    assert "2 rupture passes" in a[0].our_value  # figure 5's set, found by its role
