@@ -83,7 +83,7 @@ def main():
     numba.set_num_threads(1)
     cfg = config.validate(config.load_yaml(args.config), ROOT / "config" / "schema.yaml")
     numerics, de = cfg["numerics"], cfg["delamination"]
-    gag = dict(cfg["gag"], fixed_charge_dilution=False)
+    gag = materials.law_gag(cfg["gag"], "prescribed")
     p = dict(cfg["bilayer"], dx_um=args.dx)
     wall = artery.bilayer_model(p, numerics, name="wall")
     start = protocols.pressurise(

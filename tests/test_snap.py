@@ -8,12 +8,13 @@ import pytest
 from sphgag import artery, delamination, geometry, pool_volume, protocols, snap, solver
 from sphgag.history import DAMAGED, HistoryMaterial
 
+from .conftest import law_gag
 from .test_delamination import mirror_map
 
 
 def prescribed(ci_config) -> dict:
     """The ``gag`` parameters of one run under the paper's law: Pi(c) prescribed (eqs. 2.25-2.27)."""
-    return dict(ci_config["gag"], fixed_charge_dilution=False)
+    return law_gag(ci_config, "prescribed")
 
 
 # The single pool at 45 deg under the prescribed law, particle onset at 1 kPa, rupture after +0.5 % radial stretch:
@@ -94,7 +95,7 @@ def test_a_snap_lands_on_the_equilibrium_the_quasi_static_path_reaches_where_tha
     bisected quasi-static path gives."""
     numerics = ci_config["numerics"]
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
-    model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=ci_config["gag"])
+    model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=law_gag(ci_config))
     opts = protocols.solver_options(numerics)
     seeded = protocols.swelling_load(ci_wall.load, 1.0, 0.0)
     conv = solver.follow_path(model, ci_wall.x, protocols.swelling_load(ci_wall.load, 0.0, 0.0), [seeded], **opts)[-1]
@@ -110,7 +111,7 @@ def test_no_stable_state_ends_a_snap_with_its_reason(ci_config, ci_wall):
     """A snap that cannot come to rest within its budget is reported, not returned as a state."""
     numerics = ci_config["numerics"]
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
-    model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=ci_config["gag"])
+    model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=law_gag(ci_config))
     load = protocols.swelling_load(ci_wall.load, 1.0, 150.0)
     with pytest.raises(snap.NoStableState, match="no equilibrium in 2 steps"):
         snap.follow(model, ci_wall.x, load, max_steps=2, **protocols.solver_options(numerics))

@@ -5,7 +5,7 @@ import time
 
 import numba
 
-from sphgag import artery, delamination, interim, provenance, runlog, solver, state
+from sphgag import artery, delamination, provenance, runlog, solver, state
 
 sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)
@@ -18,8 +18,7 @@ with runlog.run(run, sm.log[0]) as log:
     saved = state.load(sm.input.state, expected_params=cfg)
     settings = delamination.Settings.from_config(de, float(w.sigma), w.criterion)
     sectors = [artery.pool_sector(s) for s in sm.params.pools]
-    # a concentration step without equilibrium ends the run there (stop in the summary; interim, sphgag.interim)
-    result = interim.grow(
+    result = delamination.grow(
         model,
         solver.State(saved.load, saved.x, None, None),
         sectors,

@@ -5,7 +5,7 @@ import time
 
 import numba
 
-from sphgag import interim, provenance, runlog
+from sphgag import delamination, provenance, runlog
 
 sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)
@@ -13,8 +13,7 @@ started = time.time()
 run = f"delamination_convergence_{sm.wildcards.law}_dx{sm.wildcards.dedx}"
 with runlog.run(run, sm.log[0]) as log:
     p = sm.params
-    # an onset criterion whose concentration ramp has no equilibrium ends there (stop; interim, sphgag.interim)
-    table = interim.convergence_study(
+    table = delamination.convergence_study(
         float(sm.wildcards.dedx), p.bilayer, p.numerics, p.homeostasis, p.delamination, p.gag, name=run
     )
     table.insert(0, "charge_law", p.gag["charge_law"])

@@ -5,7 +5,7 @@ import time
 
 import numba
 
-from sphgag import artery, interim, provenance, runlog, solver, state
+from sphgag import artery, protocols, provenance, runlog, solver, state
 
 sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)
@@ -17,10 +17,11 @@ with runlog.run(run, sm.log[0]) as log:
     pool = artery.pool_sector(sm.params.pool)
     model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=run, pool=pool, gag=sm.params.gag)
     saved = state.load(sm.input.state, expected_params=cfg)
-    # the states up to the last converged concentration, and why the ramp ended there (interim, sphgag.interim)
-    states, end = interim.swell_pool(
+    # every converged state up to the end of the path (each records how the path ended: protocols.PoolState)
+    states = protocols.swell_pool(
         model, solver.State(saved.load, saved.x, None, None), cfg["numerics"], sm.params.settings
     )
+    end = states[-1].path_end + (f" ({states[-1].end_reason})" if states[-1].end_reason else "")
     params = dict(state=cfg, pool=sm.params.pool, settings=sm.params.settings, gag=sm.params.gag)
     state.save_series(sm.output.states, [(s.x, s.load, s.info(), None) for s in states], params)
     max_residual = max(s.residual for s in states)

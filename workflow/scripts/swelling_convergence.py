@@ -4,7 +4,7 @@ import time
 
 import numba
 
-from sphgag import interim, provenance, runlog, state
+from sphgag import convergence, provenance, runlog, state
 
 sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)
@@ -12,10 +12,11 @@ started = time.time()
 run = f"swelling_convergence_{sm.wildcards.law}_dx{sm.wildcards.dx}"
 with runlog.run(run, sm.log[0]) as log:
     p = sm.params
-    # each case's states up to its last converged concentration, and why its ramp ended (interim, sphgag.interim)
-    states, ends = interim.swell_cases(
+    # each case's converged states up to the end of its path (each records how the path ended)
+    states = convergence.swell_cases(
         float(sm.wildcards.dx), p.bilayer, p.numerics, p.homeostasis, p.settings, p.gag, p.cases, p.pressure, name=run
     )
+    ends = {case: ss[-1].path_end for case, ss in states.items()}
     params = dict(dx=sm.wildcards.dx, **dict(p))
     series = [(s.x, s.load, dict(s.info(), case=case), None) for case, ss in states.items() for s in ss]
     state.save_series(sm.output.states, series, params)
