@@ -41,11 +41,12 @@ from sphgag.history import HistoryMaterial  # noqa: E402
 from sphgag.model import Model  # noqa: E402
 
 
-def stiffness_modes(model, ev, shifts=(-3000.0, -300.0, 0.0), k=3):
-    """Eigenvalues of K = -d(f_int + f_ext)/dx nearest each shift: value, participation, hourglass share."""
-    K = -model.block_matrix(model.jacobian(ev)).tocsc()
+def stiffness_modes(model, ev, shifts=(-3000.0, -300.0, 0.0), k=3, hourglass=True):
+    """Eigenvalues of K = -d(f_int + f_ext)/dx nearest each shift: value, participation, hourglass share (with
+    ``hourglass=False``: of the stiffness without the hourglass term, alpha = 0)."""
     no_hg = Model(model.name + "_no_hg", model.layout, model.nb, model.props, 0.0)
     K0 = -no_hg.block_matrix(no_hg.jacobian(no_hg.evaluate(ev.x, ev.load))).tocsc()
+    K = -model.block_matrix(model.jacobian(ev)).tocsc() if hourglass else K0
     modes = {}
     for shift in shifts:
         vals, vecs = spla.eigs(K, k=k, sigma=shift - 1e-3, which="LM")
@@ -164,6 +165,7 @@ def main():
         pool_J_min=float(J[new.gag].min()),
         pool_J_max=float(J[new.gag].max()),
         modes=stiffness_modes(model, ev),
+        elastic_modes=stiffness_modes(model, ev, shifts=(-30.0, 0.0), hourglass=False),
     )
     dest = ROOT / "benchmarks" / "out"
     dest.mkdir(exist_ok=True)

@@ -747,7 +747,9 @@ def run_note(summary: pd.DataFrame, **labels) -> str:
     else:
         note = f"damage onset at {s.onset_concentration_mEq_l:g} mEq/l, {s.final_length_um:.3g} um delaminated"
         note += f", merged at pass {s.merge_step:g}" if bool(s.merged) else ""
-    return note + (f"\n    stop: {s.stop}" if s.stop != "arrested" else "")  # (a second line in a legend)
+    note += f", {s.snaps:g} snap{'s' if s.snaps != 1 else ''}" if s.get("snaps", 0) else ""
+    # the stop's kind, without its details (those are in summary.csv), on a second line of the legend
+    return note + (f"\n    stop: {s.stop.split(' (')[0]}" if s.stop != "arrested" else "")
 
 
 def no_growth_note(ax, runs: pd.DataFrame):
@@ -820,7 +822,8 @@ def tip_stress_panel(
 ):
     """The largest onset-measure radial stress in front of the pools against pseudo-time (the sawtooth of figure
     5b), seaborn: one line per value of ``runs[by]`` (legend ``labels``, ``colours``, optionally ``dashes``), a
-    cross after every pass in which particles were converted; a dashed line at each sigma_cr of ``sigma_colours``."""
+    cross after every pass in which particles were converted, a ring around every state reached through a snap; a
+    dashed line at each sigma_cr of ``sigma_colours``."""
     runs = runs.sort_values("step").assign(run=runs[by].map(labels))
     lines = dict(hue="run", hue_order=list(labels.values()), palette={labels[k]: colours[k] for k in labels})
     style = {} if dashes is None else dict(style="run", dashes={labels[k]: dashes[k] for k in labels})
@@ -829,6 +832,14 @@ def tip_stress_panel(
     sns.scatterplot(
         runs[burst], x="step", y="tip_radial_stress_kPa", marker="x", s=16, linewidth=1.0, legend=False, ax=ax, **lines
     )
+    snapped = runs[runs.snap.astype(bool)] if "snap" in runs else runs.iloc[:0]
+    rings = [
+        ax.scatter(run.step, run.tip_radial_stress_kPa, s=42, facecolors="none", edgecolors=colours[key], lw=0.9)
+        for key, run in snapped.groupby(by, sort=False)
+    ]  # a state reached through a snap (sphgag.snap): an open ring around its point
+    if rings and ax.get_legend() is not None:
+        old = ax.get_legend()
+        ax.legend(list(old.legend_handles) + rings[:1], [t.get_text() for t in old.texts] + ["reached through a snap"])
     for sigma, colour in sigma_colours.items():
         ax.axhline(sigma, color=colour, ls=(0, (4, 3)), lw=0.8)
         ax.text(
