@@ -403,9 +403,7 @@ class GrowthRun:
         if load == self.state.load:
             return
         try:
-            state = solver.follow_path(
-                self.model, self.state.x, self.state.load, [load], **solver.with_fallback(self.opts)
-            )[-1]
+            state = solver.follow_path(self.model, self.state.x, self.state.load, [load], **self.opts)[-1]
         except solver.NotConverged as exc:
             state = self.follow_snap(load, f"c = {self.concentration:g} -> {c:g} mEq/l", exc)
         self._accept(state)

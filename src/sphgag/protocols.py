@@ -475,7 +475,7 @@ def swell_pool(model: Model, start: solver.State, numerics: dict, sw: dict) -> l
     for k, c in enumerate(cs):
         try:
             target = [swelling_load(base, 1.0, c)]
-            last = solver.follow_path(model, last.x, last.load, target, **solver.with_fallback(opts))[-1]
+            last = solver.follow_path(model, last.x, last.load, target, **opts)[-1]
         except solver.NotConverged as exc:
             log.info("[%s] c = %g mEq/l: %s; the pool's volume becomes the control", run, c, exc.reason)
             path, reached = pool_volume.continue_path(model, last, model.props.converting, list(cs[k:]), **opts)

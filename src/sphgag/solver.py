@@ -154,10 +154,10 @@ def _lu(model: Model, data: np.ndarray):
 # (a chord step costs one force evaluation and one LU solve, a fresh Newton step 20-30 times more).
 CHORD_CONTRACTION = 0.5
 CHORD_STEPS = 12
-# A step that has a fallback where it finds no equilibrium (a snap, sphgag.snap; the pool's volume as the control,
-# sphgag.pool_volume) is bisected at most FALLBACK_BISECTIONS times (increments down to 1/16 of it): deeper
-# bisection only delays the fallback where the path has no equilibrium (each failed attempt costs up to
-# STALL_ITERATIONS Jacobians).
+# The transition of a damage pass, which has a fallback where it finds no equilibrium (a snap, sphgag.snap), is
+# bisected at most FALLBACK_BISECTIONS times (increments down to 1/16 of it): deeper bisection only delays the
+# fallback where the path has no equilibrium (each failed attempt costs up to STALL_ITERATIONS Jacobians). Load
+# steps (concentration) keep the full bisection budget of the configuration.
 FALLBACK_BISECTIONS = 4
 # Newton's method gives up after STALL_ITERATIONS fresh iterations that do not halve the relative residual: near a
 # state with no equilibrium the residual has a positive local minimum, where further iterations only cost time.
@@ -353,7 +353,7 @@ def _merit(ev: Evaluation, k: float) -> float:
 
 
 def with_fallback(options: dict) -> dict:
-    """Path options (:func:`follow_path`) for a step that has a fallback: at most FALLBACK_BISECTIONS bisections."""
+    """Path options (:func:`follow_path`) for a damage transition: at most FALLBACK_BISECTIONS bisections."""
     return dict(options, max_bisections=min(options.get("max_bisections", 10), FALLBACK_BISECTIONS))
 
 
