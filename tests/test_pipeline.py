@@ -10,6 +10,7 @@ import sys
 import zipfile
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 import pytest
 import yaml
@@ -188,6 +189,30 @@ def workdir(tmp_path_factory, numba_cache):
     assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
     yield wd
     shutil.rmtree(wd, ignore_errors=True)
+
+
+def test_pool_states_that_converged_before_issue_15_are_unchanged(workdir):
+    """Snaps, volume control and the Newton changes of issue 15 leave every figure 4 state the earlier code reached
+    (both laws; tests/data, from the CI run of that code) to its printed digits, and the conserved-law
+    delamination runs (no snap in them) as they were."""
+    before = pd.read_csv(ROOT / "tests/data/ci_figure4_before_issue15.csv")
+    key = ["charge_law", "model", "case", "pressure_mmHg", "stage", "concentration_mEq_l"]
+    now = pd.read_csv(workdir / "results/swelling/tip_stress.csv").set_index(key)
+    before = before.set_index(key)
+    assert before.index.isin(now.index).all(), before.index[~before.index.isin(now.index)].tolist()
+    now = now.loc[before.index]
+    for column, digits in (
+        ("tip_radial_stress_kPa", 0.05),
+        ("top_circ_stress_kPa", 0.05),
+        ("pool_volume_change", 5e-4),
+    ):
+        assert np.abs(now[column] - before[column]).max() < digits, column
+    runs = ["case", "sigma_cr_kPa", "criterion"]
+    was = pd.read_csv(ROOT / "tests/data/ci_delamination_before_issue15.csv").set_index(runs)
+    summary = pd.read_csv(workdir / "results/delamination/summary.csv")
+    now = summary[summary.charge_law == "conserved"].set_index(runs).loc[was.index]
+    assert np.allclose(now.final_length_um, was.final_length_um, atol=0.05)
+    assert now.onset_concentration_mEq_l.equals(was.onset_concentration_mEq_l) and now.merged.equals(was.merged)
 
 
 def test_outputs_follow_the_data_contracts(workdir, ci_config):
