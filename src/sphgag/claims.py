@@ -390,10 +390,22 @@ def delamination_claims(growth: pd.DataFrame, summary: pd.DataFrame, criteria: l
 
     def rate_text(c):
         s = rates(c)
-        return ", ".join(
+        text = ", ".join(
             f"{k:g} kPa {r.growth_rate_um_per_pseudo_time:.3g} um/pass, {r.growth_rate_um_per_mEq_l:.3g} um/(mEq/l)"
             for k, r in s.iterrows()
         )
+        if len(s) > 1 and s.index.min() < s.index.max():
+            a, b = s.loc[s.index.min()], s.loc[s.index.max()]
+
+            def ratio(x, y):
+                return f"{x / y:.3g}" if y > 0 else ("inf" if x > 0 else "-")
+
+            text += (
+                f" (ratio {s.index.min():g}/{s.index.max():g} kPa: "
+                f"{ratio(a.growth_rate_um_per_pseudo_time, b.growth_rate_um_per_pseudo_time)} per pass, "
+                f"{ratio(a.growth_rate_um_per_mEq_l, b.growth_rate_um_per_mEq_l)} per mEq/l)"
+            )
+        return text
 
     s = rates(criteria[0])
     lo, hi = (s.index.min(), s.index.max()) if len(s) else (None, None)
