@@ -504,14 +504,8 @@ def pool_table(model: Model, states: list[PoolState], pool, probe_length: float,
             pressure_mmHg=measure.carried_pressure(model, ev) / MMHG_TO_KPA,
         )
         row.update(pool_measurements(model, ev, pool, members, probe_length))
-        row.update(
-            residual=st.residual,
-            newton_iterations=st.newton_iterations,
-            force_evaluations=st.force_evaluations,
-            control=st.control,
-            path_end=st.path_end,
-            limit_concentration_mEq_l=st.limit_concentration,
-            end_reason=st.end_reason,
-        )
+        # how the state was reached and how its path ended (what its state file keeps)
+        row.update({k: v for k, v in st.info().items() if k not in row and k != "stage"})
+        row.update(limit_concentration_mEq_l=st.limit_concentration)  # NaN, not None, without a limit point
         rows.append(row)
     return pd.DataFrame(rows)
