@@ -92,17 +92,17 @@ rule delamination_summary:
 
 
 rule delamination_convergence_dx:
-    """Resolution study of delamination, one particle spacing (dx = {dedx} um), {law} charge: figure 5's pool set,
-    every criterion."""
+    """Resolution study of delamination, one particle spacing (dx = {dedx} um), {law} charge, {criterion} onset:
+    figure 5's pool set."""
     input:
         code=SPHGAG,
     output:
-        table="results/delamination/convergence/{law}/dx{dedx}.csv",
-        provenance="results/provenance/delamination_convergence_{law}_dx{dedx}.json",
+        table="results/delamination/convergence/{law}/dx{dedx}_{criterion}.csv",
+        provenance="results/provenance/delamination_convergence_{law}_dx{dedx}_{criterion}.json",
     log:
-        "logs/delamination_convergence/{law}/dx{dedx}.log",
+        "logs/delamination_convergence/{law}/dx{dedx}_{criterion}.log",
     benchmark:
-        "results/benchmarks/delamination_convergence_{law}_dx{dedx}.tsv"
+        "results/benchmarks/delamination_convergence_{law}_dx{dedx}_{criterion}.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -113,7 +113,9 @@ rule delamination_convergence_dx:
         bilayer=config["bilayer"],
         numerics=config["numerics"],
         homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
-        delamination=dict(DE_SETTINGS, pool_sets={FIG5_SET: DE["pool_sets"][FIG5_SET]}),
+        delamination=lambda wildcards: dict(
+            DE_SETTINGS, criteria=[wildcards.criterion], pool_sets={FIG5_SET: DE["pool_sets"][FIG5_SET]}
+        ),
         gag=lambda wildcards: GAG[wildcards.law],
     script:
         "../scripts/delamination_convergence.py"
@@ -122,7 +124,7 @@ rule delamination_convergence_dx:
 rule delamination_convergence:
     """The delamination resolution study (every charge law) in one tidy table."""
     input:
-        expand(rules.delamination_convergence_dx.output.table, law=LAWS, dedx=DE_DX),
+        expand(rules.delamination_convergence_dx.output.table, law=LAWS, dedx=DE_DX, criterion=DE["criteria"]),
     output:
         report(
             "results/delamination/convergence.csv",

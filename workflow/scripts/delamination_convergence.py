@@ -10,7 +10,7 @@ from sphgag import delamination, provenance, runlog
 sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)
 started = time.time()
-run = f"delamination_convergence_{sm.wildcards.law}_dx{sm.wildcards.dedx}"
+run = f"delamination_convergence_{sm.wildcards.law}_dx{sm.wildcards.dedx}_{sm.wildcards.criterion}"
 with runlog.run(run, sm.log[0]) as log:
     p = sm.params
     table = delamination.convergence_study(
