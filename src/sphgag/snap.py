@@ -41,6 +41,8 @@ log = logging.getLogger("sphgag")
 
 
 SPEEDUP = 0.7
+# the motion has come to rest at no equilibrium when its lowest residual has not halved in STALL_STEPS steps
+STALL_STEPS = 60
 
 
 class NoStableState(solver.SimulationError):
@@ -66,7 +68,8 @@ def follow(
     ``m`` below 1e-3), Newton's method (:func:`sphgag.solver.newton`) tries to converge
     the state; if it fails, the pseudo-dynamics resume from the best state so far
     with ten times more damping. Raises :class:`NoStableState` after ``max_steps``
-    pseudo-time steps. Extra keyword arguments (the solver options of a path) are ignored.
+    pseudo-time steps, or when the lowest residual has not halved in ``STALL_STEPS`` steps. Extra keyword arguments
+    (the solver options of a path) are ignored.
     """
     run = run or model.name
     try:
@@ -83,6 +86,7 @@ def _follow(model, x0, load, tol, max_iter, run, max_steps, handoff, damping) ->
     solver._check(model, ev, run)
     rel = solver.relative_residual(model, ev)
     best = (rel, ev)
+    halved = (rel, 0)  # (residual, step) when the best residual last halved
     m, n_eval, n_jac, attempts = damping, 1, 0, 0
     model.factorisation = None
     for k in range(max_steps):
@@ -130,6 +134,12 @@ def _follow(model, x0, load, tol, max_iter, run, max_steps, handoff, damping) ->
         rel, ev = rel_new, trial
         if rel < best[0]:
             best = (rel, ev)
+        if best[0] < 0.5 * halved[0]:
+            halved = (best[0], k)
+        elif k - halved[1] >= STALL_STEPS:
+            raise NoStableState(
+                run, load, f"the pseudo-dynamics came to rest at no equilibrium (lowest residual {best[0]:.3g})"
+            )
         log.debug(
             "[%s] snap step %d: residual %.3e, damping %.2e, moved %.3g um at most",
             run,
