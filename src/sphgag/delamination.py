@@ -714,7 +714,7 @@ def convergence_study(
     rows = []
     for criterion in de["criteria"]:
         settings = Settings.from_config(de, de["critical_stress_kPa"], criterion)
-        model = artery.bilayer_model(p, numerics, name=f"{name}_{criterion}")
+        model = artery.bilayer_model(p, numerics, name=name if len(de["criteria"]) == 1 else f"{name}_{criterion}")
         result = grow(
             model, solver.State(start.load, start.x, None, None), sectors, settings, numerics, gag, model.props
         )
