@@ -41,8 +41,10 @@ log = logging.getLogger("sphgag")
 
 
 SPEEDUP = 0.7
-# the motion has come to rest at no equilibrium when its lowest residual has not halved in STALL_STEPS steps
+# the motion has come to rest at no equilibrium when its lowest residual has not halved in STALL_STEPS steps, or
+# when Newton's method, tried each time the residual has fallen tenfold below the last try, has failed HANDOFFS times
 STALL_STEPS = 60
+HANDOFFS = 3
 
 
 class NoStableState(solver.SimulationError):
@@ -64,10 +66,11 @@ def follow(
 ) -> solver.State:
     """The equilibrium at ``load`` that the overdamped pseudo-dynamics from ``x0`` comes to rest at.
 
-    ``damping``: the first ``m = 1/dtau``. Every ``handoff`` (relative residual below it, or
+    ``damping``: the first ``m = 1/dtau``. Once the relative residual is below ``handoff`` (or
     ``m`` below 1e-3), Newton's method (:func:`sphgag.solver.newton`) tries to converge
     the state; if it fails, the pseudo-dynamics resume from the best state so far
-    with ten times more damping. Raises :class:`NoStableState` after ``max_steps``
+    with ten times more damping, and Newton is tried again once the residual is ten
+    times lower (at most ``HANDOFFS`` tries). Raises :class:`NoStableState` after ``max_steps``
     pseudo-time steps, or when the lowest residual has not halved in ``STALL_STEPS`` steps. Extra keyword arguments
     (the solver options of a path) are ignored.
     """
@@ -90,12 +93,18 @@ def _follow(model, x0, load, tol, max_iter, run, max_steps, handoff, damping) ->
     m, n_eval, n_jac, attempts = damping, 1, 0, 0
     model.factorisation = None
     for k in range(max_steps):
-        if rel < handoff or m < 1e-3:
+        if rel < handoff or (m < 1e-3 and attempts == 0):
             attempts += 1
             try:
                 x, ev_n, conv = solver.newton(model, ev.x, load, tol=tol, max_iter=max_iter, run=run)
             except solver.SimulationError as exc:
                 log.debug("[%s] snap: Newton from pseudo-time step %d failed (%s)", run, k, exc.reason)
+                if attempts == HANDOFFS:
+                    raise NoStableState(
+                        run, load, f"Newton failed {HANDOFFS} times near rest (lowest residual {best[0]:.3g})"
+                    ) from exc
+                # resume from the best state with more damping; try Newton again only 10 times closer to rest
+                handoff = 0.1 * min(rel, handoff)
                 rel, ev = best
                 m = max(m, damping) * 10.0**attempts
             else:
