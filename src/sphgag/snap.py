@@ -96,7 +96,9 @@ def _follow(model, x0, load, tol, max_iter, run, max_steps, handoff, damping) ->
         if rel < handoff or (m < 1e-3 and attempts == 0):
             attempts += 1
             try:
-                x, ev_n, conv = solver.newton(model, ev.x, load, tol=tol, max_iter=max_iter, run=run)
+                x, ev_n, conv = solver.newton(
+                    model, ev.x, load, tol=tol, max_iter=max_iter, run=run, stall=solver.STALL_ITERATIONS
+                )
             except solver.SimulationError as exc:
                 log.debug("[%s] snap: Newton from pseudo-time step %d failed (%s)", run, k, exc.reason)
                 if attempts == HANDOFFS:

@@ -159,8 +159,10 @@ CHORD_STEPS = 12
 # fallback where the path has no equilibrium (each failed attempt costs up to STALL_ITERATIONS Jacobians). Load
 # steps (concentration) keep the full bisection budget of the configuration.
 FALLBACK_BISECTIONS = 4
-# Newton's method gives up after STALL_ITERATIONS fresh iterations that do not halve the relative residual: near a
-# state with no equilibrium the residual has a positive local minimum, where further iterations only cost time.
+# Where a fallback exists, Newton's method gives up after STALL_ITERATIONS fresh iterations that do not halve the
+# relative residual: near a state with no equilibrium the residual has a positive local minimum, where further
+# iterations only cost time. Without a fallback (load steps) it keeps its max_iter iterations: a slow but converging
+# iteration (the CI prescribed-law active pools at 150 mEq/l) is not cut short.
 STALL_ITERATIONS = 8
 
 
@@ -173,6 +175,7 @@ def newton(
     max_iter: int = 30,
     run: str | None = None,
     reuse: bool = False,
+    stall: int | None = None,
 ) -> tuple[np.ndarray, Evaluation, Convergence]:
     """Equilibrium at ``load`` starting from ``x0``.
 
@@ -190,6 +193,8 @@ def newton(
     state). Otherwise (and whenever no factorisation fits)
     the iteration is an ordinary Newton step with a fresh Jacobian, whose
     factorisation is then kept. The acceptance test is the same in both cases.
+
+    With ``stall``, the iteration gives up once ``stall`` fresh iterations have not halved the relative residual.
     """
     run = run or model.name
     t0 = time.perf_counter()
@@ -258,11 +263,11 @@ def newton(
         run_start, run_length = rel, 0
         if rel < 0.5 * progress[0]:
             progress = (rel, n_jac)
-        elif n_jac - progress[1] >= STALL_ITERATIONS:
+        elif stall is not None and n_jac - progress[1] >= stall:
             raise NotConverged(
                 run,
                 load,
-                f"Newton stagnated: {STALL_ITERATIONS} iterations without halving the relative residual ({rel:.3g})",
+                f"Newton stagnated: {stall} iterations without halving the relative residual ({rel:.3g})",
                 ev,
             )
     raise NotConverged(
@@ -353,8 +358,11 @@ def _merit(ev: Evaluation, k: float) -> float:
 
 
 def with_fallback(options: dict) -> dict:
-    """Path options (:func:`follow_path`) for a damage transition: at most FALLBACK_BISECTIONS bisections."""
-    return dict(options, max_bisections=min(options.get("max_bisections", 10), FALLBACK_BISECTIONS))
+    """Path options (:func:`follow_path`) for a step with a fallback (a damage transition): at most
+    FALLBACK_BISECTIONS bisections, and Newton's method stops where it stagnates (STALL_ITERATIONS)."""
+    return dict(
+        options, max_bisections=min(options.get("max_bisections", 10), FALLBACK_BISECTIONS), stall=STALL_ITERATIONS
+    )
 
 
 @dataclass
@@ -379,18 +387,19 @@ def follow_path(
     run: str | None = None,
     on_state: Callable[[State], None] | None = None,
     reuse: bool = False,
+    stall: int | None = None,
 ) -> list[State]:
     """Converged states at every load of ``targets``, moving from ``start`` (state ``x0``).
 
     Each increment is solved with :func:`newton`; an increment that fails is
     split in two (recursively, up to ``max_bisections`` levels). Only the
-    requested loads are returned (and passed to ``on_state``). ``reuse``: see :func:`newton`.
+    requested loads are returned (and passed to ``on_state``). ``reuse``, ``stall``: see :func:`newton`.
     """
     run = run or model.name
     x, current = x0.copy(), start
     states = []
     for target in targets:
-        x, ev, conv = _reach(model, x, current, target, tol, max_iter, max_bisections, run, reuse)
+        x, ev, conv = _reach(model, x, current, target, tol, max_iter, max_bisections, run, reuse, stall)
         current = target
         state = State(target, x.copy(), ev, conv)
         states.append(state)
@@ -399,9 +408,9 @@ def follow_path(
     return states
 
 
-def _reach(model, x, current, target, tol, max_iter, depth, run, reuse):
+def _reach(model, x, current, target, tol, max_iter, depth, run, reuse, stall):
     try:
-        return newton(model, x, target, tol=tol, max_iter=max_iter, run=run, reuse=reuse)
+        return newton(model, x, target, tol=tol, max_iter=max_iter, run=run, reuse=reuse, stall=stall)
     except (NotConverged, Inverted, Diverged) as exc:
         if depth == 0:
             raise NotConverged(
@@ -409,8 +418,8 @@ def _reach(model, x, current, target, tol, max_iter, depth, run, reuse):
             ) from exc
         log.debug("[%s] bisecting increment to %s (%s)", run, describe(target), exc.reason)
     middle = current.lerp(target, 0.5)
-    xm, evm, cm = _reach(model, x, current, middle, tol, max_iter, depth - 1, run, reuse)
-    x2, ev2, c2 = _reach(model, xm, middle, target, tol, max_iter, depth - 1, run, reuse)
+    xm, evm, cm = _reach(model, x, current, middle, tol, max_iter, depth - 1, run, reuse, stall)
+    x2, ev2, c2 = _reach(model, xm, middle, target, tol, max_iter, depth - 1, run, reuse, stall)
     total = Convergence(
         c2.residual,
         cm.iterations + c2.iterations,
