@@ -1,7 +1,9 @@
 """Shared fixtures: small layouts and models that compile and solve in seconds."""
 
+import os
 import shutil
 import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -42,6 +44,31 @@ def project_copy(dest):
 def law_gag(cfg: dict, law: str = "conserved") -> dict:
     """The ``gag`` parameters of one run of ``cfg`` under one charge law (what the pipeline passes a run)."""
     return materials.law_gag(cfg["gag"], law)
+
+
+def snakemake(project, *args, configfile="config/ci.yaml", env=None):
+    """``snakemake *args --configfile X --cores 2`` run in ``project`` (a copy of the project root), as a user
+    does; ``configfile=None`` gives no ``--configfile``."""
+    cmd = [sys.executable, "-m", "snakemake", *args, "--cores", "2"]
+    cmd += ["--configfile", str(configfile)] if configfile is not None else []
+    return subprocess.run(cmd, cwd=project, capture_output=True, text=True, env=dict(os.environ, **(env or {})))
+
+
+@pytest.fixture(scope="session")
+def numba_cache(tmp_path_factory):
+    """An empty Numba cache for the CI run: its jobs compile every kernel themselves, as on a fresh machine."""
+    return tmp_path_factory.mktemp("numba_cache")
+
+
+@pytest.fixture(scope="session")
+def workdir(tmp_path_factory, numba_cache):
+    """A copy of the project root in which the CI configuration ran to the end, from a cold Numba cache (one run for
+    the session: tests/test_pipeline.py reads and reruns it, tests/test_slurm.py compares the Slurm run with it)."""
+    wd = project_copy(tmp_path_factory.mktemp("pipeline"))
+    run = snakemake(wd, "all", env=dict(NUMBA_CACHE_DIR=str(numba_cache)))
+    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
+    yield wd
+    shutil.rmtree(wd, ignore_errors=True)
 
 
 @pytest.fixture(scope="session")
