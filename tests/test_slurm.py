@@ -219,13 +219,16 @@ def runs(slurm, workdir, tmp_path_factory):
     (``workdir``, tests/conftest.py)."""
     cluster = project_copy(tmp_path_factory.mktemp("cluster"))
     t0 = time.time()
-    # first status check 2 s after a submission (the plugin's default of 40 s suits a busy cluster, not a test)
+    # first status check 2 s after a submission and then every 2 s (the defaults, 40 s and 10 s, suit a busy cluster,
+    # not a test whose jobs take seconds)
     run_cluster = subprocess.run(
         snakemake_cmd(
             "--profile",
             "profiles/slurm",
             "--slurm-keep-successful-logs",
             "--slurm-init-seconds-before-status-checks",
+            "2",
+            "--seconds-between-status-checks",
             "2",
         ),
         cwd=cluster,

@@ -629,6 +629,22 @@ CRITERION_COLOURS = ("k", "#d95f02")
 PSEUDO_TIME = "pseudo-time (concentration levels + damage passes)"
 
 
+def criterion_lines(ax, data, criteria, **spec):
+    """One line per run of ``data`` (seaborn's ``spec``: x, y, hue, palette), styled by its onset criterion: the
+    default solid, the other dashed."""
+    sns.lineplot(
+        data,
+        style="criterion",
+        style_order=list(criteria),
+        dashes=dict(zip(criteria, CRITERION_DASHES)),
+        estimator=None,
+        sort=False,
+        lw=1.0,
+        ax=ax,
+        **spec,
+    )
+
+
 def read_snapshots(path) -> dict:
     """Every array of a ``*_snapshots.npz`` of rule delaminate, read into memory."""
     with np.load(path, allow_pickle=False) as data:
@@ -779,20 +795,8 @@ def converted_panel(ax, growth: pd.DataFrame, summary: pd.DataFrame, case: str, 
         value_name="converted",
     )
     long["side"] = long.side.str.removeprefix("converted_")
-    sns.lineplot(
-        long,
-        x="step",
-        y="converted",
-        hue="side",
-        hue_order=list(SIDE_COLOURS),
-        palette=SIDE_COLOURS,
-        style="criterion",
-        style_order=list(criteria),
-        dashes=dict(zip(criteria, CRITERION_DASHES)),
-        estimator=None,
-        sort=False,
-        lw=1.0,
-        ax=ax,
+    criterion_lines(
+        ax, long, criteria, x="step", y="converted", hue="side", hue_order=list(SIDE_COLOURS), palette=SIDE_COLOURS
     )
     for criterion in criteria:
         merged = summary[(summary.case == case) & (summary.criterion == criterion) & summary.merged.astype(bool)]
@@ -950,19 +954,14 @@ def fig5(
             no_growth_note(ax, crit)
             tip_axes.append(ax)
         ax = block.add_subplot(bottom[-1])
-        sns.lineplot(
+        criterion_lines(
+            ax,
             own.sort_values("step").assign(sigma_cr=own.sigma_cr_kPa.map("{:g} kPa".format)),
+            criteria,
             x="concentration_mEq_l",
             y="delaminated_length_um",
             hue="sigma_cr",
             palette=palette(sigmas, colours, "{:g} kPa".format),
-            style="criterion",
-            style_order=list(criteria),
-            dashes=dict(zip(criteria, CRITERION_DASHES)),
-            estimator=None,
-            sort=False,
-            lw=1.0,
-            ax=ax,
         )
         no_growth_note(ax, own)
         ax.set(xlabel=GAG_CONCENTRATION, ylabel="delaminated length (um)", title=f"(c) growth, {case}")
