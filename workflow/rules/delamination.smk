@@ -107,7 +107,7 @@ rule delamination_convergence_dx:
         "../envs/sphgag.yaml"
     threads: 1
     resources:
-        runtime=5,
+        runtime=25,
         mem_mb=2500,
     params:
         bilayer=config["bilayer"],

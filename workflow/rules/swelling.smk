@@ -36,8 +36,8 @@ rule swell:
         "../envs/sphgag.yaml"
     threads: 1
     resources:
-        runtime=5,
-        mem_mb=1000,
+        runtime=7,
+        mem_mb=1500,
     params:
         state_slice=lambda wildcards: dict(PRESSURISED_SLICE, model=wildcards.model),
         pool=lambda wildcards: SW["cases"][wildcards.case],
@@ -127,7 +127,7 @@ rule swelling_convergence_dx:
         "../envs/sphgag.yaml"
     threads: 1
     resources:
-        runtime=5,
+        runtime=26,
         mem_mb=2500,
     params:
         **SC_SIMULATION,
