@@ -455,7 +455,11 @@ class GrowthRun:
         try:
             start = load.with_material(transition=0.0)
             state = solver.follow_path(
-                self.model, self.state.x, start, [load.with_material(transition=1.0)], **solver.with_fallback(self.opts)
+                self.model,
+                self.state.x,
+                start,
+                [load.with_material(transition=1.0)],
+                **solver.transition_options(self.opts),
             )[-1]
         except solver.NotConverged as exc:
             self.model.set_props(path.settled())

@@ -154,15 +154,15 @@ def _lu(model: Model, data: np.ndarray):
 # (a chord step costs one force evaluation and one LU solve, a fresh Newton step 20-30 times more).
 CHORD_CONTRACTION = 0.5
 CHORD_STEPS = 12
-# The transition of a damage pass, which has a fallback where it finds no equilibrium (a snap, sphgag.snap), is
-# bisected at most FALLBACK_BISECTIONS times (increments down to 1/16 of it): deeper bisection only delays the
-# fallback where the path has no equilibrium (each failed attempt costs up to STALL_ITERATIONS Jacobians). Load
-# steps (concentration) keep the full bisection budget of the configuration.
+# The transition of a damage pass, whose fallback where it finds no equilibrium is a snap (sphgag.snap), is bisected
+# at most FALLBACK_BISECTIONS times (increments down to 1/16 of it), and Newton's method there gives up after
+# STALL_ITERATIONS fresh iterations that do not halve the relative residual: near a state with no equilibrium the
+# residual has a positive local minimum, where deeper bisection and more iterations only delay the snap
+# (:func:`transition_options`; a snap's own Newton handoffs stop the same way). Load steps (concentration, pressure)
+# keep the configuration's full budget, even where they too have a fallback (a snap in a growth run, the pool's volume
+# as the control in a swelling run): a slow but converging iteration (the CI prescribed-law active pools at
+# 150 mEq/l) is not cut short.
 FALLBACK_BISECTIONS = 4
-# Where a fallback exists, Newton's method gives up after STALL_ITERATIONS fresh iterations that do not halve the
-# relative residual: near a state with no equilibrium the residual has a positive local minimum, where further
-# iterations only cost time. Without a fallback (load steps) it keeps its max_iter iterations: a slow but converging
-# iteration (the CI prescribed-law active pools at 150 mEq/l) is not cut short.
 STALL_ITERATIONS = 8
 
 
@@ -357,9 +357,9 @@ def _merit(ev: Evaluation, k: float) -> float:
     return float(np.sqrt((r * r).sum() + (c * c).sum()))
 
 
-def with_fallback(options: dict) -> dict:
-    """Path options (:func:`follow_path`) for a step with a fallback (a damage transition): at most
-    FALLBACK_BISECTIONS bisections, and Newton's method stops where it stagnates (STALL_ITERATIONS)."""
+def transition_options(options: dict) -> dict:
+    """Path options (:func:`follow_path`) for the transition of a damage pass: at most FALLBACK_BISECTIONS
+    bisections, and Newton's method stops where it stagnates (STALL_ITERATIONS)."""
     return dict(
         options, max_bisections=min(options.get("max_bisections", 10), FALLBACK_BISECTIONS), stall=STALL_ITERATIONS
     )
