@@ -20,7 +20,26 @@ the intact ones. The hourglass stiffness (eq. 2.14) is a property of the
 discretisation and is left alone. A particle with ``D = 1`` becomes a GAG particle
 (:func:`sphgag.materials.convert_to_gag`).
 
-This module holds the law and its bookkeeping as pure functions of flat arrays;
+**A law with a fracture energy** (:class:`FractureEnergyLaw`, ``damage_law: fracture_energy``).
+Eq. (2.28) ruptures a particle after a fixed extra stretch, so the energy a particle
+dissipates is that of its own volume and the energy per delaminated area scales with the
+band the damage localises in, i.e. with the particle size. The crack band approach (Bazant
+& Oh 1983) fixes the energy per unit volume instead: a band of width ``h`` dissipates
+``g = G_c / h``, so its area dissipates ``G_c`` at every spacing. Damage that scales the
+energy as ``(1 - D) W`` dissipates ``Y dD`` with ``Y = W_0`` (the intact energy density, the
+thermodynamic force of ``D``), so the law is written in ``Y``: onset as the paper's (the
+radial stress reaches ``sigma_cr``; its ``Y_on`` is recorded), then eq. (2.28)'s shape in the
+normalised energy beyond onset,
+
+    D = 2^(x^2) - 1,     x = (Y_max - Y_on) / (Y_f - Y_on) in [0, 1],
+
+with ``Y_max`` the largest ``Y`` since onset. Its dissipation from onset to rupture is
+``int Y dD = Y_on + K (Y_f - Y_on)`` with ``K = 1 - int_0^1 (2^(x^2) - 1) dx`` (:data:`SHAPE_K`),
+so ``Y_f = Y_on + (g - Y_on) / K`` makes it exactly ``g``, whatever the deformation path.
+Where ``g <= Y_on`` the band is too wide for ``G_c`` (snap-back of the softening branch): the
+particle ruptures at onset and dissipates ``Y_on``.
+
+This module holds the laws and their bookkeeping as pure functions of flat arrays;
 the delamination protocol decides when to call them.
 """
 
@@ -29,10 +48,20 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.special import erfi
 
 from . import materials
+from .fracture import J_M2
 
 LN2 = np.log(2.0)
+# K = 1 - int_0^1 (2^(x^2) - 1) dx = 2 - sqrt(pi / ln 2) erfi(sqrt(ln 2)) / 2 (FractureEnergyLaw)
+SHAPE_K = float(2.0 - 0.5 * np.sqrt(np.pi / LN2) * erfi(np.sqrt(LN2)))
+
+
+def shape(x) -> np.ndarray:
+    """Eq. (2.28)'s shape in a normalised variable: ``2^(x^2) - 1`` on [0, 1], 0 below, 1 beyond."""
+    x = np.clip(np.asarray(x, dtype=float), 0.0, 1.0)
+    return np.minimum(np.expm1(x * x * LN2), 1.0)
 
 
 @dataclass(frozen=True)
@@ -45,10 +74,15 @@ class DamageLaw:
 
     critical_stress_kPa: float
     rupture_stretch_increment: float
+    name = "paper"
 
     def __post_init__(self):
         if not self.rupture_stretch_increment > 0.0:
             raise ValueError(f"rupture_stretch_increment must be positive, got {self.rupture_stretch_increment}")
+
+    @property
+    def rupture(self) -> str:
+        return f"rupture at +{self.rupture_stretch_increment:.3g} radial stretch"
 
     @property
     def tau(self) -> float:
@@ -60,35 +94,115 @@ class DamageLaw:
         d = np.maximum(np.asarray(stretch_beyond_onset, dtype=float), 0.0)
         return np.minimum(np.expm1(np.minimum((d / self.tau) ** 2, LN2)), 1.0)  # exponent capped where D = 1
 
+    def damage_at(self, stretch, onset_stretch, energy, onset_energy, band_width) -> np.ndarray:
+        """D of particles past onset (:meth:`DamageState.update`): the stretch beyond onset alone."""
+        return self.damage(np.asarray(stretch) - np.asarray(onset_stretch))
+
+
+@dataclass(frozen=True)
+class FractureEnergyLaw:
+    """Onset at ``sigma_cr`` as eq. (2.28), then a softening that dissipates ``G_c / h`` per unit volume of a band of
+    width ``h`` (crack band; module docstring).
+
+    critical_stress_kPa : sigma_cr, the radial Cauchy stress (onset measure) at onset.
+    fracture_energy_J_m2 : G_c, the energy dissipated per unit new delaminated area.
+    """
+
+    critical_stress_kPa: float
+    fracture_energy_J_m2: float
+    name = "fracture_energy"
+
+    def __post_init__(self):
+        if not self.fracture_energy_J_m2 > 0.0:
+            raise ValueError(f"fracture_energy_J_m2 must be positive, got {self.fracture_energy_J_m2}")
+
+    @property
+    def rupture(self) -> str:
+        return f"rupture after G_c = {self.fracture_energy_J_m2:.3g} J/m^2 per band area"
+
+    def dissipation_density(self, band_width) -> np.ndarray:
+        """``g = G_c / h`` [kPa = kJ/m^3] of a band of width ``h`` [um]."""
+        return self.fracture_energy_J_m2 * J_M2 / np.asarray(band_width, dtype=float)
+
+    def rupture_energy(self, onset_energy, band_width) -> np.ndarray:
+        """``Y_f = Y_on + (g - Y_on) / K``: the intact energy density at which ``D = 1`` (``Y_on`` if ``g <= Y_on``)."""
+        y0 = np.asarray(onset_energy, dtype=float)
+        return y0 + np.maximum(self.dissipation_density(band_width) - y0, 0.0) / SHAPE_K
+
+    def damage_at(self, stretch, onset_stretch, energy, onset_energy, band_width) -> np.ndarray:
+        """``D = 2^(x^2) - 1`` with ``x = (Y - Y_on) / (Y_f - Y_on)`` (1 at once where ``Y_f = Y_on``)."""
+        y, y0 = np.asarray(energy, dtype=float), np.asarray(onset_energy, dtype=float)
+        span = self.rupture_energy(y0, band_width) - y0
+        x = np.divide(y - y0, span, out=np.where(y >= y0, 1.0, 0.0), where=span > 0.0)
+        return shape(x)
+
+    def damage_rate(self, energy, onset_energy, band_width) -> np.ndarray:
+        """``dD/dY`` on the loading branch (``Y > Y_on``, below rupture; 0 elsewhere): the law's tangent term,
+        ``d(sigma)/d(lambda) = (1 - D) W_0'' - (dD/dY) W_0'^2`` in one dimension."""
+        y, y0 = np.asarray(energy, dtype=float), np.asarray(onset_energy, dtype=float)
+        span = self.rupture_energy(y0, band_width) - y0
+        x = np.divide(y - y0, span, out=np.zeros_like(y), where=span > 0.0)
+        inside = (x > 0.0) & (x < 1.0)
+        rate = 2.0 * LN2 * x * np.exp2(x * x) / np.where(span > 0.0, span, 1.0)
+        return np.where(inside, rate, 0.0)
+
+    def dissipated(self, D_before, D_after, onset_energy, band_width) -> np.ndarray:
+        """``int Y dD`` [kPa] from ``D_before`` to ``D_after`` along the law (per unit volume): ``g`` from 0 to 1."""
+        y0 = np.asarray(onset_energy, dtype=float)
+        span = self.rupture_energy(y0, band_width) - y0
+        x0, x1 = (np.sqrt(np.log1p(np.clip(d, 0.0, 1.0)) / LN2) for d in (D_before, D_after))
+        # int Y dD = [Y D] - int D dY, with Y = y0 + span x and D = 2^(x^2) - 1
+        return y0 * (shape(x1) - shape(x0)) + span * (
+            x1 * shape(x1) - x0 * shape(x0) - (_shape_integral(x1) - _shape_integral(x0))
+        )
+
+
+def _shape_integral(x) -> np.ndarray:
+    """``int_0^x (2^(s^2) - 1) ds = sqrt(pi / ln 2) erfi(sqrt(ln 2) x) / 2 - x``."""
+    x = np.asarray(x, dtype=float)
+    return 0.5 * np.sqrt(np.pi / LN2) * erfi(np.sqrt(LN2) * x) - x
+
+
+LAWS = ("paper", "fracture_energy")
+
 
 @dataclass
 class DamageState:
-    """Per-particle damage history: ``D`` and the radial stretch at onset (NaN before onset)."""
+    """Per-particle damage history: ``D``, and the radial stretch and intact energy density ``W_0`` at onset (NaN
+    before onset)."""
 
     D: np.ndarray
     onset_stretch: np.ndarray
+    onset_energy: np.ndarray
 
     @classmethod
     def intact(cls, n: int) -> DamageState:
-        return cls(np.zeros(n), np.full(n, np.nan))
+        return cls(np.zeros(n), np.full(n, np.nan), np.full(n, np.nan))
 
     @property
     def ruptured(self) -> np.ndarray:
         return self.D >= 1.0
 
-    def update(self, law: DamageLaw, candidates: np.ndarray, radial_stress, radial_stretch) -> np.ndarray:
-        """Advance the history with the current radial Cauchy stress and stretch; returns the particles whose D grew.
+    def update(self, law, candidates, radial_stress, radial_stretch, energy=None, band_width=None) -> np.ndarray:
+        """Advance the history with the current radial Cauchy stress, radial stretch and intact energy density ``W_0``
+        (eq. 2.23; needed by :class:`FractureEnergyLaw`, with the band width ``h`` [um] of each particle); returns
+        the particles whose D grew.
 
         Only ``candidates`` can start to damage (onset: ``sigma_rr >= sigma_cr``); a particle
-        that has started keeps damaging with its stretch, whatever its stress. D never decreases.
+        that has started keeps damaging with its stretch (or energy), whatever its stress. D never decreases.
         """
-        onset = np.zeros(self.D.size, dtype=bool)
+        n = self.D.size
+        stretch = np.asarray(radial_stretch, dtype=float)
+        energy = np.full(n, np.nan) if energy is None else np.asarray(energy, dtype=float)
+        width = np.full(n, np.nan) if band_width is None else np.broadcast_to(np.asarray(band_width, float), (n,))
+        onset = np.zeros(n, dtype=bool)
         onset[candidates] = True
         onset &= np.isnan(self.onset_stretch) & (np.asarray(radial_stress) >= law.critical_stress_kPa)
-        self.onset_stretch[onset] = np.asarray(radial_stretch)[onset]
-        started = ~np.isnan(self.onset_stretch)
+        self.onset_stretch[onset] = stretch[onset]
+        self.onset_energy[onset] = energy[onset]
+        s = ~np.isnan(self.onset_stretch)
         new = np.zeros_like(self.D)
-        new[started] = law.damage(np.asarray(radial_stretch)[started] - self.onset_stretch[started])
+        new[s] = law.damage_at(stretch[s], self.onset_stretch[s], energy[s], self.onset_energy[s], width[s])
         grew = new > self.D
         self.D = np.maximum(self.D, new)
         return np.flatnonzero(grew)

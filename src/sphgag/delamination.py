@@ -120,19 +120,34 @@ class Settings:
     max_passes: int
     max_extent_deg: float
     conversion_steps: int
+    damage_law: str = "paper"  # damage.LAWS: eq. (2.28) as printed, or with a fracture energy
+    fracture_energy_J_m2: float = np.nan  # G_c of the fracture_energy law
 
     def __post_init__(self):
         if self.criterion not in CRITERIA:
             raise ValueError(f"criterion must be one of {CRITERIA}, got {self.criterion!r}")
+        if self.damage_law not in damage.LAWS:
+            raise ValueError(f"damage_law must be one of {damage.LAWS}, got {self.damage_law!r}")
 
     @classmethod
-    def from_config(cls, de: dict, critical_stress_kPa: float, criterion: str) -> Settings:
-        """The settings of one run from the ``delamination`` configuration section."""
-        keys = [f.name for f in fields(cls) if f.name not in ("critical_stress_kPa", "criterion")]
-        return cls(critical_stress_kPa=float(critical_stress_kPa), criterion=criterion, **{k: de[k] for k in keys})
+    def from_config(
+        cls, de: dict, critical_stress_kPa: float, criterion: str, fracture_energy_J_m2: float | None = None
+    ) -> Settings:
+        """The settings of one run from the ``delamination`` configuration section: eq. (2.28) as printed, or the
+        fracture-energy law where ``fracture_energy_J_m2`` (G_c) is given."""
+        fixed = ("critical_stress_kPa", "criterion", "damage_law", "fracture_energy_J_m2")
+        keys = [f.name for f in fields(cls) if f.name not in fixed]
+        law = dict(damage_law="paper")
+        if fracture_energy_J_m2 is not None:
+            law = dict(damage_law="fracture_energy", fracture_energy_J_m2=float(fracture_energy_J_m2))
+        return cls(
+            critical_stress_kPa=float(critical_stress_kPa), criterion=criterion, **law, **{k: de[k] for k in keys}
+        )
 
     @property
-    def law(self) -> damage.DamageLaw:
+    def law(self) -> damage.DamageLaw | damage.FractureEnergyLaw:
+        if self.damage_law == "fracture_energy":
+            return damage.FractureEnergyLaw(self.critical_stress_kPa, self.fracture_energy_J_m2)
         return damage.DamageLaw(self.critical_stress_kPa, self.rupture_stretch_increment)
 
     @property
@@ -347,8 +362,7 @@ class GrowthRun:
         base_load = protocols.swelling_load(start.load, 0.0, 0.0)
         law = settings.law
         log.info(
-            "[%s] seeding %d pool(s) (%d particles) in %d steps at %.1f mmHg; sigma_cr %.0f kPa, %s onset, "
-            "rupture at +%.3g radial stretch",
+            "[%s] seeding %d pool(s) (%d particles) in %d steps at %.1f mmHg; sigma_cr %.0f kPa, %s onset, %s",
             opts["run"],
             len(sectors),
             int(material.history.gag.sum()),
@@ -356,7 +370,7 @@ class GrowthRun:
             base_load.pressure_mmHg,
             law.critical_stress_kPa,
             settings.criterion,
-            law.rupture_stretch_increment,
+            law.rupture,
         )
         fractions = np.linspace(0, 1, settings.conversion_steps + 1)[1:]
         state = solver.follow_path(
@@ -415,10 +429,13 @@ class GrowthRun:
         hist, lay = self.hist, self.model.layout
         cand, pools, sigma = self._front
         ev = self.state.evaluation
-        dmg = damage.DamageState(hist.D.copy(), hist.onset_stretch.copy())
+        dmg = damage.DamageState(hist.D.copy(), hist.onset_stretch.copy(), hist.onset_energy.copy())
         radial = np.full(lay.n, -np.inf)
         radial[cand] = sigma
-        dmg.update(self.settings.law, cand, radial, damage.radial_stretch(ev.F, lay.theta))
+        W0 = intact_energy(self.model, ev, self.material.base(ev.load))
+        band = np.full(lay.n, np.nan)
+        band[cand] = self.front.thickness[pools]  # the band a pool's growth converts: its radial extent
+        dmg.update(self.settings.law, cand, radial, damage.radial_stretch(ev.F, lay.theta), W0, band)
         dmg.D[hist.gag] = hist.D[hist.gag]
         ruptured = np.flatnonzero(dmg.ruptured & ~hist.gag)
         if np.isnan(self.onset_c) and np.any(~np.isnan(dmg.onset_stretch)):
@@ -426,13 +443,11 @@ class GrowthRun:
         if float(np.max(dmg.D - hist.D, initial=0.0)) <= self.settings.damage_tolerance and ruptured.size == 0:
             if not np.array_equal(dmg.onset_stretch, hist.onset_stretch, equal_nan=True):
                 # new onsets are history; changes of D below the tolerance are not applied
-                self._settle(
-                    HistoryMaterial(self.material.base, hist.with_damage(hist.D, dmg.onset_stretch), self.material.gag)
-                )
+                onsets = hist.with_damage(hist.D, dmg.onset_stretch, dmg.onset_energy)
+                self._settle(HistoryMaterial(self.material.base, onsets, self.material.gag))
             return None
-        W0 = intact_energy(self.model, ev, self.material.base(ev.load))
         released = float(np.sum((dmg.D - hist.D) * W0 * lay.volume))
-        new = hist.with_damage(dmg.D, dmg.onset_stretch)
+        new = hist.with_damage(dmg.D, dmg.onset_stretch, dmg.onset_energy)
         if ruptured.size:
             owner = np.full(lay.n, -1)
             owner[cand] = pools

@@ -13,8 +13,8 @@ Per particle:
   the configuration) or :data:`DAMAGED` (a tissue particle that ruptured and
   became GAG, section 2.7);
 * ``pool``: the index of the pool a GAG particle belongs to (-1 for tissue);
-* ``D`` and ``onset_stretch``: the damage of eq. (2.28) and the radial stretch at
-  its onset (NaN before onset; :mod:`sphgag.damage`);
+* ``D``, ``onset_stretch`` and ``onset_energy``: the damage of eq. (2.28), and the radial
+  stretch and intact energy density at its onset (NaN before onset; :mod:`sphgag.damage`);
 * ``converted_step``: the damage pass at which the particle became GAG (0 for
   seeded pools, -1 for tissue).
 
@@ -51,9 +51,14 @@ class ParticleHistory:
     D: np.ndarray
     onset_stretch: np.ndarray
     converted_step: np.ndarray
+    onset_energy: np.ndarray | None = None
 
     def __post_init__(self):
-        dtypes = dict(origin=np.int8, pool=np.int16, D=float, onset_stretch=float, converted_step=np.int64)
+        if self.onset_energy is None:  # histories saved before the fracture-energy law
+            object.__setattr__(self, "onset_energy", np.full(np.asarray(self.origin).size, np.nan))
+        dtypes = dict(
+            origin=np.int8, pool=np.int16, D=float, onset_stretch=float, converted_step=np.int64, onset_energy=float
+        )
         n = np.asarray(self.origin).size
         for name, dtype in dtypes.items():
             value = _frozen(getattr(self, name), dtype)
@@ -87,12 +92,13 @@ class ParticleHistory:
             origin[idx], pool[idx], step[idx] = SEEDED, k, 0
         return replace(self, origin=origin, pool=pool, converted_step=step)
 
-    def with_damage(self, D, onset_stretch) -> ParticleHistory:
+    def with_damage(self, D, onset_stretch, onset_energy=None) -> ParticleHistory:
         """The same history with new damage; refuses to let D decrease (eq. 2.28 is irreversible)."""
         D = np.asarray(D, dtype=float)
         if np.any(D < self.D):
             raise ValueError("damage never decreases")
-        return replace(self, D=D, onset_stretch=onset_stretch)
+        energy = self.onset_energy if onset_energy is None else onset_energy
+        return replace(self, D=D, onset_stretch=onset_stretch, onset_energy=energy)
 
     def rupture(self, idx, pools, step: int) -> ParticleHistory:
         """Particles ``idx`` (tissue) become GAG particles of pools ``pools`` at damage pass ``step``."""
@@ -110,11 +116,12 @@ class ParticleHistory:
 
     @classmethod
     def from_arrays(cls, data) -> ParticleHistory:
-        return cls(**{f.name: data[f"history_{f.name}"] for f in fields(cls)})
+        return cls(**{f.name: data[f"history_{f.name}"] for f in fields(cls) if f"history_{f.name}" in data})
 
     def equals(self, other: ParticleHistory) -> bool:
+        real = ("D", "onset_stretch", "onset_energy")
         return all(
-            np.array_equal(getattr(self, f.name), getattr(other, f.name), equal_nan=f.name in ("D", "onset_stretch"))
+            np.array_equal(getattr(self, f.name), getattr(other, f.name), equal_nan=f.name in real)
             for f in fields(self)
         )
 

@@ -422,3 +422,10 @@ def swelling_pressure(c_fc, c_bath, temperature_K=310.0):
     """
     c = np.asarray(c_fc, dtype=float)
     return GAS_CONSTANT * temperature_K * (np.sqrt(c * c + c_bath * c_bath) - c_bath) / 1000.0
+
+
+def concentration_for_pressure(pi_kPa, c_bath, temperature_K=310.0):
+    """The fixed-charge concentration [mEq/l] whose swelling pressure (eqs. 2.25-2.26) is ``pi_kPa``: the inverse of
+    :func:`swelling_pressure`, ``c = sqrt((Pi / R T + c*)^2 - c*^2)``."""
+    q = 1000.0 * np.asarray(pi_kPa, dtype=float) / (GAS_CONSTANT * temperature_K) + c_bath
+    return np.sqrt(q * q - c_bath * c_bath)
