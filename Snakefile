@@ -83,6 +83,7 @@ rule all:
         rules.fig4.output,
         rules.claims.output,
         rules.verification_pool_figure.output,
+        rules.verify_crack.output,
         rules.swelling_convergence_figure.output,
         rules.delamination_growth.output,
         rules.delamination_summary.output,

@@ -570,6 +570,67 @@ def resolution_panel(ax, errors: pd.DataFrame, measures: dict, ratios: dict):
     style_legend(ax, "upper left", fontsize=6.5, bbox_to_anchor=(1.0, 1.0))
 
 
+def verification_crack(table: pd.DataFrame, modulus: float, fracture_energy_J_m2: float, critical_stress: float):
+    """The pressurised crack (pressurised_crack.csv): (a) the pressure at which it grows against Griffith's (and
+    Dugdale's, for the cohesive length), a marker per spacing; (b) the opening area before growth against Sneddon's;
+    (c) the three relative errors against dx, log-log, a colour per half-length."""
+    from . import fracture
+
+    _style()
+    fig, axes = plt.subplots(1, 3, figsize=(11.5, 3.5), layout="constrained")
+    spacings = sorted(table.dx_um.unique(), reverse=True)
+    colours = dict(zip(spacings, sns.color_palette("viridis", len(spacings))))
+    gc = fracture_energy_J_m2 * fracture.J_M2
+    a = np.linspace(0.8 * table.half_length_um.min(), 1.2 * table.half_length_um.max(), 200)
+    ax = axes[0]
+    ax.plot(a, fracture.griffith_pressure(a, gc, modulus), "k-", lw=1.2, label="Griffith")
+    ax.plot(a, fracture.dugdale_pressure(a, gc, modulus, critical_stress), "k:", lw=1.0, label="Dugdale")
+    for dx in spacings:
+        t = table[table.dx_um == dx]
+        ax.plot(t.half_length_um, t.critical_pressure_kPa, "o", color=colours[dx], ms=5, label=f"SPH, dx = {dx:g} um")
+    ax.set(xlabel="crack half-length a [um]", ylabel="face pressure at growth [kPa]", title="(a) onset of growth")
+    style_legend(ax, fontsize=6.5)
+    ax = axes[1]
+    ax.plot(a, fracture.opening_area(a, 1.0, modulus), "k-", lw=1.2, label="Sneddon")
+    for dx in spacings:
+        t = table[table.dx_um == dx]
+        ax.plot(
+            t.half_length_um, t.opening_area_um2 / t.pressure_kPa, "o", color=colours[dx], ms=5, label=f"dx = {dx:g} um"
+        )
+    ax.set(
+        xlabel="crack half-length a [um]",
+        ylabel="opening area / pressure [um^2/kPa]",
+        title="(b) opening before growth",
+    )
+    style_legend(ax, fontsize=6.5)
+    ax = axes[2]
+    lengths = sorted(table.half_length_um.unique())
+    hue = dict(zip(lengths, sns.color_palette("rocket", len(lengths))))
+    for measure, marker, name in (
+        ("rel_error", "o", "onset vs Griffith"),
+        ("area_rel_error", "s", "area vs Sneddon"),
+        ("energy_rel_error", "^", "energy vs G_c"),
+    ):
+        for length in lengths:
+            t = table[table.half_length_um == length].sort_values("dx_um")
+            ax.plot(
+                t.dx_um,
+                t[measure].abs(),
+                marker=marker,
+                color=hue[length],
+                lw=0.8,
+                ms=4,
+                label=f"{name}, a = {length:g} um",
+            )
+    ax.axhline(0.1, color="0.5", lw=0.6, ls="--")
+    ax.axhline(0.05, color="0.5", lw=0.6, ls=":")
+    ax.set(
+        xscale="log", yscale="log", xlabel="dx [um]", ylabel="|relative error|", title="(c) errors against resolution"
+    )
+    style_legend(ax, "upper left", fontsize=5.5, bbox_to_anchor=(1.0, 1.0))
+    return fig
+
+
 def swelling_convergence(table: pd.DataFrame, laws=None):
     """Resolution study (seaborn facets of convergence.csv): tip radial stress (mean over the probe, and particle
     peak), top hoop stress and pool volume change against concentration, a colour per particle spacing, a column

@@ -96,3 +96,70 @@ rule verification_pool_figure:
         mem_mb=1000,
     script:
         "../scripts/verification_pool_figure.py"
+
+
+VC = config["verification"]["crack"]
+CRACK_LENGTHS = [f"{a:g}" for a in VC["half_lengths_um"]]
+
+
+rule verify_crack_length:
+    """Pressurised crack of half-length {length} um at every spacing: the fracture-energy damage law against Sneddon,
+    Griffith and G_c."""
+    input:
+        code=SPHGAG,
+    output:
+        table="results/verification/runs/pressurised_crack_a{length}.csv",
+        provenance="results/provenance/verify_crack_a{length}.json",
+    log:
+        "logs/verify_crack/a{length}.log",
+    benchmark:
+        "results/benchmarks/verify_crack_a{length}.tsv"
+    wildcard_constraints:
+        length="|".join(re.escape(a) for a in CRACK_LENGTHS),
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=20,
+        mem_mb=2500,
+    params:
+        crack=VC,
+        matrix=POOL_MATRIX,
+        gag={
+            k: config["gag"][k]
+            for k in ("shear_modulus_kPa", "hourglass_modulus_kPa", "bath_concentration_mEq_l", "temperature_K")
+        },
+        numerics=config["numerics"],
+    script:
+        "../scripts/verify_crack.py"
+
+
+rule verify_crack:
+    """The crack verification of every half-length in one table, and its figure."""
+    input:
+        code=PLOTS,
+        tables=expand(rules.verify_crack_length.output.table, length=CRACK_LENGTHS),
+    output:
+        table=report(
+            "results/verification/pressurised_crack.csv",
+            caption="../report/pressurised_crack.rst",
+            category="4 Verification",
+            labels={"result": "Table: the pressurised crack"},
+        ),
+        pdf="figures/verification_crack.pdf",
+        png=report(
+            "figures/verification_crack.png",
+            caption="../report/verification_crack.rst",
+            category="4 Verification",
+            labels={"result": "Figure: the fracture-energy law against Sneddon and Griffith"},
+        ),
+    log:
+        "logs/verify_crack.log",
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
+    script:
+        "../scripts/verification_crack_figure.py"
