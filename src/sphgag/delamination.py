@@ -58,7 +58,7 @@ import numpy as np
 import pandas as pd
 from scipy.spatial import cKDTree
 
-from . import artery, damage, forces, measure, protocols, snap, solver
+from . import artery, damage, forces, fracture, materials, measure, protocols, snap, solver
 from . import state as state_io
 from .geometry import Sector
 from .history import DAMAGED, HistoryMaterial, ParticleHistory
@@ -74,6 +74,8 @@ GROWTH_COLUMNS = [
     "sigma_cr_kPa",
     "criterion",
     "dx_um",
+    "damage_law",
+    "fracture_energy_J_m2",
     "step",
     "pseudo_time",
     "concentration_mEq_l",
@@ -90,6 +92,8 @@ SUMMARY_COLUMNS = [
     "sigma_cr_kPa",
     "criterion",
     "dx_um",
+    "damage_law",
+    "fracture_energy_J_m2",
     "onset_concentration_mEq_l",
     "final_length_um",
     "outcome",
@@ -704,10 +708,41 @@ def load_snapshot(path, k: int, expected_params: dict | None = None):
 
 def labelled(result: Result, case: str, settings: Settings, dx: float) -> tuple[pd.DataFrame, pd.DataFrame]:
     """``(growth, summary)`` of one run with the labels of ``results/delamination/{growth,summary}.csv``."""
-    labels = dict(case=case, sigma_cr_kPa=settings.critical_stress_kPa, criterion=settings.criterion, dx_um=float(dx))
+    labels = dict(
+        case=case,
+        sigma_cr_kPa=settings.critical_stress_kPa,
+        criterion=settings.criterion,
+        dx_um=float(dx),
+        damage_law=settings.damage_law,
+        fracture_energy_J_m2=settings.fracture_energy_J_m2,
+    )
     growth = result.growth.assign(**labels)[GROWTH_COLUMNS]
     summary = pd.DataFrame([dict(labels, **result.summary)])
     return growth, summary[SUMMARY_COLUMNS + [c for c in summary.columns if c not in SUMMARY_COLUMNS]]
+
+
+def paper_law(table: pd.DataFrame) -> pd.DataFrame:
+    """The rows of a delamination table grown by eq. (2.28) as printed (the paper's figures and claims)."""
+    return table[table.damage_law == "paper"] if "damage_law" in table else table
+
+
+def griffith(sectors: list[Sector], fracture_energy_J_m2: float, modulus: float, gag: dict, concentration: float):
+    """The closed form of a pool as a pressurised straight crack (:mod:`sphgag.fracture`), in the media's plane-strain
+    modulus ``E'`` [kPa]: the concentration at which Griffith's criterion makes the longest seeded pool (half-length
+    half its arc) propagate, and the half-length it needs at ``concentration``, both under Pi(c) of eqs. (2.25-2.26)
+    (the prescribed law; the conserved law's Pi is lower where the pool has swollen)."""
+    gc = fracture_energy_J_m2 * fracture.J_M2
+    a = max(0.5 * np.deg2rad(s.angular_extent_deg) * s.centre_radius for s in sectors)
+    p_c = fracture.griffith_pressure(a, gc, modulus)
+    pi = materials.swelling_pressure(concentration, gag["bath_concentration_mEq_l"], gag["temperature_K"])
+    return dict(
+        griffith_pool_half_length_um=float(a),
+        griffith_pressure_kPa=float(p_c),
+        griffith_concentration_mEq_l=float(
+            materials.concentration_for_pressure(p_c, gag["bath_concentration_mEq_l"], gag["temperature_K"])
+        ),
+        griffith_half_length_um=float(fracture.griffith_half_length(pi, gc, modulus)),
+    )
 
 
 def convergence_study(

@@ -14,11 +14,25 @@ DE_RUNS = [
     for sigma in (DE["critical_stresses_kPa"] if case == FIG5_SET else [DE["critical_stress_kPa"]])
     for criterion in DE["criteria"]
 ]
-DE_SETTINGS = {k: v for k, v in DE.items() if k not in ("pool_sets", "critical_stresses_kPa", "convergence", "figures")}
+DE_SETTINGS = {
+    k: v
+    for k, v in DE.items()
+    if k not in ("pool_sets", "critical_stresses_kPa", "convergence", "figures", "fracture_energy")
+}
 DE_DX = [f"{dx:g}" for dx in DE["convergence"]["dx_um"]]
 DE_RUN = "results/delamination/runs/{law}/{poolset}_{sigma}kPa_{criterion}"
-DE_GROWTH = [f"{DE_RUN}_growth.csv".format(law=law, **r) for law in LAWS for r in DE_RUNS]
-DE_SUMMARIES = [f"{DE_RUN}_summary.csv".format(law=law, **r) for law in LAWS for r in DE_RUNS]
+# the damage law with a fracture energy: figure 5's set at critical_stress_kPa, default criterion, one run per G_c
+# (and per charge law); "paper" is the G_c that the paper's law dissipates in its run of that pool (prescribed law)
+DE_FE = DE["fracture_energy"]
+DE_TOUGHNESS = [f"{g:g}" for g in DE_FE["fracture_energies_J_m2"]] + (["paper"] if DE_FE["match_paper"] else [])
+DE_FE_RUN = dict(poolset=FIG5_SET, sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"][0])
+DE_FE_PATH = "results/delamination/runs/{law}/{poolset}_{sigma}kPa_{criterion}_Gc{gc}"
+DE_GROWTH = [f"{DE_RUN}_growth.csv".format(law=law, **r) for law in LAWS for r in DE_RUNS] + [
+    f"{DE_FE_PATH}_growth.csv".format(law=law, gc=gc, **DE_FE_RUN) for law in LAWS for gc in DE_TOUGHNESS
+]
+DE_SUMMARIES = [f"{DE_RUN}_summary.csv".format(law=law, **r) for law in LAWS for r in DE_RUNS] + [
+    f"{DE_FE_PATH}_summary.csv".format(law=law, gc=gc, **DE_FE_RUN) for law in LAWS for gc in DE_TOUGHNESS
+]
 
 
 wildcard_constraints:
@@ -43,6 +57,41 @@ rule delaminate:
         "logs/delaminate/{law}/{poolset}_{sigma}kPa_{criterion}.log",
     benchmark:
         "results/benchmarks/delaminate_{law}_{poolset}_{sigma}kPa_{criterion}.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
+    params:
+        state_slice=dict(PRESSURISED_SLICE, model="passive"),
+        pools=lambda wildcards: DE["pool_sets"][wildcards.poolset],
+        delamination=DE_SETTINGS,
+        gag=lambda wildcards: GAG[wildcards.law],
+    script:
+        "../scripts/delaminate.py"
+
+
+rule delaminate_fracture_energy:
+    """Pool set {poolset} in the passive wall, {law} charge, grown by the damage law with a fracture energy G_c = {gc}
+    J/m^2 (onset at sigma_cr = {sigma} kPa, {criterion}); G_c = paper: the energy the paper's law dissipates."""
+    input:
+        code=SPHGAG,
+        state=f"results/states/passive_{DE_PRESSURE}mmHg.npz",
+        matched=lambda wildcards: (
+            f"{DE_RUN}_summary.csv".format(law="prescribed", **DE_FE_RUN) if wildcards.gc == "paper" else []
+        ),
+    output:
+        growth=f"{DE_FE_PATH}_growth.csv",
+        summary=f"{DE_FE_PATH}_summary.csv",
+        snapshots=f"{DE_FE_PATH}_snapshots.npz",
+        provenance="results/provenance/delaminate_{law}_{poolset}_{sigma}kPa_{criterion}_Gc{gc}.json",
+    log:
+        "logs/delaminate/{law}/{poolset}_{sigma}kPa_{criterion}_Gc{gc}.log",
+    benchmark:
+        "results/benchmarks/delaminate_{law}_{poolset}_{sigma}kPa_{criterion}_Gc{gc}.tsv"
+    wildcard_constraints:
+        gc="|".join(re.escape(g) for g in DE_TOUGHNESS),
     conda:
         "../envs/sphgag.yaml"
     threads: 1

@@ -5,7 +5,7 @@ claims on the pool sets of their figures (``params.figures``, i.e. ``delaminatio
 
 import pandas as pd
 
-from sphgag import claims, runlog
+from sphgag import claims, delamination, runlog
 
 sm = snakemake  # noqa: F821
 with runlog.run("claims", sm.log[0]) as log:
@@ -14,6 +14,8 @@ with runlog.run("claims", sm.log[0]) as log:
         k: pd.read_csv(sm.input[k])
         for k in ("mean", "bilayer", "activation", "layers", "transmural", "tips", "growth", "delamination")
     }
+    # the paper's claims are about its damage law (eq. 2.28 as printed)
+    t["growth"], t["delamination"] = delamination.paper_law(t["growth"]), delamination.paper_law(t["delamination"])
     found = claims.calibration_claims(t["mean"], t["bilayer"], t["activation"], t["layers"], t["transmural"])
     found += claims.by_law(
         p.laws, lambda law: claims.swelling_claims(claims.of_law(t["tips"], law), p.cases, p.max_concentration)

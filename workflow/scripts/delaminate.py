@@ -1,9 +1,11 @@
-"""Rule delaminate: seed one pool set in the passive wall, swell it under one charge law and let damage grow it
-(figures 5-7)."""
+"""Rules delaminate and delaminate_fracture_energy: seed one pool set in the passive wall, swell it under one charge law
+and let damage grow it, by eq. (2.28) as printed (figures 5-7) or by the damage law with a fracture energy G_c
+(wildcard ``gc``: J/m^2, or ``paper`` for the energy the paper's law dissipates in the matched run)."""
 
 import time
 
 import numba
+import pandas as pd
 
 from sphgag import artery, delamination, provenance, runlog, solver, state
 
@@ -11,12 +13,26 @@ sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)
 started = time.time()
 w = sm.wildcards
-run = f"delaminate_{w.law}_{w.poolset}_{w.sigma}kPa_{w.criterion}"
+gc = getattr(w, "gc", None)
+run = f"delaminate_{w.law}_{w.poolset}_{w.sigma}kPa_{w.criterion}" + (f"_Gc{gc}" if gc else "")
 with runlog.run(run, sm.log[0]) as log:
     cfg, de = sm.params.state_slice, sm.params.delamination
     model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=run)
     saved = state.load(sm.input.state, expected_params=cfg)
-    settings = delamination.Settings.from_config(de, float(w.sigma), w.criterion)
+    fracture_energy = None
+    if gc == "paper":
+        fracture_energy = float(pd.read_csv(sm.input.matched).dissipated_energy_J_m2.iloc[0])
+        if not fracture_energy > 0.0:
+            raise ValueError(
+                f"[{run}] the paper's law dissipated no energy in {sm.input.matched} (no growth): there is no G_c to "
+                "match; set delamination.fracture_energy.match_paper: false"
+            )
+        log.info(
+            "[%s] G_c = %.4g J/m^2: the energy the paper's law dissipates (%s)", run, fracture_energy, sm.input.matched
+        )
+    elif gc is not None:
+        fracture_energy = float(gc)
+    settings = delamination.Settings.from_config(de, float(w.sigma), w.criterion, fracture_energy)
     sectors = [artery.pool_sector(s) for s in sm.params.pools]
     result = delamination.grow(
         model,
@@ -29,6 +45,11 @@ with runlog.run(run, sm.log[0]) as log:
         run=run,
     )
     growth, summary = delamination.labelled(result, w.poolset, settings, cfg["bilayer"]["dx_um"])
+    if fracture_energy is not None:  # the pool as a pressurised crack in the media's elastin matrix, E' = 4 phi_e mu_e
+        bl = cfg["bilayer"]
+        modulus = 4.0 * bl["mass_fractions"]["media"]["elastin"] * bl["elastin_shear_modulus_kPa"]
+        closed = delamination.griffith(sectors, fracture_energy, modulus, sm.params.gag, de["max_concentration_mEq_l"])
+        summary = summary.assign(plane_strain_modulus_kPa=modulus, **closed)
     growth.insert(0, "charge_law", sm.params.gag["charge_law"])
     summary.insert(0, "charge_law", sm.params.gag["charge_law"])
     growth.to_csv(sm.output.growth, index=False)
