@@ -62,6 +62,20 @@ CONTRACT = {
         "residual",
     ],
     "results/claims.csv": ["claim_id", "charge_law", "statement", "paper_value", "our_value", "holds"],
+    "results/verification/pressurised_crack.csv": [
+        "dx_um",
+        "half_length_um",
+        "plane_strain_modulus_kPa",
+        "fracture_energy_J_m2",
+        "critical_pressure_kPa",
+        "griffith_kPa",
+        "rel_error",
+        "pressure_kPa",
+        "opening_area_um2",
+        "sneddon_um2",
+        "dissipated_J_m2",
+        "residual",
+    ],
     "results/verification/elliptic_pool.csv": [
         "dx_um",
         "semi_axis_a_um",
@@ -91,6 +105,8 @@ CONTRACT = {
         "sigma_cr_kPa",
         "criterion",
         "dx_um",
+        "damage_law",
+        "fracture_energy_J_m2",
         "step",
         "pseudo_time",
         "concentration_mEq_l",
@@ -107,6 +123,8 @@ CONTRACT = {
         "sigma_cr_kPa",
         "criterion",
         "dx_um",
+        "damage_law",
+        "fracture_energy_J_m2",
         "onset_concentration_mEq_l",
         "final_length_um",
         "growth_rate_um_per_pseudo_time",
@@ -185,9 +203,54 @@ def test_pool_states_that_converged_before_issue_15_are_unchanged(workdir):
     runs = ["case", "sigma_cr_kPa", "criterion"]
     was = pd.read_csv(ROOT / "tests/data/ci_delamination_before_issue15.csv").set_index(runs)
     summary = pd.read_csv(workdir / "results/delamination/summary.csv")
+    summary = summary[summary.damage_law == "paper"]
     now = summary[summary.charge_law == "conserved"].set_index(runs).loc[was.index]
     assert np.allclose(now.final_length_um, was.final_length_um, atol=0.05)
     assert now.onset_concentration_mEq_l.equals(was.onset_concentration_mEq_l) and now.merged.equals(was.merged)
+
+
+def test_the_papers_damage_law_gives_every_delamination_result_it_gave_before_issue_16(workdir):
+    """With ``damage_law: paper`` (eq. 2.28 as printed), the fracture-energy law and the onset energy in the histories
+    leave every delamination run of the CI config (both charge laws) as the code before them left it (tests/data,
+    from its CI run), to the printed digits."""
+    runs = ["charge_law", "case", "sigma_cr_kPa", "criterion"]
+    was = pd.read_csv(ROOT / "tests/data/ci_delamination_before_issue16.csv").set_index(runs)
+    summary = pd.read_csv(workdir / "results/delamination/summary.csv")
+    assert set(summary.damage_law) == {"paper", "fracture_energy"}
+    now = summary[summary.damage_law == "paper"].set_index(runs)
+    assert now.index.is_unique and now.index.isin(was.index).all()
+    now = now.loc[was.index]
+    for column in was.columns:
+        if was[column].dtype == object or was[column].dtype == bool:
+            assert now[column].astype(str).tolist() == was[column].astype(str).tolist(), column
+        else:
+            assert np.allclose(now[column], was[column], rtol=5e-4, atol=1e-3, equal_nan=True), column
+
+
+def test_fracture_energy_runs_are_rows_of_the_delamination_tables_beside_their_closed_form(workdir, ci_config):
+    """Figure 5's pool under every charge law, at every configured G_c and at the one the paper's law dissipates,
+    each with Griffith's closed form for the same pool."""
+    de = ci_config["delamination"]
+    summary = pd.read_csv(workdir / "results/delamination/summary.csv")
+    growth = pd.read_csv(workdir / "results/delamination/growth.csv")
+    fe = summary[summary.damage_law == "fracture_energy"]
+    matched = summary[
+        (summary.damage_law == "paper")
+        & (summary.charge_law == "prescribed")
+        & (summary.case == de["figures"]["fig5"])
+        & (summary.sigma_cr_kPa == de["critical_stress_kPa"])
+        & (summary.criterion == de["criteria"][0])
+    ].dissipated_energy_J_m2
+    wanted = sorted(de["fracture_energy"]["fracture_energies_J_m2"] + [float(matched.iloc[0])])
+    for law in ci_config["gag"]["charge_laws"]:
+        rows = fe[fe.charge_law == law]
+        assert np.allclose(sorted(rows.fracture_energy_J_m2), wanted), law
+        assert (rows.case == de["figures"]["fig5"]).all() and (rows.criterion == de["criteria"][0]).all()
+    assert (fe.griffith_concentration_mEq_l > 0).all() and (fe.griffith_half_length_um > 0).all()
+    # the tougher the media, the higher the concentration Griffith needs
+    prescribed = fe[fe.charge_law == "prescribed"].sort_values("fracture_energy_J_m2")
+    assert np.all(np.diff(prescribed.griffith_concentration_mEq_l) > 0)
+    assert set(growth.damage_law) == {"paper", "fracture_energy"}
 
 
 def test_outputs_follow_the_data_contracts(workdir, ci_config):
@@ -488,7 +551,9 @@ SIMULATIONS = {
     "swelling_convergence_dx",
     "swelling_convergence_stresses",
     "delaminate",
+    "delaminate_fracture_energy",
     "delamination_convergence_dx",
+    "verify_crack_length",
 }
 
 
@@ -532,8 +597,14 @@ def test_adding_a_charge_law_adds_its_own_jobs(fresh_copy, ci_config, tmp_path):
     alone = planned_jobs(plan(fresh_copy, "--configfile", str(written_config(tmp_path, one)))[1])
     both = planned_jobs(plan(fresh_copy, "--configfile", "config/ci.yaml")[1])
     assert ci_config["gag"]["charge_laws"] == ["prescribed", "conserved"]
+    de = ci_config["delamination"]
+    # the G_c the paper's law dissipates comes from its prescribed-law run of figure 5's pool at critical_stress_kPa,
+    # which runs for that alone where figure 5's sigmas do not include it
+    matched = de["fracture_energy"]["match_paper"] and de["critical_stress_kPa"] not in de["critical_stresses_kPa"]
     for rule, n in law_jobs(ci_config).items():
-        assert (alone[rule], both[rule]) == (n, 2 * n), rule
+        assert (alone[rule], both[rule]) == (n, 2 * n + (matched if rule == "delaminate" else 0)), rule
+    n = len(de["fracture_energy"]["fracture_energies_J_m2"])
+    assert (alone["delaminate_fracture_energy"], both["delaminate_fracture_energy"]) == (n, 2 * (n + 1))
 
 
 def renamed(ci_config, old="low_separation", new="pair_2deg"):

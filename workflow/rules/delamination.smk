@@ -24,7 +24,9 @@ DE_RUN = "results/delamination/runs/{law}/{poolset}_{sigma}kPa_{criterion}"
 # the damage law with a fracture energy: figure 5's set at critical_stress_kPa, default criterion, one run per G_c
 # (and per charge law); "paper" is the G_c that the paper's law dissipates in its run of that pool (prescribed law)
 DE_FE = DE["fracture_energy"]
-DE_TOUGHNESS = [f"{g:g}" for g in DE_FE["fracture_energies_J_m2"]] + (["paper"] if DE_FE["match_paper"] else [])
+# (matched where the prescribed law is studied: the conserved law's default run does not grow)
+DE_MATCH = DE_FE["match_paper"] and "prescribed" in LAWS
+DE_TOUGHNESS = [f"{g:g}" for g in DE_FE["fracture_energies_J_m2"]] + (["paper"] if DE_MATCH else [])
 DE_FE_RUN = dict(poolset=FIG5_SET, sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"][0])
 DE_FE_PATH = "results/delamination/runs/{law}/{poolset}_{sigma}kPa_{criterion}_Gc{gc}"
 DE_GROWTH = [f"{DE_RUN}_growth.csv".format(law=law, **r) for law in LAWS for r in DE_RUNS] + [
