@@ -589,7 +589,7 @@ def verification_crack(table: pd.DataFrame, modulus: float, fracture_energy_J_m2
         t = table[table.dx_um == dx]
         ax.plot(t.half_length_um, t.critical_pressure_kPa, "o", color=colours[dx], ms=5, label=f"SPH, dx = {dx:g} um")
     ax.set(xlabel="crack half-length a [um]", ylabel="face pressure at growth [kPa]", title="(a) onset of growth")
-    style_legend(ax, fontsize=6.5)
+    ax.legend(frameon=False, fontsize=6.5)
     ax = axes[1]
     ax.plot(a, fracture.opening_area(a, 1.0, modulus), "k-", lw=1.2, label="Sneddon")
     for dx in spacings:
@@ -602,7 +602,7 @@ def verification_crack(table: pd.DataFrame, modulus: float, fracture_energy_J_m2
         ylabel="opening area / pressure [um^2/kPa]",
         title="(b) opening before growth",
     )
-    style_legend(ax, fontsize=6.5)
+    ax.legend(frameon=False, fontsize=6.5)
     ax = axes[2]
     lengths = sorted(table.half_length_um.unique())
     hue = dict(zip(lengths, sns.color_palette("rocket", len(lengths))))
@@ -627,7 +627,7 @@ def verification_crack(table: pd.DataFrame, modulus: float, fracture_energy_J_m2
     ax.set(
         xscale="log", yscale="log", xlabel="dx [um]", ylabel="|relative error|", title="(c) errors against resolution"
     )
-    style_legend(ax, "upper left", fontsize=5.5, bbox_to_anchor=(1.0, 1.0))
+    ax.legend(frameon=False, fontsize=5.5, loc="upper left", bbox_to_anchor=(1.0, 1.0))
     return fig
 
 
