@@ -75,7 +75,7 @@ class SlitLayout:
 def slit_layout(a: float, dx: float, size: float, band_rows: int = 1) -> SlitLayout:
     """The quarter block ``[0, size]^2`` at spacing ``dx``; ``a`` and ``size`` are rounded to whole cells."""
     n_a, n = int(round(a / dx)), int(round(size / dx))
-    if not (band_rows >= 1 and n_a >= 2 and n >= n_a + 2 * band_rows + 3):  # at least two band cells ahead
+    if not (band_rows >= 1 and n_a >= 2 and n >= n_a + band_rows + 3):  # at least two band cells ahead
         raise ValueError(f"need a >= 2 dx and a block beyond the crack (a={a}, dx={dx}, size={size})")
     i, j = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
     i, j = i.ravel(), j.ravel()
@@ -87,7 +87,7 @@ def slit_layout(a: float, dx: float, size: float, band_rows: int = 1) -> SlitLay
         volume=np.full(i.size, dx * dx),
         theta=np.zeros(i.size),
         slit=np.flatnonzero(rows & (i < n_a)),
-        band=np.flatnonzero(rows & (i >= n_a) & (i < n - 1 - 2 * band_rows)),
+        band=np.flatnonzero(rows & (i >= n_a) & (i < n - 1 - band_rows)),
         outer_surface=np.flatnonzero(held),
         a=n_a * dx,
         b=band_rows * dx,

@@ -1,0 +1,66 @@
+"""The pressurised-crack verification problem (sphgag.crack): its layout, its load and its opening before growth."""
+
+import numpy as np
+import pytest
+
+from sphgag import crack, fracture, inclusion, materials
+
+NUMERICS = dict(
+    kernel_support_factor=2.5,
+    hourglass_alpha=5.0,
+    tolerance=1e-4,
+    max_newton_iterations=30,
+    max_bisections=10,
+    reuse_factorisation=True,
+)
+MAT = inclusion.Materials(
+    mu=89.71, lam=10000.0, mu_gag=0.1, lam_gag=0.0, hourglass_modulus=89.71, gag_hourglass_modulus=89.71
+)
+GAG = dict(
+    charge_law="prescribed",
+    bath_concentration_mEq_l=300.0,
+    temperature_K=310.0,
+    shear_modulus_kPa=0.1,
+    hourglass_modulus_kPa=89.71,
+    lame_lambda_kPa=0.0,
+)
+
+
+def problem(a=20.0, dx=2.0, rows=3):
+    return crack.Problem(a, dx, 2.0, rows, MAT, GAG, 4.0, 3.6e-4)
+
+
+def test_the_concentration_for_a_pressure_inverts_the_donnan_law():
+    c = np.array([0.0, 10.0, 150.0, 400.0])
+    pi = materials.swelling_pressure(c, 300.0, 310.0)
+    assert materials.concentration_for_pressure(pi, 300.0, 310.0) == pytest.approx(c, abs=1e-9)
+
+
+def test_the_slit_layout_fills_the_quarter_block_with_the_slit_and_its_band_on_the_crack_line():
+    lay = crack.slit_layout(22.6, 2.0, 33.4, band_rows=3)  # rounded to whole cells
+    assert (lay.a, lay.b, lay.size) == (22.0, 6.0, 34.0)
+    assert lay.volume.sum() == pytest.approx(lay.size**2)
+    assert np.all(lay.X[lay.slit, 0] < lay.a) and np.all(lay.X[lay.slit, 1] < lay.b)
+    assert np.all(lay.X[lay.band, 0] > lay.a) and np.all(lay.X[lay.band, 1] < lay.b)
+    assert lay.slit.size == 11 * 3 and not np.intersect1d(lay.band, lay.outer_surface).size
+    with pytest.raises(ValueError, match="block beyond the crack"):
+        crack.slit_layout(20.0, 2.0, 30.0, band_rows=3)
+
+
+def test_the_cohesive_length_and_griffith_pressure_of_the_problem():
+    pr = problem()
+    assert pr.modulus == pytest.approx(fracture.plane_strain_modulus(MAT.mu, MAT.poisson_ratio))
+    assert pr.cohesive_length == pytest.approx(pr.modulus * 0.36 / 16.0)
+    assert pr.griffith(20.0) == pytest.approx(np.sqrt(pr.modulus * 0.36 / (np.pi * 20.0)))
+    load = crack.load_at(pr, 0.8)
+    pi = materials.swelling_pressure(load.material_value("concentration"), 300.0, 310.0)
+    assert pi == pytest.approx(0.8) and load.material_value("face_pressure") == 0.8
+
+
+def test_a_coarse_slit_opens_as_sneddons_crack_before_it_grows():
+    """One level, no damage pass needed to compare: the opening area of a 20 um crack at dx = 2 um within 5 %."""
+    pr = problem(rows=1)  # a slit 2 dx = 4 um thick: b / a = 0.1
+    p = 0.5 * pr.griffith(20.0)
+    g = crack.grow(pr, NUMERICS, [p], growth_cells=2)
+    assert g.opening_area == pytest.approx(fracture.opening_area(20.0, p, pr.modulus), rel=0.05)
+    assert g.max_residual < 1e-4 and np.isnan(g.critical_pressure)  # no growth at half Griffith's pressure
