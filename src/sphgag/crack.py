@@ -36,10 +36,10 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from . import damage, fracture, inglis, kernel, materials, protocols, solver
+from . import damage, fracture, kernel, materials, protocols, solver
 from .delamination import intact_energy
 from .history import HistoryMaterial, ParticleHistory
-from .inclusion import Materials
+from .inclusion import ExactBoundary, Materials
 from .loading import Load
 from .model import Model
 
@@ -96,19 +96,6 @@ def slit_layout(a: float, dx: float, size: float, band_rows: int = 1) -> SlitLay
     )
 
 
-class ExactBoundary:
-    """The held layer on the exact displacement of the pressurised elliptical hole ``a x b`` at the load's pressure."""
-
-    def __init__(self, layout: SlitLayout, mat: Materials):
-        self.idx = layout.outer_surface
-        X = layout.X[self.idx]
-        u = inglis.field(X[:, 0], X[:, 1], layout.a, layout.b, 1.0, mat.mu, mat.poisson_ratio)
-        self.X, self.u = X, np.column_stack([u["ux"], u["uy"]])
-
-    def __call__(self, load: Load):
-        return self.idx, self.X + load.material_value("face_pressure", 0.0) * self.u
-
-
 @dataclass(frozen=True)
 class Problem:
     """The crack problem of one ``(a, dx)``: the ``verification.crack`` configuration, the matrix and the GAG."""
@@ -159,7 +146,8 @@ def crack_model(problem: Problem, numerics: dict, name: str = "crack") -> tuple[
     table[:, materials.HG_E] = problem.mat.hourglass_modulus
     table.setflags(write=False)
     material = HistoryMaterial(lambda load: table.copy(), ParticleHistory.intact(lay.n).seed([lay.slit]), problem.gag)
-    model = Model(name, lay, nb, material, numerics["hourglass_alpha"], boundary=ExactBoundary(lay, problem.mat))
+    boundary = ExactBoundary(lay, problem.mat, pressure="face_pressure")
+    model = Model(name, lay, nb, material, numerics["hourglass_alpha"], boundary=boundary)
     return model, material
 
 
@@ -267,14 +255,7 @@ def study(half_length: float, vc: dict, matrix: dict, gag: dict, numerics: dict,
 
     ``vc``: the ``verification.crack`` configuration; ``matrix`` and ``gag`` as :func:`sphgag.inclusion.study`.
     """
-    mat = Materials(
-        mu=matrix["shear_modulus_kPa"],
-        lam=matrix["lame_lambda_kPa"],
-        mu_gag=gag["shear_modulus_kPa"],
-        lam_gag=0.0,
-        hourglass_modulus=matrix["hourglass_modulus_kPa"],
-        gag_hourglass_modulus=gag["hourglass_modulus_kPa"],
-    )
+    mat = Materials.of(matrix, gag)
     gag_law = dict(
         charge_law="prescribed",
         bath_concentration_mEq_l=gag["bath_concentration_mEq_l"],

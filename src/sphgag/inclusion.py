@@ -162,6 +162,19 @@ class Materials:
     hourglass_modulus: float
     gag_hourglass_modulus: float
 
+    @classmethod
+    def of(cls, matrix: dict, gag: dict) -> Materials:
+        """The elastin matrix (``matrix``: shear modulus, Lame parameter, hourglass modulus) around GAG of ``gag``'s
+        shear and hourglass moduli, without the bulk term (eq. 2.27 as printed)."""
+        return cls(
+            mu=matrix["shear_modulus_kPa"],
+            lam=matrix["lame_lambda_kPa"],
+            mu_gag=gag["shear_modulus_kPa"],
+            lam_gag=0.0,
+            hourglass_modulus=matrix["hourglass_modulus_kPa"],
+            gag_hourglass_modulus=gag["hourglass_modulus_kPa"],
+        )
+
     @property
     def poisson_ratio(self) -> float:
         """Plane-strain Poisson's ratio of the linearised matrix law, lambda / (2 (lambda + mu))."""
@@ -188,16 +201,17 @@ class InclusionMaterial:
 
 
 class ExactBoundary:
-    """The outermost ring on the exact infinite-plate displacement of the pressurised hole."""
+    """The outer surface of a layout with a hole of half-axes ``layout.a``, ``layout.b`` held on the exact
+    infinite-plate displacement of the hole under the pressure the load names ``pressure`` (Inglis)."""
 
-    def __init__(self, layout: EllipseLayout, mat: Materials):
-        self.idx = layout.outer_surface
+    def __init__(self, layout, mat: Materials, pressure: str = "swelling_pressure"):
+        self.idx, self.pressure = layout.outer_surface, pressure
         X = layout.X[self.idx]
         u = inglis.field(X[:, 0], X[:, 1], layout.a, layout.b, 1.0, mat.mu, mat.poisson_ratio)
         self.X, self.u = X, np.column_stack([u["ux"], u["uy"]])
 
     def __call__(self, load: Load):
-        return self.idx, self.X + load.material_value("swelling_pressure", 0.0) * self.u
+        return self.idx, self.X + load.material_value(self.pressure, 0.0) * self.u
 
 
 def inclusion_model(a, b, dx, extent, mat: Materials, numerics: dict, name: str = "inclusion") -> Model:
@@ -344,14 +358,7 @@ def study(aspect_ratio: float, vp: dict, matrix: dict, gag: dict, numerics: dict
     b = float(vp["semi_axis_b_um"])
     a = float(aspect_ratio) * b
     Pi = float(vp["swelling_pressure_kPa"])
-    mat = Materials(
-        mu=matrix["shear_modulus_kPa"],
-        lam=matrix["lame_lambda_kPa"],
-        mu_gag=gag["shear_modulus_kPa"],
-        lam_gag=0.0,
-        hourglass_modulus=matrix["hourglass_modulus_kPa"],
-        gag_hourglass_modulus=gag["hourglass_modulus_kPa"],
-    )
+    mat = Materials.of(matrix, gag)
     extent = max(vp["extent_factor"] * a, 3.0 * b)
     rows, profiles = [], []
     for res in vp["resolutions"]:
@@ -383,5 +390,10 @@ def study(aspect_ratio: float, vp: dict, matrix: dict, gag: dict, numerics: dict
 
 
 def observed_order(dx, error) -> float:
-    """Slope of log|error| against log dx (least squares): the observed order of convergence."""
-    return float(np.polyfit(np.log(np.asarray(dx, float)), np.log(np.abs(np.asarray(error, float))), 1)[0])
+    """Slope of log|error| against log dx (least squares) over the finite, nonzero errors: the observed order of
+    convergence (NaN with fewer than two)."""
+    dx, error = np.asarray(dx, float), np.abs(np.asarray(error, float))
+    ok = np.isfinite(error) & (error > 0.0)
+    if ok.sum() < 2:
+        return float("nan")
+    return float(np.polyfit(np.log(dx[ok]), np.log(error[ok]), 1)[0])

@@ -15,21 +15,14 @@ with runlog.run(run, sm.log[0]) as log:
         float(sm.wildcards.length), sm.params.crack, sm.params.matrix, sm.params.gag, sm.params.numerics, log
     )
     table.to_csv(sm.output.table, index=False)
-    orders = {}
-    for key in ("rel_error", "area_rel_error", "energy_rel_error"):
-        ok = table[key].notna() & (table[key] != 0.0)
-        orders[key] = inclusion.observed_order(table.dx_um[ok], table[key][ok]) if ok.sum() >= 2 else float("nan")
+    orders = {
+        k: inclusion.observed_order(table.dx_um, table[k]) for k in ("rel_error", "area_rel_error", "energy_rel_error")
+    }
     log.info("[%s] observed orders: %s", run, ", ".join(f"{k} {v:.2f}" for k, v in orders.items()))
     provenance.write_record(
         sm.output.provenance,
         rule="verify_crack",
-        params=dict(
-            length=sm.wildcards.length,
-            crack=sm.params.crack,
-            matrix=sm.params.matrix,
-            gag=sm.params.gag,
-            numerics=sm.params.numerics,
-        ),
+        params=dict(length=sm.wildcards.length, **dict(sm.params.items())),
         outputs=list(sm.output),
         summary=dict(
             finest_rel_error=float(table.rel_error.iloc[-1]),
