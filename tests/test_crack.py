@@ -27,7 +27,7 @@ GAG = dict(
 
 
 def problem(a=20.0, dx=2.0, rows=3):
-    return crack.Problem(a, dx, 2.0, rows, MAT, GAG, 4.0, 3.6e-4)
+    return crack.Problem(a, dx, 2.0, rows, rows, MAT, GAG, 4.0, 3.6e-4)
 
 
 def test_the_concentration_for_a_pressure_inverts_the_donnan_law():
@@ -37,14 +37,31 @@ def test_the_concentration_for_a_pressure_inverts_the_donnan_law():
 
 
 def test_the_slit_layout_fills_the_quarter_block_with_the_slit_and_its_band_on_the_crack_line():
-    lay = crack.slit_layout(22.6, 2.0, 33.4, band_rows=3)  # rounded to whole cells
-    assert (lay.a, lay.b, lay.size) == (22.0, 6.0, 34.0)
+    lay = crack.slit_layout(22.6, 2.0, 33.4, slit_rows=3, band_rows=3)  # rounded to whole cells
+    assert (lay.a, lay.b, lay.band_width, lay.size) == (22.0, 6.0, 12.0, 34.0)
     assert lay.volume.sum() == pytest.approx(lay.size**2)
     assert np.all(lay.X[lay.slit, 0] < lay.a) and np.all(lay.X[lay.slit, 1] < lay.b)
     assert np.all(lay.X[lay.band, 0] > lay.a) and np.all(lay.X[lay.band, 1] < lay.b)
     assert lay.slit.size == 11 * 3 and not np.intersect1d(lay.band, lay.outer_surface).size
     with pytest.raises(ValueError, match="block beyond the crack"):
-        crack.slit_layout(20.0, 2.0, 30.0, band_rows=3)
+        crack.slit_layout(20.0, 2.0, 30.0, slit_rows=3, band_rows=3)
+    with pytest.raises(ValueError, match="slit_rows <= band_rows"):
+        crack.slit_layout(20.0, 2.0, 40.0, slit_rows=3, band_rows=2)
+
+
+def test_a_band_column_damages_as_one_element_and_the_tip_is_the_end_of_the_broken_crack_line():
+    lay = crack.slit_layout(10.0, 1.0, 20.0, slit_rows=1, band_rows=3)
+    values = np.arange(lay.n, dtype=float)
+    mean = lay.column_mean(values)
+    col = lay.band[np.isclose(lay.X[lay.band, 0], 12.5)]
+    assert col.size == 3 and np.all(mean[col] == values[col].mean())
+    outside = np.setdiff1d(np.arange(lay.n), lay.band)
+    assert np.array_equal(mean[outside], values[outside])
+    gag = np.zeros(lay.n, dtype=bool)
+    gag[lay.slit] = True
+    assert lay.tip(gag) == 10.0
+    gag[lay.line[[10, 11, 13]]] = True  # 10, 11 extend the crack; 13 is beyond an unbroken particle
+    assert lay.tip(gag) == 12.0
 
 
 def test_the_cohesive_length_and_griffith_pressure_of_the_problem():

@@ -13,20 +13,27 @@ its faces loaded by a pressure ``p``, in the linear regime:
 
 **Layout.** A quarter block ``[0, L]^2`` of square cells of side ``dx`` (mirror planes on
 both axes, :mod:`sphgag.kernel`). The crack is a slit of GAG particles (eq. 2.27, the
-prescribed Donnan law at the concentration whose Pi is ``p``): the first ``band_rows`` rows
-(half-thickness ``b = band_rows dx``) for ``x < a`` (``a`` on a cell edge). Ahead of it the
-same rows are the damage band: the candidates, of band width ``h = 2 b``. The outer layer of
-cells is held on the exact displacement of the pressurised elliptical hole with the slit's
-half-axes (:func:`sphgag.inglis.field`; Sneddon's crack as ``b/a -> 0``).
+prescribed Donnan law at the concentration whose Pi is ``p``): the first ``slit_rows`` rows
+(half-thickness ``b = slit_rows dx``; one row, a sharp crack) for ``x < a`` (``a`` on a cell
+edge). Ahead of it the first ``band_rows`` rows are the damage band, of width
+``h = 2 band_rows dx``; each of its columns (its particles at one ``x``) is one crack-band
+element: its onset measure and its energy density are the column's means, so that it
+damages and ruptures as one (:meth:`SlitLayout.column_mean`). A band of one row is thinner
+than the stencil a particle's deformation gradient is averaged over (2.5 dx): it ruptures
+alone while the rows beside it unload, and the crack needs far more than Griffith's
+pressure. The outer layer of cells is held on the exact displacement of the pressurised
+elliptical hole with the slit's half-axes (:class:`sphgag.inclusion.ExactBoundary`;
+Sneddon's crack as ``b/a -> 0``).
 
 **Growth** (as :mod:`sphgag.delamination`): the pressure is raised level by level; at each,
-damage passes run until the band arrests: the onset measure is the candidate's own opening
-stress ``sigma_yy`` (eq. 2.10), a ruptured particle (D = 1) becomes a GAG particle of the
+damage passes run until the band arrests: the onset measure is the opening stress ``sigma_yy``
+(eq. 2.10) of the candidate's column, a ruptured particle (D = 1) becomes a GAG particle of the
 slit along the conversion path, and every state is converged. Under pressure control
 Griffith growth is unstable from its first step, so the onset of growth is the pressure
 level of the first rupture; the run then follows the growth at that pressure. The
 dissipated energy is that the damage releases at fixed deformation (``dD W_0 V``); its
-slope against the new crack length is the energy per unit crack area.
+slope against the crack's advance (its tip on the crack line) is the energy per unit crack
+area.
 """
 
 from __future__ import annotations
@@ -51,11 +58,13 @@ class SlitLayout:
     X: np.ndarray
     volume: np.ndarray
     theta: np.ndarray
-    slit: np.ndarray  # GAG particles of the initial crack
-    band: np.ndarray  # candidates: the slit's rows ahead of the tip, off the held layer
+    slit: np.ndarray  # GAG particles of the initial crack: its rows behind the tip
+    band: np.ndarray  # candidates: the band's rows ahead of the tip, off the held layer
+    line: np.ndarray  # the row on the crack line (y = dx/2), ordered by x: its converted particles give the tip
     outer_surface: np.ndarray  # held on the exact far field
     a: float
-    b: float
+    b: float  # the slit's half-thickness
+    band_width: float  # h: the full width of the damage band (both sides of the crack line)
     dx: float
     size: float
 
@@ -71,26 +80,44 @@ class SlitLayout:
     def outer_radius(self) -> float:
         return float(np.linalg.norm(self.X, axis=1).max())
 
+    def column_mean(self, values: np.ndarray) -> np.ndarray:
+        """``values`` with each band column (the band's particles at one ``x``: one crack-band element) replaced by
+        its mean, so that a column damages, and ruptures, as one."""
+        out = np.array(values, dtype=float)
+        col = np.round(self.X[self.band, 0] / self.dx - 0.5).astype(np.int64)
+        out[self.band] = (np.bincount(col, out[self.band]) / np.maximum(np.bincount(col), 1))[col]
+        return out
 
-def slit_layout(a: float, dx: float, size: float, band_rows: int = 1) -> SlitLayout:
+    def tip(self, gag: np.ndarray) -> float:
+        """The crack tip: the far edge of the last GAG particle of the crack line's unbroken run from x = 0."""
+        on = gag[self.line]
+        k = int(np.argmin(on)) if not on.all() else on.size
+        return k * self.dx
+
+
+def slit_layout(a: float, dx: float, size: float, slit_rows: int = 1, band_rows: int = 3) -> SlitLayout:
     """The quarter block ``[0, size]^2`` at spacing ``dx``; ``a`` and ``size`` are rounded to whole cells."""
     n_a, n = int(round(a / dx)), int(round(size / dx))
-    if not (band_rows >= 1 and n_a >= 2 and n >= n_a + band_rows + 3):  # at least two band cells ahead
-        raise ValueError(f"need a >= 2 dx and a block beyond the crack (a={a}, dx={dx}, size={size})")
+    if not (1 <= slit_rows <= band_rows and n_a >= 2 and n >= n_a + band_rows + 3):  # two band cells ahead at least
+        raise ValueError(
+            f"need a >= 2 dx, 1 <= slit_rows <= band_rows and a block beyond the crack (a={a}, dx={dx}, size={size}, "
+            f"slit_rows={slit_rows}, band_rows={band_rows})"
+        )
     i, j = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
     i, j = i.ravel(), j.ravel()
     X = np.column_stack([(i + 0.5) * dx, (j + 0.5) * dx])
     held = (i == n - 1) | (j == n - 1)
-    rows = j < band_rows
     return SlitLayout(
         X=X,
         volume=np.full(i.size, dx * dx),
         theta=np.zeros(i.size),
-        slit=np.flatnonzero(rows & (i < n_a)),
-        band=np.flatnonzero(rows & (i >= n_a) & (i < n - 1 - band_rows)),
+        slit=np.flatnonzero((j < slit_rows) & (i < n_a)),
+        band=np.flatnonzero((j < band_rows) & (i >= n_a) & (i < n - 1 - band_rows)),
+        line=np.flatnonzero(j == 0),  # i-major order: by x
         outer_surface=np.flatnonzero(held),
         a=n_a * dx,
-        b=band_rows * dx,
+        b=slit_rows * dx,
+        band_width=2.0 * band_rows * dx,
         dx=float(dx),
         size=n * dx,
     )
@@ -103,6 +130,7 @@ class Problem:
     a: float
     dx: float
     size_factor: float
+    slit_rows: int
     band_rows: int
     mat: Materials
     gag: dict  # HistoryMaterial's GAG parameters (prescribed Donnan law)
@@ -139,7 +167,7 @@ def load_at(problem: Problem, pressure: float, transition: float | None = None) 
 
 def crack_model(problem: Problem, numerics: dict, name: str = "crack") -> tuple[Model, HistoryMaterial]:
     """The block with its slit (seeded GAG), mirror planes on both axes and the exact far field on its outer layer."""
-    lay = slit_layout(problem.a, problem.dx, problem.size_factor * problem.a, problem.band_rows)
+    lay = slit_layout(problem.a, problem.dx, problem.size_factor * problem.a, problem.slit_rows, problem.band_rows)
     nb = kernel.build_neighbours(lay.X, lay.volume, numerics["kernel_support_factor"] * lay.dx, mirrors=(1, 2))
     table = materials.empty_props(lay.n)
     table[:, materials.MU], table[:, materials.LAM] = problem.mat.mu, problem.mat.lam
@@ -176,6 +204,7 @@ class Growth:
     passes: list  # (pressure, new crack length [um], dissipated energy of the quarter [kPa um^2], residual)
     max_residual: float
     onset_pressure: float  # the level of the first damage onset
+    history: ParticleHistory  # at the end
 
 
 def grow(problem: Problem, numerics: dict, levels, growth_cells: int, log=None, name="crack") -> Growth:
@@ -183,11 +212,11 @@ def grow(problem: Problem, numerics: dict, levels, growth_cells: int, log=None, 
     ``growth_cells`` cells or the band is used up (module docstring)."""
     model, material = crack_model(problem, numerics, name)
     lay: SlitLayout = model.layout
-    law, h = problem.law, 2.0 * lay.b
+    law, h = problem.law, lay.band_width
     opts = dict(run=name, **protocols.solver_options(numerics))
     state = solver.State(load_at(problem, 0.0), lay.X.copy(), None, None)
     dmg = damage.DamageState.intact(lay.n)
-    passes, dissipated, crack0 = [], 0.0, lay.slit.size
+    passes, dissipated = [], 0.0
     p_crit, p_onset, area, max_res = np.nan, np.nan, np.nan, 0.0
     tol = 1e-3
 
@@ -205,9 +234,9 @@ def grow(problem: Problem, numerics: dict, levels, growth_cells: int, log=None, 
             hist = material.history
             cand = lay.band[~hist.gag[lay.band]]
             before = dmg.D.copy()
-            W0 = intact_energy(model, ev, material.base(ev.load))
+            W0 = lay.column_mean(intact_energy(model, ev, material.base(ev.load)))
             sigma = np.full(lay.n, -np.inf)
-            sigma[cand] = opening_stress(ev)[cand]
+            sigma[cand] = lay.column_mean(opening_stress(ev))[cand]
             dmg.update(law, cand, sigma, np.ones(lay.n), W0, h)
             if np.isnan(p_onset) and np.any(~np.isnan(dmg.onset_stretch)):
                 p_onset = p
@@ -229,15 +258,15 @@ def grow(problem: Problem, numerics: dict, levels, growth_cells: int, log=None, 
             at = load_at(problem, p)
             state = solver.State(at, state.x, model.evaluate(state.x, at), state.convergence)
             max_res = max(max_res, state.convergence.residual)
-            grown = (int(material.history.gag.sum()) - crack0) / problem.band_rows * lay.dx
+            grown = lay.tip(material.history.gag) - lay.a
             passes.append((p, grown, dissipated, state.convergence.residual))
             if log is not None and ruptured.size:
                 log.info("[%s] p = %.4g kPa, pass %d: crack grown by %.3g um", name, p, len(passes), grown)
             if grown >= growth_cells * lay.dx or not cand.size:
-                return Growth(levels[0], area, p_crit, passes, max_res, p_onset)
+                return Growth(levels[0], area, p_crit, passes, max_res, p_onset, material.history)
         if len(passes) and passes[-1][1] >= growth_cells * lay.dx:
             break
-    return Growth(levels[0], area, p_crit, passes, max_res, p_onset)
+    return Growth(levels[0], area, p_crit, passes, max_res, p_onset, material.history)
 
 
 def energy_per_area(growth: Growth) -> float:
@@ -270,13 +299,15 @@ def study(half_length: float, vc: dict, matrix: dict, gag: dict, numerics: dict,
             float(half_length),
             float(dx),
             vc["extent_factor"],
+            vc["slit_rows"],
             vc["band_rows"],
             mat,
             gag_law,
             vc["critical_stress_kPa"],
             vc["fracture_energy_J_m2"],
         )
-        a = slit_layout(problem.a, problem.dx, problem.size_factor * problem.a, problem.band_rows).a
+        lay = slit_layout(problem.a, problem.dx, problem.size_factor * problem.a, problem.slit_rows, problem.band_rows)
+        a = lay.a
         pc = problem.griffith(a)
         steps = np.arange(vc["first_pressure"], vc["last_pressure"] + 1e-9, vc["pressure_step"])
         name = f"crack_a{half_length:g}_dx{dx:g}"
@@ -286,7 +317,8 @@ def study(half_length: float, vc: dict, matrix: dict, gag: dict, numerics: dict,
         row = dict(
             dx_um=float(dx),
             half_length_um=a,
-            half_thickness_um=problem.band_rows * float(dx),
+            half_thickness_um=lay.b,
+            band_width_um=lay.band_width,
             plane_strain_modulus_kPa=problem.modulus,
             critical_stress_kPa=problem.critical_stress_kPa,
             fracture_energy_J_m2=problem.fracture_energy_J_m2,
