@@ -264,6 +264,15 @@ def grow(problem: Problem, numerics: dict, levels, growth_cells: int, log=None, 
                 log.info("[%s] p = %.4g kPa, pass %d: crack grown by %.3g um", name, p, len(passes), grown)
             if grown >= growth_cells * lay.dx or not cand.size:
                 return Growth(levels[0], area, p_crit, passes, max_res, p_onset, material.history)
+        if log is not None:
+            log.info(
+                "[%s] p = %.4g kPa: %d damage passes so far, %d particles past onset, crack grown by %.3g um",
+                name,
+                p,
+                len(passes),
+                int(np.sum(~np.isnan(dmg.onset_stretch))),
+                passes[-1][1] if passes else 0.0,
+            )
         if len(passes) and passes[-1][1] >= growth_cells * lay.dx:
             break
     return Growth(levels[0], area, p_crit, passes, max_res, p_onset, material.history)
