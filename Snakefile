@@ -84,6 +84,7 @@ rule all:
         rules.claims.output,
         rules.verification_pool_figure.output,
         rules.verify_crack.output,
+        rules.verification_crack_figure.output,
         rules.swelling_convergence_figure.output,
         rules.delamination_growth.output,
         rules.delamination_summary.output,

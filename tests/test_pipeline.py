@@ -221,10 +221,10 @@ def test_the_papers_damage_law_gives_every_delamination_result_it_gave_before_is
     assert now.index.is_unique and now.index.isin(was.index).all()
     now = now.loc[was.index]
     for column in was.columns:
-        if was[column].dtype == object or was[column].dtype == bool:
-            assert now[column].astype(str).tolist() == was[column].astype(str).tolist(), column
-        else:
+        if pd.api.types.is_numeric_dtype(was[column]) and not pd.api.types.is_bool_dtype(was[column]):
             assert np.allclose(now[column], was[column], rtol=5e-4, atol=1e-3, equal_nan=True), column
+        else:
+            assert now[column].astype(str).tolist() == was[column].astype(str).tolist(), column
 
 
 def test_fracture_energy_runs_are_rows_of_the_delamination_tables_beside_their_closed_form(workdir, ci_config):
@@ -234,13 +234,9 @@ def test_fracture_energy_runs_are_rows_of_the_delamination_tables_beside_their_c
     summary = pd.read_csv(workdir / "results/delamination/summary.csv")
     growth = pd.read_csv(workdir / "results/delamination/growth.csv")
     fe = summary[summary.damage_law == "fracture_energy"]
-    matched = summary[
-        (summary.damage_law == "paper")
-        & (summary.charge_law == "prescribed")
-        & (summary.case == de["figures"]["fig5"])
-        & (summary.sigma_cr_kPa == de["critical_stress_kPa"])
-        & (summary.criterion == de["criteria"][0])
-    ].dissipated_energy_J_m2
+    # the paper law's prescribed run of the same pool (it runs for this match alone where figure 5's sigmas lack it)
+    paper = f"{de['figures']['fig5']}_{de['critical_stress_kPa']:g}kPa_{de['criteria'][0]}_summary.csv"
+    matched = pd.read_csv(workdir / "results/delamination/runs/prescribed" / paper).dissipated_energy_J_m2
     wanted = sorted(de["fracture_energy"]["fracture_energies_J_m2"] + [float(matched.iloc[0])])
     for law in ci_config["gag"]["charge_laws"]:
         rows = fe[fe.charge_law == law]

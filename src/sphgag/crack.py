@@ -43,7 +43,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from . import damage, fracture, kernel, materials, protocols, solver
+from . import damage, fracture, kernel, materials, protocols, snap, solver
 from .delamination import intact_energy
 from .history import HistoryMaterial, ParticleHistory
 from .inclusion import ExactBoundary, Materials
@@ -252,10 +252,20 @@ def grow(problem: Problem, numerics: dict, levels, growth_cells: int, log=None, 
                     p_crit = p
             path = material.towards(new)
             model.set_props(path)
-            state = solve(load_at(problem, p, 0.0), load_at(problem, p, 1.0), solver.transition_options(opts))
+            at = load_at(problem, p)
+            try:
+                state = solve(load_at(problem, p, 0.0), load_at(problem, p, 1.0), solver.transition_options(opts))
+            except solver.NotConverged:  # the growth snaps: follow it as a delamination run does (sphgag.snap)
+                model.set_props(path.settled())
+                try:
+                    state = snap.follow(model, state.x, at, **opts)
+                except snap.NoStableState as exc:
+                    if log is not None:
+                        log.warning("[%s] p = %.4g kPa: no stable state after a snap (%s)", name, p, exc.reason)
+                    model.set_props(material)
+                    return Growth(levels[0], area, p_crit, passes, max_res, p_onset, material.history)
             material = path.settled()
             model.set_props(material)
-            at = load_at(problem, p)
             state = solver.State(at, state.x, model.evaluate(state.x, at), state.convergence)
             max_res = max(max_res, state.convergence.residual)
             grown = lay.tip(material.history.gag) - lay.a
@@ -325,6 +335,7 @@ def study(half_length: float, vc: dict, matrix: dict, gag: dict, numerics: dict,
         energy = energy_per_area(g)
         row = dict(
             dx_um=float(dx),
+            nominal_half_length_um=float(half_length),
             half_length_um=a,
             half_thickness_um=lay.b,
             band_width_um=lay.band_width,

@@ -604,7 +604,7 @@ def verification_crack(table: pd.DataFrame, modulus: float, fracture_energy_J_m2
     )
     ax.legend(frameon=False, fontsize=6.5)
     ax = axes[2]
-    lengths = sorted(table.half_length_um.unique())
+    lengths = sorted(table.nominal_half_length_um.unique())  # a on the grid differs by up to dx / 2
     hue = dict(zip(lengths, sns.color_palette("rocket", len(lengths))))
     for measure, marker, name in (
         ("rel_error", "o", "onset vs Griffith"),
@@ -612,7 +612,7 @@ def verification_crack(table: pd.DataFrame, modulus: float, fracture_energy_J_m2
         ("energy_rel_error", "^", "energy vs G_c"),
     ):
         for length in lengths:
-            t = table[table.half_length_um == length].sort_values("dx_um")
+            t = table[table.nominal_half_length_um == length].sort_values("dx_um")
             ax.plot(
                 t.dx_um,
                 t[measure].abs(),
