@@ -43,12 +43,14 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from . import damage, fracture, kernel, materials, protocols, snap, solver
+from . import damage, fracture, kernel, materials, measure, protocols, snap, solver
 from .delamination import intact_energy
 from .history import HistoryMaterial, ParticleHistory
 from .inclusion import ExactBoundary, Materials
 from .loading import Load
 from .model import Model
+
+MAX_PASSES_PER_LEVEL = 400  # damage passes at one pressure level at most (growth under pressure control runs away)
 
 
 @dataclass(frozen=True)
@@ -181,15 +183,12 @@ def crack_model(problem: Problem, numerics: dict, name: str = "crack") -> tuple[
 
 def opening_stress(ev) -> np.ndarray:
     """``sigma_yy`` of every particle (Cauchy, eq. 2.10): the stress that opens the crack."""
-    F, P = ev.F, ev.P
-    J = F[:, 0, 0] * F[:, 1, 1] - F[:, 0, 1] * F[:, 1, 0]
-    return np.einsum("nb,nb->n", P[:, 1, :], F[:, 1, :]) / J
+    return measure.cauchy(ev)[0][:, 1, 1]
 
 
 def opening_area(model: Model, ev, material: HistoryMaterial) -> float:
     """The crack's opening area per unit depth: the volume change of its GAG particles, whole crack (4 quarters)."""
-    F = ev.F
-    J = F[:, 0, 0] * F[:, 1, 1] - F[:, 0, 1] * F[:, 1, 0]
+    J = measure.cauchy(ev)[1]
     gag = material.history.gag
     return 4.0 * float(np.sum((J[gag] - 1.0) * model.layout.volume[gag]))
 
@@ -229,7 +228,7 @@ def grow(problem: Problem, numerics: dict, levels, growth_cells: int, log=None, 
         max_res = max(max_res, state.convergence.residual)
         if np.isnan(area):
             area = opening_area(model, state.evaluation, material)
-        for _ in range(400):
+        for _ in range(MAX_PASSES_PER_LEVEL):
             ev = state.evaluation
             hist = material.history
             cand = lay.band[~hist.gag[lay.band]]
@@ -250,23 +249,14 @@ def grow(problem: Problem, numerics: dict, levels, growth_cells: int, log=None, 
                 new = new.rupture(ruptured, np.zeros(ruptured.size, dtype=np.int64), len(passes) + 1)
                 if np.isnan(p_crit):
                     p_crit = p
-            path = material.towards(new)
-            model.set_props(path)
             at = load_at(problem, p)
             try:
-                state = solve(load_at(problem, p, 0.0), load_at(problem, p, 1.0), solver.transition_options(opts))
-            except solver.NotConverged:  # the growth snaps: follow it as a delamination run does (sphgag.snap)
-                model.set_props(path.settled())
-                try:
-                    state = snap.follow(model, state.x, at, **opts)
-                except snap.NoStableState as exc:
-                    if log is not None:
-                        log.warning("[%s] p = %.4g kPa: no stable state after a snap (%s)", name, p, exc.reason)
-                    model.set_props(material)
-                    return Growth(levels[0], area, p_crit, passes, max_res, p_onset, material.history)
-            material = path.settled()
-            model.set_props(material)
-            state = solver.State(at, state.x, model.evaluate(state.x, at), state.convergence)
+                state, material, _ = snap.transition(model, state.x, material, new, at, opts)
+            except snap.NoStableState as exc:  # the growth snapped to no equilibrium: end at the last one
+                if log is not None:
+                    log.warning("[%s] p = %.4g kPa: no stable state after a snap (%s)", name, p, exc.reason)
+                model.set_props(material)
+                return Growth(levels[0], area, p_crit, passes, max_res, p_onset, material.history)
             max_res = max(max_res, state.convergence.residual)
             grown = lay.tip(material.history.gag) - lay.a
             passes.append((p, grown, dissipated, state.convergence.residual))

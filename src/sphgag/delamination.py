@@ -467,27 +467,19 @@ class GrowthRun:
         new, released = update
         hist, step = self.hist, self.step + 1
         ruptured = np.flatnonzero(new.gag & ~hist.gag)
-        path = self.material.towards(new)
-        self.model.set_props(path)
         load = self.state.load
-        snapped = False
-        try:
-            start = load.with_material(transition=0.0)
-            state = solver.follow_path(
-                self.model,
-                self.state.x,
-                start,
-                [load.with_material(transition=1.0)],
-                **solver.transition_options(self.opts),
-            )[-1]
-        except solver.NotConverged as exc:
-            self.model.set_props(path.settled())
-            state = self.follow_snap(load, f"pass {step}", exc)  # NoStableState leaves the run as it was
-            snapped = True
+        state, self.material, snapped = snap.transition(
+            self.model,
+            self.state.x,
+            self.material,
+            new,
+            load,
+            self.opts,
+            lambda exc: self.follow_snap(load, f"pass {step}", exc),  # NoStableState leaves the run as it was
+        )
         self.step = step
         self.dissipated += released
-        self._settle(path.settled())
-        self._accept(solver.State(load, state.x, self.model.evaluate(state.x, load), state.convergence))
+        self._accept(state)
         if snapped:
             self.snap_length += self.front.delaminated_length(new) - self.front.delaminated_length(hist)
         self._record(snapped=snapped)

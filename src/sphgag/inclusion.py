@@ -235,9 +235,7 @@ def swell(model: Model, pressure_kPa: float, numerics: dict) -> solver.State:
 def normal_stress(lay: EllipseLayout, ev) -> tuple[np.ndarray, np.ndarray]:
     """Cauchy stress normal and tangential to each particle's ring, ``(sigma_nn, sigma_tt)``
     (current frame ~ reference)."""
-    F, P = ev.F, ev.P
-    J = F[:, 0, 0] * F[:, 1, 1] - F[:, 0, 1] * F[:, 1, 0]
-    sig = np.einsum("nab,ncb->nac", P, F) / J[:, None, None]
+    sig = measure.cauchy(ev)[0]
     n = np.column_stack([(lay.b + lay.s) * np.cos(lay.t), (lay.a + lay.s) * np.sin(lay.t)])
     n /= np.linalg.norm(n, axis=1)[:, None]
     tvec = np.column_stack([-n[:, 1], n[:, 0]])

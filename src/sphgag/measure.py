@@ -14,14 +14,18 @@ from .loading import lumen_area_gradient
 from .model import Evaluation, Model
 
 
+def cauchy(ev: Evaluation):
+    """``(sigma, J)``: the in-plane Cauchy stress ``sigma = P F^T / J`` (eq. 2.10) of every particle, ``(n, 2, 2)``,
+    and ``J = det F lambda_z``."""
+    F, P = ev.F, ev.P
+    J = (F[:, 0, 0] * F[:, 1, 1] - F[:, 0, 1] * F[:, 1, 0]) * ev.load.axial_stretch
+    return np.einsum("nab,ncb->nac", P, F) / J[:, None, None], J
+
+
 def cauchy_polar(ev: Evaluation):
     """``(sigma_rr, sigma_tt, sigma_rt, J)`` of every particle in its current polar frame (eq. 2.10)."""
-    F, P, x = ev.F, ev.P, ev.x
-    lz = ev.load.axial_stretch
-    det = F[:, 0, 0] * F[:, 1, 1] - F[:, 0, 1] * F[:, 1, 0]
-    J = det * lz
-    # sigma = P F^T / J (in-plane block)
-    sig = np.einsum("nab,ncb->nac", P, F) / J[:, None, None]
+    sig, J = cauchy(ev)
+    x = ev.x
     phi = np.arctan2(x[:, 1], x[:, 0])
     c, s = np.cos(phi), np.sin(phi)
     srr = c * c * sig[:, 0, 0] + s * s * sig[:, 1, 1] + c * s * (sig[:, 0, 1] + sig[:, 1, 0])

@@ -164,3 +164,26 @@ def _follow(model, x0, load, tol, max_iter, run, max_steps, handoff, damping) ->
         load,
         f"the pseudo-dynamics came to rest at no equilibrium in {max_steps} steps (lowest residual {best[0]:.3g})",
     )
+
+
+def transition(model: Model, x0: np.ndarray, material, after, load: Load, options: dict, on_snap=None):
+    """Solve the change of history from ``material``'s (a :class:`sphgag.history.HistoryMaterial`) to ``after`` at
+    ``load`` along its transition path (the load's ``transition`` 0 -> 1, :func:`solver.transition_options`); where
+    that path has no equilibrium, ``on_snap(exc)`` follows the snap under the new history in full (by default
+    :func:`follow` from ``x0``; it may raise :class:`NoStableState`). Returns ``(state, settled material,
+    snapped)``, the model set to the settled material and the state evaluated under it."""
+    path = material.towards(after)
+    model.set_props(path)
+    try:
+        end = load.with_material(transition=1.0)
+        state = solver.follow_path(
+            model, x0, load.with_material(transition=0.0), [end], **solver.transition_options(options)
+        )[-1]
+        snapped = False
+    except solver.NotConverged as exc:
+        model.set_props(path.settled())
+        state = on_snap(exc) if on_snap is not None else follow(model, x0, load, **options)
+        snapped = True
+    settled = path.settled()
+    model.set_props(settled)
+    return solver.State(load, state.x, model.evaluate(state.x, load), state.convergence), settled, snapped
