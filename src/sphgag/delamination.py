@@ -310,6 +310,41 @@ def outcome(stop: str, length: float, merged: bool) -> str:
     return "arrests" if stop == "arrested" else "grows"
 
 
+#: what a pool does at one level of the concentration ramp (the delamination map, :func:`level_classes`)
+LEVEL_CLASSES = ("no onset", "onset, arrested", "propagation", "no equilibrium")
+
+
+def level_classes(growth: pd.DataFrame, summary: dict, levels) -> pd.DataFrame:
+    """What the pools of one run do at each concentration ``levels`` of its ramp (one of :data:`LEVEL_CLASSES`).
+
+    * below the level the run stopped in (``stop_level_mEq_l``), or in it if the run ended arrested there, the pools
+      came to a stable state: ``no onset`` if damage has not begun (sigma_cr of eq. 2.28 not reached) by that level,
+      ``onset, arrested`` otherwise (whatever they grew on the way);
+    * in and beyond the level the run stopped in without arresting: ``propagation`` if it stopped during that level's
+      damage passes (merged, maximum extent, symmetry edge, pass limit, or a damage pass with no stable state after
+      it), ``no equilibrium`` if the ramp could not reach the level at all (the swollen wall has no stable state
+      there, before any new damage: the limit point of figure 4's swelling, or a failure of the discretisation).
+
+    Rows: ``concentration_mEq_l``, ``state``, ``delaminated_length_um`` (at the level's last equilibrium; NaN beyond
+    the run).
+    """
+    stop_level, stop = float(summary["stop_level_mEq_l"]), str(summary["stop"])
+    onset = float(summary["onset_concentration_mEq_l"])
+    reached = growth.concentration_mEq_l.to_numpy()
+    beyond = "propagation" if np.any(np.abs(reached - stop_level) < 1e-9) else "no equilibrium"
+    rows = []
+    for c in levels:
+        at = growth[np.abs(reached - c) < 1e-9]
+        stable = c < stop_level - 1e-9 or (stop == "arrested" and c <= stop_level + 1e-9)
+        if stable:
+            state = "onset, arrested" if onset <= c + 1e-9 else "no onset"
+        else:
+            state = beyond
+        length = float(at.delaminated_length_um.iloc[-1]) if len(at) else np.nan
+        rows.append(dict(concentration_mEq_l=float(c), state=state, delaminated_length_um=length))
+    return pd.DataFrame(rows)
+
+
 def intact_energy(model: Model, ev, base_props: np.ndarray) -> np.ndarray:
     """``W_0`` (eq. 2.23) of every particle with the undamaged material, at the state ``ev``."""
     W = np.empty(model.n)
@@ -532,8 +567,9 @@ class GrowthRun:
     def run(self) -> Result:
         """Walk the concentration ramp from the current concentration; the run ends where a level does not arrest,
         or where a snap finds no stable state (``stop`` names the step and the load)."""
-        stop = "arrested"
+        stop, level = "arrested", self.concentration  # the level the run stops in
         for c in self.settings.levels[self.settings.levels >= self.concentration - 1e-9]:
+            level = float(c)
             try:
                 stop = self.level(float(c))
             except snap.NoStableState as exc:
@@ -557,7 +593,7 @@ class GrowthRun:
             )
             if stop != "arrested":
                 break
-        return self.result(stop)
+        return self.result(stop, level)
 
     # -- bookkeeping ----------------------------------------------------------------------------------------------
     def _settle(self, material: HistoryMaterial) -> None:
@@ -600,7 +636,8 @@ class GrowthRun:
             # solver's path must be the same)
             self.model.factorisation = None
 
-    def result(self, stop: str) -> Result:
+    def result(self, stop: str, level: float) -> Result:
+        """The run's rows and summary; it stopped (``stop``) in the ramp's level ``level`` [mEq/l]."""
         rows = self.rows
         growth = pd.DataFrame(
             [
@@ -636,6 +673,7 @@ class GrowthRun:
             dissipated_energy_J_m2=1e-3 * self.dissipated / length if length > 0 else np.nan,
             dissipated_energy_kPa_um2=self.dissipated,
             stop=stop,
+            stop_level_mEq_l=level,
             passes=self.step,
             snaps=self.snaps,
             snap_length_um=self.snap_length,

@@ -250,16 +250,23 @@ def homeostasis(
     return Homeostasis(state, pressures, profile, measure.layer_stats(profile))
 
 
-def pressurise(model: Model, homeostatic: solver.State, pressure_mmHg: float, numerics: dict) -> solver.State:
-    """The passive homeostatic state (held radius) moved to ``pressure_mmHg`` under pressure control."""
+def pressurise(
+    model: Model, homeostatic: solver.State, pressure_mmHg: float, numerics: dict, on_state=None
+) -> solver.State:
+    """The homeostatic state (held radius) moved to ``pressure_mmHg`` under pressure control: first the same
+    equilibrium under pressure control at the carried pressure P_h, then the pressure. Every pressurised state of the
+    pipeline takes this path (:func:`bilayer_pressure_diameter`, the resolution studies, the sensitivity samples), so
+    that the same pressure gives the same state to the bit."""
     P_h = measure.carried_pressure(model, homeostatic.evaluation)
     material = homeostatic.load.material
+    here = Load(1.0, P_h, material=material)
     return solver.follow_path(
         model,
         homeostatic.x,
-        Load(1.0, P_h, material=material),
-        [Load(1.0, pressure_mmHg * MMHG_TO_KPA, material=material)],
+        here,
+        [here, Load(1.0, pressure_mmHg * MMHG_TO_KPA, material=material)],
         run=model.name,
+        on_state=on_state,
         **solver_options(numerics),
     )[-1]
 
@@ -284,16 +291,13 @@ def bilayer_pressure_diameter(
     points and exact curve share the normalisation).
     """
     run = model.name
-    material = homeostatic.load.material
     P_h = measure.carried_pressure(model, homeostatic.evaluation)
     P_act = cal["activation_pressure_mmHg"]
     opts = dict(run=run, on_state=log_state(run), **solver_options(numerics))
-    here = Load(1.0, P_h, material=material)
-    at_act = Load(1.0, P_act * MMHG_TO_KPA, material=material)
-    path = [here, at_act]
+    activation = []
     if active:
         steps = cal["activation_steps"]
-        path += [
+        activation = [
             Load(1.0, P_act * MMHG_TO_KPA, material=(("activation", a), ("prestretch", 1.0)))
             for a in np.linspace(0.0, 1.0, steps + 1)[1:]
         ]
@@ -305,7 +309,9 @@ def bilayer_pressure_diameter(
         P_act,
         f", then activation in {cal['activation_steps']} steps" if active else "",
     )
-    start = solver.follow_path(model, homeostatic.x, here, path, **opts)[-1]
+    start = pressurise(model, homeostatic, P_act, numerics, on_state=opts["on_state"])
+    if activation:
+        start = solver.follow_path(model, start.x, start.load, activation, **opts)[-1]
     sweep = np.linspace(0.0, cal["max_pressure_mmHg"], cal["pressure_points"])
     pressures = np.unique(np.round(np.concatenate([sweep, cal["state_pressures_mmHg"], [P_act]]), 10))
     down = [P for P in pressures[::-1] if P < P_act]

@@ -1,0 +1,173 @@
+"""One GAG pool's response to the model's inputs: the sample of the sensitivity study (issue 17).
+
+A *scenario* is everything one response depends on, as the pipeline's own configuration slices (so that a scenario at
+its nominal values reruns exactly the pipeline's runs): ``bilayer``, ``numerics``, ``homeostasis`` (figure 2b),
+``gag`` (one charge law, eqs. 2.25-2.27), ``swelling`` (the figure 4 protocol), ``delamination`` (section 2.7: its
+``pressure_mmHg`` is the lumen pressure of both protocols, its ``critical_stress_kPa`` sigma_cr of eq. 2.28), the
+``pool`` (a medial sector), the onset ``criterion``, the ``concentration_mEq_l`` at which the figure 4 quantities are
+read, the ``probe_length_um`` they are measured over, and the ``pool_set`` name that labels the delamination rows.
+An *input* is a dotted path into it, e.g.
+``gag.shear_modulus_kPa`` or ``pool.angular_extent_deg`` (:func:`perturbed`).
+
+:func:`respond` runs, for one scenario, what the pipeline runs for figure 4 and figure 5 with fresh models at each
+stage, as the pipeline's jobs do: the homeostatic state (rule ``homeostasis``), pressure control to the lumen
+pressure (rule ``bilayer_pressure_diameter``), the pool converted and swollen up to the stated concentration (rules
+``swell`` and ``pool_stresses``: the same concentration steps), and the pool grown by damage (rule ``delaminate``).
+:func:`outputs` reads the study's outputs from it.
+"""
+
+from __future__ import annotations
+
+import copy
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+from . import artery, delamination, protocols, solver
+
+#: the figure 4 quantities at the stated concentration (``pool_table`` columns; eqs. 2.10, 2.27)
+SWELLING_OUTPUTS = ("tip_radial_stress_kPa", "top_circ_stress_kPa", "pool_volume_change")
+#: the delamination quantities (section 2.7)
+DELAMINATION_OUTPUTS = ("onset_concentration_mEq_l", "final_length_um", "propagated")
+OUTPUTS = SWELLING_OUTPUTS + DELAMINATION_OUTPUTS
+#: what a run did but the indices do not take: how each protocol ended, and whether onset was censored
+RECORDS = ("swelling_end", "delamination_stop", "outcome", "onset_censored", "max_residual")
+
+
+def _node(scenario: dict, path: str):
+    *parents, leaf = path.split(".")
+    node = scenario
+    for part in parents:
+        if not isinstance(node, dict) or part not in node:
+            raise KeyError(f"input {path!r}: no {part!r} in the scenario")
+        node = node[part]
+    if not isinstance(node, dict) or leaf not in node or isinstance(node[leaf], (dict, list)):
+        raise KeyError(f"input {path!r} is not a number of the scenario")
+    return node, leaf
+
+
+def check_inputs(scenario: dict, paths) -> None:
+    """Raise ``KeyError`` naming every path of ``paths`` that is not a number of ``scenario``."""
+    bad = []
+    for path in paths:
+        try:
+            _node(scenario, path)
+        except KeyError as exc:
+            bad.append(exc.args[0])
+    if bad:
+        raise KeyError("; ".join(bad))
+
+
+def nominal(scenario: dict, path: str) -> float:
+    """The scenario's own value of the input ``path``."""
+    node, leaf = _node(scenario, path)
+    return float(node[leaf])
+
+
+def perturbed(scenario: dict, inputs: dict) -> dict:
+    """A copy of ``scenario`` with every ``{dotted path: value}`` of ``inputs`` set.
+
+    The pool moves with the particle grid: a change of ``pool.centre_radius_um`` shifts the media's
+    ``bilayer.aligned_radii_um`` (the cell boundaries the pool's radial edges sit on) by the same amount, so that
+    the pool keeps its thickness in particles wherever it is (as the nominal pool does).
+    """
+    out = copy.deepcopy(scenario)
+    for path, value in inputs.items():
+        node, leaf = _node(out, path)
+        node[leaf] = float(value)
+    shift = out["pool"]["centre_radius_um"] - scenario["pool"]["centre_radius_um"]
+    if shift:
+        out["bilayer"]["aligned_radii_um"] = [r + shift for r in scenario["bilayer"]["aligned_radii_um"]]
+    return out
+
+
+def swelling_settings(scenario: dict) -> dict:
+    """The figure 4 settings cut at the stated concentration, on the same concentration steps (which it must be
+    one of), so that the path up to it is the pipeline's."""
+    sw, c = scenario["swelling"], scenario["concentration_mEq_l"]
+    step = sw["max_concentration_mEq_l"] / (sw["concentration_points"] - 1)
+    k = round(c / step)
+    if not (0 < k < sw["concentration_points"] and abs(k * step - c) <= 1e-9 * max(c, 1.0)):
+        raise ValueError(
+            f"the stated concentration {c:g} mEq/l is not a step of the swelling ramp (0 to "
+            f"{sw['max_concentration_mEq_l']:g} in {sw['concentration_points']} points)"
+        )
+    return dict(sw, max_concentration_mEq_l=k * step, concentration_points=k + 1)
+
+
+@dataclass
+class Response:
+    """The pool's swelling table (:func:`sphgag.protocols.pool_table`) and its delamination run's
+    ``(growth, summary)`` (:func:`sphgag.delamination.labelled`), with its scenario."""
+
+    scenario: dict
+    swelling: pd.DataFrame
+    growth: pd.DataFrame
+    summary: pd.DataFrame
+
+
+def pressurised(scenario: dict, name: str) -> solver.State:
+    """The passive homeostatic state (figure 2b) moved to the lumen pressure under pressure control."""
+    s = scenario
+    wall = artery.bilayer_model(s["bilayer"], s["numerics"], name=name)
+    h = protocols.homeostasis(wall, s["numerics"], s["homeostasis"])
+    wall = artery.bilayer_model(s["bilayer"], s["numerics"], name=name)  # a fresh model, as the pipeline's next job
+    start = solver.State(h.state.load, h.state.x, wall.evaluate(h.state.x, h.state.load), None)
+    return protocols.pressurise(wall, start, s["delamination"]["pressure_mmHg"], s["numerics"])
+
+
+def respond(scenario: dict, name: str = "pool_response", start: solver.State | None = None) -> Response:
+    """Figure 4's swelling and figure 5's growth of the scenario's pool, from ``start`` (the pressurised wall; by
+    default :func:`pressurised`)."""
+    s = scenario
+    bl, numerics, gag, de = s["bilayer"], s["numerics"], s["gag"], s["delamination"]
+    start = start if start is not None else pressurised(s, name)
+    start = solver.State(start.load, start.x, None, None)
+    pool = artery.pool_sector(s["pool"])
+    model = artery.bilayer_model(bl, numerics, name=f"{name}_swell", pool=pool, gag=gag)
+    states = protocols.swell_pool(model, start, numerics, swelling_settings(s))
+    swelling = protocols.pool_table(model, states, pool, s["probe_length_um"], gag)
+    settings = delamination.Settings.from_config(de, de["critical_stress_kPa"], s["criterion"])
+    model = artery.bilayer_model(bl, numerics, name=f"{name}_delaminate")
+    result = delamination.grow(model, start, [pool], settings, numerics, gag, model.props, run=f"{name}_delaminate")
+    growth, summary = delamination.labelled(result, s["pool_set"], settings, bl["dx_um"])
+    return Response(s, swelling, growth, summary)
+
+
+def outputs(response: Response) -> dict:
+    """The study's outputs of one response.
+
+    * the figure 4 quantities at the stated concentration (NaN where the swelling path ended before it: a limit
+      point or no equilibrium, named in ``swelling_end``);
+    * the onset concentration, censored at one step above the ramp where damage never began (``onset_censored``);
+    * the delaminated length up to the run's last equilibrium, and ``propagated`` (1: the run ended growing or
+      merged, i.e. the pool did not arrest; 0 otherwise).
+    """
+    s, sw = response.scenario, response.swelling
+    de = s["delamination"]
+    at = sw[(sw.stage == "converted") & (np.abs(sw.concentration_mEq_l - s["concentration_mEq_l"]) < 1e-9)]
+    row = {k: (float(at[k].iloc[0]) if len(at) else np.nan) for k in SWELLING_OUTPUTS}
+    summary = response.summary.iloc[0]
+    onset = float(summary.onset_concentration_mEq_l)
+    censored = bool(np.isnan(onset))
+    row.update(
+        onset_concentration_mEq_l=de["max_concentration_mEq_l"] + de["concentration_step_mEq_l"] if censored else onset,
+        final_length_um=float(summary.final_length_um),
+        propagated=float(summary.outcome in ("grows", "merges")),
+        swelling_end=str(sw.path_end.iloc[-1]),
+        delamination_stop=str(summary.stop),
+        outcome=str(summary.outcome),
+        onset_censored=censored,
+        max_residual=float(max(sw.residual.max(), summary.max_residual)),
+    )
+    return row
+
+
+def evaluate(scenario: dict, name: str):
+    """``inputs -> outputs`` of :func:`sphgag.sensitivity.evaluate_rows` for ``scenario``."""
+
+    def run(inputs: dict) -> dict:
+        return outputs(respond(perturbed(scenario, inputs), name))
+
+    return run
