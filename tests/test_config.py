@@ -192,3 +192,26 @@ def test_figure_5s_set_is_checked_at_the_resolution_studys_spacings(ci_config):
         config.ConfigError, match=r"delamination.pool_sets.tiny\[0\]: the pool holds no medial particle at dx = 8 um"
     ):
         config.validate(cfg, SCHEMA)
+
+
+@pytest.mark.parametrize(
+    "path, value, expected",
+    [
+        (
+            ("sensitivity", "inputs", "gag.shear_modulus_kPa", "low"),
+            -0.1,
+            "sensitivity.inputs.gag.shear_modulus_kPa.low = -0.1 is outside the allowed range of gag.shear_modulus_kPa "
+            "(> 0 and <= 1000)",
+        ),
+        (("sensitivity", "inputs", "bilayer.nope"), dict(low=1, high=2, source="x"), "bilayer.nope is not a number"),
+        (("sensitivity", "inputs", "mean.dx_um"), dict(low=1, high=2, source="x"), "an input is a number of one of"),
+        (("sensitivity", "inputs", "pool.centre_radius_um"), dict(low=650, high=670, source="x"), "leaves the media"),
+        (("sensitivity", "inputs", "gag.temperature_K", "high"), 300.0, "low = 306.0 must be below high = 300.0"),
+        (("sensitivity", "inputs", "gag.temperature_K", "source"), "", "sensitivity.inputs.gag.temperature_K.source"),
+        (("sensitivity", "concentration_mEq_l"), 110.0, "must be a step of the swelling ramp (25, 50, 75, 100, 125"),
+        (("sensitivity", "sobol", "inputs"), 99, "sensitivity.sobol.inputs = 99 exceeds the number of inputs (15)"),
+        (("sensitivity", "map", "angular_extents_deg"), [3.0, 89.0], "would reach a symmetry edge"),
+    ],
+)
+def test_a_bad_sensitivity_range_is_rejected_naming_the_input_and_its_allowed_range(full_config, path, value, expected):
+    assert expected in bad(full_config, path, value)

@@ -174,7 +174,9 @@ def validate(config: dict, schema_path) -> dict:
     if not problems:
         validator = _Validator(schema)
         errors = sorted(validator.iter_errors(config), key=lambda e: list(map(str, e.absolute_path)))
-        problems = [_describe(e, schema) for e in errors] if errors else _consistency(config)
+        problems = (
+            [_describe(e, schema) for e in errors] if errors else _consistency(config) + _sensitivity(config, schema)
+        )
     if problems:
         lines = "\n".join(f"  - {p}" for p in problems)
         raise ConfigError(f"invalid configuration ({Path(schema_path).name}):\n{lines}")
@@ -379,3 +381,101 @@ def _consistency(config: dict) -> list[str]:
             f"bilayer.active.stretch_max = {act.get('stretch_max')}"
         )
     return problems
+
+
+def sensitivity_config_key(config: dict, path: str) -> tuple:
+    """The configuration key a sensitivity input (a dotted path into :mod:`sphgag.pool_response`'s scenario) sets:
+    ``pool.*`` is figure 5's pool (the first of ``delamination.figures.fig5``'s set), the other sections are the
+    configuration's own."""
+    section, *rest = path.split(".")
+    if section == "pool":
+        return ("delamination", "pool_sets", config["delamination"]["figures"]["fig5"], 0, *rest)
+    return (section, *rest)
+
+
+def _bounds_text(node: dict) -> tuple[list, str]:
+    tests, words = [], []
+    for word, sym, ok in (
+        ("minimum", ">=", lambda v, b: v >= b),
+        ("exclusiveMinimum", ">", lambda v, b: v > b),
+        ("maximum", "<=", lambda v, b: v <= b),
+        ("exclusiveMaximum", "<", lambda v, b: v < b),
+    ):
+        if word in node:
+            tests.append((ok, node[word]))
+            words.append(f"{sym} {node[word]}")
+    return tests, " and ".join(words)
+
+
+def _sensitivity(config: dict, schema: dict) -> list[str]:
+    """Every sensitivity input names a number of the configuration that a sample may set (sections ``bilayer``,
+    ``numerics``, ``homeostasis``, ``gag``, ``delamination`` and figure 5's ``pool``), and its range lies inside that
+    key's own allowed range (and, for the pool, inside the media and away from the symmetry edges); the stated
+    concentration is a step of the swelling ramp; Sobol takes no more inputs than there are."""
+    se = config.get("sensitivity")
+    if not se:
+        return []
+    out = []
+    sections = ("bilayer", "numerics", "homeostasis", "gag", "delamination", "pool")
+    for path, r in se["inputs"].items():
+        name = f"sensitivity.inputs.{path}"
+        if path.split(".")[0] not in sections or path.startswith("delamination.pool_sets"):
+            out.append(
+                f"{name}: an input is a number of one of the sections {', '.join(sections)} (pool: figure 5's pool)"
+            )
+            continue
+        key = sensitivity_config_key(config, path)
+        node = config
+        for part in key:
+            node = (
+                node[part]
+                if isinstance(node, (dict, list)) and (part in node if isinstance(node, dict) else part < len(node))
+                else None
+            )
+            if node is None:
+                break
+        if isinstance(node, bool) or not isinstance(node, (int, float)):
+            out.append(f"{name}: {_key(key)} is not a number of the configuration")
+            continue
+        tests, text = _bounds_text(_subschema(schema, key))
+        for end in ("low", "high"):
+            if not all(ok(r[end], b) for ok, b in tests):
+                out.append(f"{name}.{end} = {r[end]} is outside the allowed range of {_key(key)} ({text})")
+        if not r["low"] < r["high"]:
+            out.append(f"{name}: low = {r['low']} must be below high = {r['high']}")
+    de, bil = config["delamination"], config["bilayer"]
+    pool = de["pool_sets"][de["figures"]["fig5"]][0]
+    r_in, border = bil["inner_radius_um"], bil["inner_radius_um"] + bil["media_thickness_um"]
+    radius = se["inputs"].get("pool.centre_radius_um", {})
+    for end in ("low", "high"):
+        if end in radius:
+            lo, hi = radius[end] - pool["radial_extent_um"] / 2, radius[end] + pool["radial_extent_um"] / 2
+            if lo < r_in or hi > border:
+                out.append(
+                    f"sensitivity.inputs.pool.centre_radius_um.{end} = {radius[end]}: the pool ({lo:g}-{hi:g} um) "
+                    f"leaves the media ({r_in:g}-{border:g} um)"
+                )
+    widths = [("sensitivity.map.angular_extents_deg", w) for w in se["map"]["angular_extents_deg"]]
+    widths += [
+        (f"sensitivity.inputs.pool.angular_extent_deg.{e}", se["inputs"].get("pool.angular_extent_deg", {}).get(e))
+        for e in ("low", "high")
+    ]
+    for name, w in widths:
+        if w is not None and not (0 < pool["centre_angle_deg"] - w / 2 and pool["centre_angle_deg"] + w / 2 < 90):
+            out.append(
+                f"{name} = {w}: figure 5's pool (centre {pool['centre_angle_deg']:g} deg) would reach a symmetry edge"
+            )
+    sw = config["swelling"]
+    step = sw["max_concentration_mEq_l"] / (sw["concentration_points"] - 1)
+    k = round(se["concentration_mEq_l"] / step)
+    if not (0 < k < sw["concentration_points"] and math.isclose(k * step, se["concentration_mEq_l"])):
+        steps = ", ".join(f"{i * step:g}" for i in range(1, sw["concentration_points"]))
+        out.append(
+            f"sensitivity.concentration_mEq_l = {se['concentration_mEq_l']} must be a step of the swelling ramp "
+            f"({steps})"
+        )
+    if se["sobol"]["inputs"] > len(se["inputs"]):
+        out.append(
+            f"sensitivity.sobol.inputs = {se['sobol']['inputs']} exceeds the number of inputs ({len(se['inputs'])})"
+        )
+    return out
