@@ -42,13 +42,14 @@ wildcard_constraints:
 
 # Snakemake tracks a rule's script, not the modules it imports: every simulation
 # rule depends on the package's physics sources, so a physics edit reruns what it
-# affects; figure and claims rules depend on their own modules only; the modules that
+# affects; figure, claims and sensitivity-index rules depend on their own modules only; the modules that
 # compute no number (validation, logging, provenance records) are inputs of nothing.
-PRESENTATION = {"plots.py", "claims.py", "config.py", "runlog.py", "provenance.py"}
+PRESENTATION = {"plots.py", "claims.py", "sensitivity.py", "config.py", "runlog.py", "provenance.py"}
 # (relative to the working directory, so that moving or re-cloning the checkout reruns nothing)
 SPHGAG = sorted(os.path.relpath(p) for p in Path(SRC, "sphgag").glob("*.py") if p.name not in PRESENTATION)
 PLOTS = os.path.relpath(Path(SRC, "sphgag", "plots.py"))
 CLAIMS = os.path.relpath(Path(SRC, "sphgag", "claims.py"))
+SENSITIVITY = os.path.relpath(Path(SRC, "sphgag", "sensitivity.py"))  # the indices, not the samples' simulations
 
 
 # snakemake --report report.zip: every figure and the main tables carry report(caption, category, labels) in
@@ -64,6 +65,7 @@ include: "workflow/rules/swelling.smk"
 include: "workflow/rules/verification.smk"
 include: "workflow/rules/delamination.smk"
 include: "workflow/rules/figures.smk"
+include: "workflow/rules/sensitivity.smk"
 
 
 rule all:
@@ -92,3 +94,7 @@ rule all:
         rules.fig5.output,
         rules.fig6.output,
         rules.fig7.output,
+        rules.sensitivity.output,
+        rules.sensitivity_figure.output,
+        rules.delamination_map.output,
+        rules.delamination_map_figure.output,

@@ -2,6 +2,7 @@
 
 import copy
 import json
+import math
 import re
 import shutil
 import subprocess
@@ -13,6 +14,8 @@ import numpy as np
 import pandas as pd
 import pytest
 import yaml
+
+from sphgag import delamination, pool_response
 
 from .conftest import ROOT, project_copy, snakemake
 
@@ -144,6 +147,28 @@ CONTRACT = {
         "final_length_um",
         "max_residual",
     ],
+    "results/sensitivity/indices.csv": [
+        "method",
+        "charge_law",
+        "output",
+        "input",
+        "index",
+        "value",
+        "conf_low",
+        "conf_high",
+        "samples_used",
+        "samples_missing",
+        "samples_failed",
+    ],
+    "results/sensitivity/samples.csv": ["method", "sample", "charge_law", "status", "error", *pool_response.OUTPUTS],
+    "results/sensitivity/delamination_map.csv": [
+        "charge_law",
+        "angular_extent_deg",
+        "sigma_cr_kPa",
+        "concentration_mEq_l",
+        "state",
+        "delaminated_length_um",
+    ],
 }
 FIGURES = [
     f"figures/{name}.{ext}"
@@ -158,6 +183,8 @@ FIGURES = [
         "fig5",
         "fig6",
         "fig7",
+        "sensitivity",
+        "delamination_map",
     )
     for ext in ("pdf", "png")
 ]
@@ -172,6 +199,8 @@ REPORT_TABLES = [
     "results/verification/elliptic_pool.csv",
     "results/delamination/summary.csv",
     "results/delamination/convergence.csv",
+    "results/sensitivity/indices.csv",
+    "results/sensitivity/delamination_map.csv",
 ]
 
 
@@ -548,6 +577,8 @@ SIMULATIONS = {
     "swelling_convergence_stresses",
     "delaminate",
     "delaminate_fracture_energy",
+    "sensitivity_batch",
+    "delamination_map_point",
     "delamination_convergence_dx",
     "verify_crack_length",
 }
@@ -583,6 +614,10 @@ def test_removing_a_charge_law_reruns_no_simulation(workdir, ci_config, tmp_path
     assert run.returncode == 0, out[-3000:]
     jobs = planned_jobs(out)
     print("\nremoving a charge law reruns:", jobs)
+    # the Sobol inputs are those Morris ranks highest over every law: they may change, and their samples with them
+    se = ci_config["sensitivity"]
+    sobol_batches = math.ceil(se["sobol"]["base_samples"] * (se["sobol"]["inputs"] + 2) / se["batch_size"])
+    assert jobs.pop("sensitivity_batch", 0) in (0, sobol_batches), jobs
     assert jobs and not SIMULATIONS & set(jobs), jobs
 
 
@@ -660,3 +695,86 @@ def test_a_figure_without_its_pool_set_is_rejected_by_name_before_any_job(fresh_
     assert run.returncode != 0
     assert "delamination.figures.fig6[0] = 'pair_2deg' is not a pool set of delamination.pool_sets" in out, out[-2000:]
     assert "Job stats" not in out and not (fresh_copy / "results").exists()
+
+
+def test_the_nominal_sample_reruns_the_pipelines_runs_of_figure_5s_pool_to_the_bit(workdir, ci_config):
+    """The sensitivity study's nominal sample (its own homeostasis, pressurisation, swelling and growth) gives the
+    numbers of the main pipeline's runs of the same pool, as printed: figure 4's quantities at the stated concentration
+    and the delamination summary."""
+    se, de, sw = ci_config["sensitivity"], ci_config["delamination"], ci_config["swelling"]
+    pool = de["pool_sets"][de["figures"]["fig5"]][0]
+    [case] = [name for name, c in sw["cases"].items() if c == pool]
+    assert de["pressure_mmHg"] in sw["pressures_mmHg"] and de["critical_stress_kPa"] in de["critical_stresses_kPa"]
+    run = f"{de['figures']['fig5']}_{de['critical_stress_kPa']:g}kPa_{de['criteria'][0]}"
+    for law in ci_config["gag"]["charge_laws"]:
+        nominal = pd.read_csv(workdir / f"results/sensitivity/nominal/{law}/batch0.csv", dtype=str).iloc[0]
+        assert nominal.status == "ok", nominal.error
+        summary = pd.read_csv(workdir / f"results/delamination/runs/{law}/{run}_summary.csv", dtype=str).iloc[0]
+        assert nominal.final_length_um == summary.final_length_um, law
+        assert (nominal.outcome, nominal.delamination_stop) == (summary.outcome, summary.stop), law
+        if pd.isna(summary.onset_concentration_mEq_l):  # censored one step above the ramp
+            assert nominal.onset_censored == "True"
+            censored = de["max_concentration_mEq_l"] + de["concentration_step_mEq_l"]
+            assert float(nominal.onset_concentration_mEq_l) == censored
+        else:
+            assert nominal.onset_concentration_mEq_l == summary.onset_concentration_mEq_l, law
+        table = pd.read_csv(workdir / f"results/swelling/runs/{law}/passive_{case}_{de['pressure_mmHg']:g}mmHg.csv")
+        at = np.flatnonzero((table.stage == "converted") & (table.concentration_mEq_l == se["concentration_mEq_l"]))
+        printed = pd.read_csv(
+            workdir / f"results/swelling/runs/{law}/passive_{case}_{de['pressure_mmHg']:g}mmHg.csv", dtype=str
+        ).iloc[at[0]]
+        for column in pool_response.SWELLING_OUTPUTS:
+            assert nominal[column] == printed[column], (law, column)
+
+
+def test_the_sensitivity_study_accounts_for_every_sample_and_maps_every_level(workdir, ci_config):
+    se, laws = ci_config["sensitivity"], ci_config["gag"]["charge_laws"]
+    inputs, k = list(se["inputs"]), len(se["inputs"])
+    indices = pd.read_csv(workdir / "results/sensitivity/indices.csv")
+    samples = pd.read_csv(workdir / "results/sensitivity/samples.csv")
+    failures = pd.read_csv(workdir / "results/sensitivity/failures.csv")
+    sizes = dict(
+        nominal=1,
+        morris=se["morris"]["trajectories"] * (k + 1),
+        sobol=se["sobol"]["base_samples"] * (se["sobol"]["inputs"] + 2),
+    )
+    for method, n in sizes.items():
+        for law in laws:
+            rows = samples[(samples.method == method) & (samples.charge_law == law)]
+            assert sorted(rows["sample"]) == list(range(n)), (method, law)
+    morris = indices[indices.method == "morris"]
+    sobol = indices[indices.method == "sobol"]
+    for law in laws:
+        for output in pool_response.OUTPUTS:
+            m = morris[(morris.charge_law == law) & (morris.output == output)]
+            assert sorted(m.input.unique()) == sorted(inputs) and set(m["index"]) == {"mu_star", "mu", "sigma"}
+            s = sobol[(sobol.charge_law == law) & (sobol.output == output)]
+            assert s.input.nunique() == se["sobol"]["inputs"] and set(s.input) <= set(inputs)
+            assert set(s["index"]) == {"S1", "ST"}
+            # a sample without the output is counted; the used ones are whole trajectories or base rows
+            runs = samples[(samples.charge_law == law)]
+            for method, rows, block in (("morris", m, k + 1), ("sobol", s, se["sobol"]["inputs"] + 2)):
+                y = runs[runs.method == method][output]
+                assert (rows.samples_missing == y.isna().sum()).all(), (law, output, method)
+                assert (rows.samples_used % block == 0).all() and (rows.samples_used <= len(y)).all()
+    lacking = samples[(samples.status != "ok") | samples[list(pool_response.OUTPUTS)].isna().any(axis=1)]
+    assert len(failures) == len(lacking) and set(inputs) <= set(failures.columns)
+    assert (failures.status != "ok").sum() == (samples.status != "ok").sum()
+    table = pd.read_csv(workdir / "results/sensitivity/delamination_map.csv")
+    levels = (
+        ci_config["delamination"]["max_concentration_mEq_l"] / ci_config["delamination"]["concentration_step_mEq_l"]
+    )
+    assert (
+        len(table)
+        == len(laws) * len(se["map"]["angular_extents_deg"]) * len(se["map"]["critical_stresses_kPa"]) * levels
+    )
+    assert set(table.state) <= set(delamination.LEVEL_CLASSES)
+    assert set(table.charge_law) == set(laws)
+
+
+def test_the_source_of_a_range_is_documentation_and_reruns_nothing(workdir, ci_config, tmp_path):
+    cfg = copy.deepcopy(ci_config)
+    first = next(iter(cfg["sensitivity"]["inputs"]))
+    cfg["sensitivity"]["inputs"][first]["source"] = "a better reference"
+    run = snakemake(workdir, "-n", "all", configfile=written_config(tmp_path, cfg))
+    assert run.returncode == 0 and "Nothing to be done" in run.stdout + run.stderr, run.stdout[-3000:]

@@ -1,0 +1,256 @@
+import math
+
+from sphgag import pool_response
+
+SE = config["sensitivity"]
+# the nominal scenario of every sample (sphgag.pool_response): figure 5's pool with the pipeline's own slices, so
+# that the nominal sample reruns the pipeline's runs of that pool to the bit
+SE_SCENARIO = dict(
+    bilayer=config["bilayer"],
+    numerics=config["numerics"],
+    homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
+    swelling=SWELL_SETTINGS,
+    delamination=DE_SETTINGS,
+    pool=DE["pool_sets"][FIG5_SET][0],
+    pool_set=FIG5_SET,
+    criterion=DE["criteria"][0],
+    concentration_mEq_l=SE["concentration_mEq_l"],
+    probe_length_um=SW["probe_length_um"],
+    gag=GAG[LAWS[0]],  # each batch runs its own law (the laws share every number)
+)
+pool_response.check_inputs(SE_SCENARIO, SE["inputs"])  # config.validate names the keys; this keeps them in step
+# the inputs' ranges without their sources (a source is documentation: editing it reruns nothing)
+SE_RANGES = {name: dict(low=r["low"], high=r["high"]) for name, r in SE["inputs"].items()}
+SE_K = len(SE_RANGES)
+SE_SIZES = dict(
+    nominal=1,
+    morris=SE["morris"]["trajectories"] * (SE_K + 1),
+    sobol=SE["sobol"]["base_samples"] * (SE["sobol"]["inputs"] + 2),
+)
+SE_BATCHES = {m: range(math.ceil(n / SE["batch_size"])) for m, n in SE_SIZES.items()}
+SE_BATCH = "results/sensitivity/{method}/{law}/batch{batch}.csv"
+SE_MAP = SE["map"]
+SE_MAP_POINTS = [
+    f"results/sensitivity/map/{law}/{w:g}deg_{s:g}kPa.csv"
+    for law in LAWS
+    for w in SE_MAP["angular_extents_deg"]
+    for s in SE_MAP["critical_stresses_kPa"]
+]
+
+
+wildcard_constraints:
+    method="nominal|morris|sobol",
+    batch=r"\d+",
+    width=r"[0-9.]+",
+
+
+rule sensitivity_design:
+    """The samples of the {method} design (nominal: the configuration's own values; morris: Morris trajectories over
+    every input)."""
+    input:
+        code=SENSITIVITY,
+    output:
+        "results/sensitivity/{method}/design.csv",
+    log:
+        "logs/sensitivity/{method}_design.log",
+    wildcard_constraints:
+        method="nominal|morris",
+    conda:
+        "../envs/sphgag.yaml"
+    params:
+        ranges=SE_RANGES,
+        morris=lambda wildcards: SE["morris"] if wildcards.method == "morris" else {},
+        nominal=lambda wildcards: (
+            {n: pool_response.nominal(SE_SCENARIO, n) for n in SE_RANGES} if wildcards.method == "nominal" else {}
+        ),
+    script:
+        "../scripts/sensitivity_design.py"
+
+
+rule sobol_design:
+    """The Saltelli samples of the Sobol indices, over the inputs with the largest Morris mu* (read from the Morris
+    indices)."""
+    input:
+        code=SENSITIVITY,
+        morris="results/sensitivity/morris/indices.csv",
+    output:
+        "results/sensitivity/sobol/design.csv",
+    log:
+        "logs/sensitivity/sobol_design.log",
+    conda:
+        "../envs/sphgag.yaml"
+    params:
+        ranges=SE_RANGES,
+        sobol=SE["sobol"],
+    script:
+        "../scripts/sensitivity_design.py"
+
+
+rule sensitivity_batch:
+    """Samples of batch {batch} of the {method} design, {law} charge: each reruns figure 5's pool from the homeostatic
+    state at its inputs (swelling to the stated concentration, then growth); a failed run is a row with its error."""
+    input:
+        code=SPHGAG + [SENSITIVITY],
+        design="results/sensitivity/{method}/design.csv",
+    output:
+        table=SE_BATCH,
+        provenance="results/provenance/sensitivity_{method}_{law}_batch{batch}.json",
+    log:
+        "logs/sensitivity/{method}/{law}/batch{batch}.log",
+    benchmark:
+        "results/benchmarks/sensitivity_{method}_{law}_batch{batch}.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=lambda wildcards: 5 + 3 * SE["batch_size"],
+        mem_mb=1500,
+    params:
+        scenario=lambda wildcards: dict(SE_SCENARIO, gag=GAG[wildcards.law]),
+        batch_size=SE["batch_size"],
+    script:
+        "../scripts/sensitivity_batch.py"
+
+
+rule sensitivity_method:
+    """The {method} indices of every output under every charge law, and every sample of the design with its
+    outputs."""
+    input:
+        code=SENSITIVITY,
+        design="results/sensitivity/{method}/design.csv",
+        batches=lambda wildcards: expand(
+            SE_BATCH, method=wildcards.method, law=LAWS, batch=SE_BATCHES[wildcards.method]
+        ),
+    output:
+        indices="results/sensitivity/{method}/indices.csv",
+        samples="results/sensitivity/{method}/samples.csv",
+    log:
+        "logs/sensitivity/{method}_indices.log",
+    wildcard_constraints:
+        method="morris|sobol",
+    conda:
+        "../envs/sphgag.yaml"
+    params:
+        ranges=SE_RANGES,
+        settings=lambda wildcards: SE[wildcards.method],
+    script:
+        "../scripts/sensitivity_indices.py"
+
+
+rule sensitivity:
+    """The study in three tidy tables: the indices, every sample with its inputs and outputs (the nominal one first),
+    and the samples without an output (a failed run, or no equilibrium at the stated concentration), by their inputs."""
+    input:
+        indices=expand("results/sensitivity/{method}/indices.csv", method=("morris", "sobol")),
+        samples=expand("results/sensitivity/{method}/samples.csv", method=("morris", "sobol")),
+        nominal=expand(SE_BATCH, method="nominal", law=LAWS, batch=0),
+    output:
+        indices=report(
+            "results/sensitivity/indices.csv",
+            caption="../report/sensitivity_indices.rst",
+            category="6 Sensitivity",
+            labels={"result": "Table: Morris and Sobol indices"},
+        ),
+        samples="results/sensitivity/samples.csv",
+        failures="results/sensitivity/failures.csv",
+    log:
+        "logs/sensitivity/aggregate.log",
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/sensitivity_tables.py"
+
+
+rule sensitivity_figure:
+    """Morris mu* against sigma, and Sobol S1 and ST with their intervals, for every output and charge law."""
+    input:
+        code=PLOTS,
+        indices=rules.sensitivity.output.indices,
+    output:
+        pdf="figures/sensitivity.pdf",
+        png=report(
+            "figures/sensitivity.png",
+            caption="../report/sensitivity.rst",
+            category="6 Sensitivity",
+            labels={"result": "Figure: which inputs decide the results"},
+        ),
+    log:
+        "logs/sensitivity_figure.log",
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/sensitivity_figure.py"
+
+
+rule delamination_map_point:
+    """Figure 5's pool at {width} deg and sigma_cr = {sigma} kPa, {law} charge, grown over the ramp: what it does at
+    each concentration level."""
+    input:
+        code=SPHGAG,
+        state=f"results/states/passive_{DE_PRESSURE}mmHg.npz",
+    output:
+        table="results/sensitivity/map/{law}/{width}deg_{sigma}kPa.csv",
+        provenance="results/provenance/delamination_map_{law}_{width}deg_{sigma}kPa.json",
+    log:
+        "logs/sensitivity/map/{law}/{width}deg_{sigma}kPa.log",
+    benchmark:
+        "results/benchmarks/delamination_map_{law}_{width}deg_{sigma}kPa.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=10,
+        mem_mb=1000,
+    params:
+        state_slice=dict(PRESSURISED_SLICE, model="passive"),
+        pool=lambda wildcards: dict(DE["pool_sets"][FIG5_SET][0], angular_extent_deg=float(wildcards.width)),
+        delamination=DE_SETTINGS,
+        criterion=DE["criteria"][0],
+        gag=lambda wildcards: GAG[wildcards.law],
+    script:
+        "../scripts/delamination_map_point.py"
+
+
+rule delamination_map:
+    """The delamination map (every charge law, angular extent, sigma_cr and concentration level) in one tidy table."""
+    input:
+        SE_MAP_POINTS,
+    output:
+        report(
+            "results/sensitivity/delamination_map.csv",
+            caption="../report/delamination_map_table.rst",
+            category="6 Sensitivity",
+            labels={"result": "Table: the delamination map"},
+        ),
+    log:
+        "logs/delamination_map.log",
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/concat_tables.py"
+
+
+rule delamination_map_figure:
+    """The map: angular extent x concentration, one panel per sigma_cr and charge law, with the limit concentrations
+    of figure 4's swelling runs."""
+    input:
+        code=PLOTS,
+        map=rules.delamination_map.output[0],
+        swelling=rules.tip_stress.output[0],
+    output:
+        pdf="figures/delamination_map.pdf",
+        png=report(
+            "figures/delamination_map.png",
+            caption="../report/delamination_map.rst",
+            category="6 Sensitivity",
+            labels={"result": "Figure: the delamination map"},
+        ),
+    log:
+        "logs/delamination_map_figure.log",
+    conda:
+        "../envs/sphgag.yaml"
+    params:
+        pressure=DE["pressure_mmHg"],
+        cases={name: c["angular_extent_deg"] for name, c in SW["cases"].items()},
+    script:
+        "../scripts/delamination_map_figure.py"

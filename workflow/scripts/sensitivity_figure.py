@@ -1,0 +1,11 @@
+"""Rule sensitivity_figure: Morris mu* against sigma and Sobol S1 and ST for every output and charge law."""
+
+import pandas as pd
+
+from sphgag import plots, runlog
+
+sm = snakemake  # noqa: F821
+with runlog.run("sensitivity_figure", sm.log[0]):
+    indices = pd.read_csv(sm.input.indices)
+    fig = plots.sensitivity(indices, list(dict.fromkeys(indices.charge_law)))
+    plots.save(fig, [sm.output.pdf, sm.output.png], "Sensitivity of the figure 4 and delamination results, sphgag")
