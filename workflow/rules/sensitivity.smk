@@ -103,7 +103,7 @@ rule sensitivity_batch:
         "../envs/sphgag.yaml"
     threads: 1
     resources:
-        runtime=lambda wildcards: 5 + 3 * SE["batch_size"],
+        runtime=5 + 4 * SE["batch_size"],
         mem_mb=1500,
     params:
         scenario=lambda wildcards: dict(SE_SCENARIO, gag=GAG[wildcards.law]),
@@ -199,7 +199,7 @@ rule delamination_map_point:
         "../envs/sphgag.yaml"
     threads: 1
     resources:
-        runtime=10,
+        runtime=15,
         mem_mb=1000,
     params:
         state_slice=dict(PRESSURISED_SLICE, model="passive"),
