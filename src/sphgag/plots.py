@@ -1205,7 +1205,7 @@ def sensitivity(indices: pd.DataFrame, laws):
     output, a column per method and charge law."""
     _style()
     laws = [law for law in laws if law in set(indices.charge_law)]
-    columns = [(m, law) for m in ("morris", "sobol") for law in laws]
+    columns = [(m, law) for m in ("morris", "sobol") if m in set(indices.method) for law in laws]
     outputs = [o for o in SENSITIVITY_OUTPUTS if o in set(indices.output)]
     fig, axes = plt.subplots(
         len(outputs),

@@ -189,12 +189,14 @@ def sobol_indices(problem: Problem, y, failed, resamples: int, confidence: float
 
 
 def most_influential(indices: pd.DataFrame, count: int) -> list[str]:
-    """The ``count`` inputs with the largest Morris ``mu*`` relative to the largest of their output (the maximum over
-    outputs and charge laws), most influential first; ties keep the inputs' order."""
+    """The ``count`` inputs with the largest Morris ``mu*`` relative to the largest of their output: ranked by the
+    maximum of that ratio over outputs and charge laws (an input that leads any one output first), ties by its mean
+    (the breadth of its influence), then by the inputs' order."""
     m = indices[(indices.method == "morris") & (indices["index"] == "mu_star")].copy()
     top = m.groupby(["charge_law", "output"]).value.transform("max")
     m["relative"] = (m.value / top).where(top > 0)
     order = list(dict.fromkeys(m.input))
-    score = m.groupby("input", sort=False).relative.max().reindex(order).fillna(-1.0)
-    ranked = sorted(order, key=lambda n: (-score[n], order.index(n)))
+    by_input = m.groupby("input", sort=False).relative
+    best, breadth = by_input.max().reindex(order).fillna(-1.0), by_input.mean().reindex(order).fillna(-1.0)
+    ranked = sorted(order, key=lambda n: (-best[n], -breadth[n], order.index(n)))
     return ranked[:count]
