@@ -80,7 +80,7 @@ def test_a_failed_sample_is_reported_by_its_inputs_and_counted_in_the_indices():
             raise Diverged("Newton diverged at c = 100 mEq/l")
         return {"y": float(linear(x))}
 
-    out = sensitivity.evaluate_rows(design, PROBLEM.names, evaluate, failure=Diverged, label="test")
+    out = pool_response.sample_rows(design, PROBLEM.names, evaluate, failure=Diverged, label="test")
     assert len(out) == len(design)
     row = out[out["sample"] == bad].iloc[0]
     assert row.status == "failed" and "Newton diverged at c = 100 mEq/l" in row.error and np.isnan(row.y)
@@ -98,7 +98,7 @@ def test_a_failed_sample_is_reported_by_its_inputs_and_counted_in_the_indices():
         raise KeyError("a bug")
 
     with pytest.raises(KeyError):
-        sensitivity.evaluate_rows(design, PROBLEM.names, buggy, failure=Diverged)
+        pool_response.sample_rows(design, PROBLEM.names, buggy, failure=Diverged)
 
 
 def test_sobol_leaves_out_the_base_rows_of_a_missing_sample_and_says_so():

@@ -19,12 +19,16 @@ pressure (rule ``bilayer_pressure_diameter``), the pool converted and swollen up
 from __future__ import annotations
 
 import copy
+import logging
+import time
 from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
 
 from . import artery, delamination, protocols, solver
+
+log = logging.getLogger("sphgag")
 
 #: the figure 4 quantities at the stated concentration (``pool_table`` columns; eqs. 2.10, 2.27)
 SWELLING_OUTPUTS = ("tip_radial_stress_kPa", "top_circ_stress_kPa", "pool_volume_change")
@@ -165,9 +169,35 @@ def outputs(response: Response) -> dict:
 
 
 def evaluate(scenario: dict, name: str):
-    """``inputs -> outputs`` of :func:`sphgag.sensitivity.evaluate_rows` for ``scenario``."""
+    """``inputs -> outputs`` of :func:`sample_rows` for ``scenario``."""
 
     def run(inputs: dict) -> dict:
         return outputs(respond(perturbed(scenario, inputs), name))
 
     return run
+
+
+def sample_rows(design: pd.DataFrame, names, evaluate, failure=Exception, label: str = "") -> pd.DataFrame:
+    """Outputs of ``evaluate({name: value}) -> {output: value}`` on every row of ``design``, one row each with
+    ``status`` (``ok`` or ``failed``) and ``error``; a row whose evaluation raises ``failure`` keeps its inputs, has
+    no outputs and names the error (anything else propagates: a bug is not a failed sample)."""
+    rows = []
+    for k, row in enumerate(design.to_dict(orient="records")):
+        inputs = {n: float(row[n]) for n in names}
+        started = time.time()
+        try:
+            outputs, status, error = evaluate(inputs), "ok", ""
+        except failure as exc:
+            outputs, status, error = {}, "failed", f"{type(exc).__name__}: {exc}"
+            log.warning("[%s] sample %d failed at %s: %s", label, row["sample"], inputs, error)
+        rows.append(dict(sample=int(row["sample"]), **inputs, status=status, error=error, **outputs))
+        log.info(
+            "[%s] sample %d (%d of %d): %s in %.1f s",
+            label,
+            row["sample"],
+            k + 1,
+            len(design),
+            status,
+            time.time() - started,
+        )
+    return pd.DataFrame(rows)

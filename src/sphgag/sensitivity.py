@@ -2,9 +2,9 @@
 
 The study (issue 17) is model-agnostic here: a *problem* is a list of inputs with uniform ranges; a *design* is a
 table of input values, one row per sample (:func:`morris_design`, :func:`sobol_design`); a model evaluated on every
-row gives a table of outputs (:func:`evaluate_rows`, which records a sample whose run fails by its inputs and its
-error instead of dropping it); the indices come back as one tidy table (:func:`morris_indices`,
-:func:`sobol_indices`).
+row gives a table of outputs (:func:`sphgag.pool_response.sample_rows`, which records a sample whose run fails by its
+inputs and its error instead of dropping it); the indices come back as one tidy table (:func:`morris_indices`,
+:func:`sobol_indices`). This module computes no sample: editing it redoes the designs and the indices, not the runs.
 
 * **Morris** (Morris 1991; Campolongo et al. 2007): ``r`` one-at-a-time trajectories of ``k + 1`` samples on a grid
   of ``levels`` levels. The elementary effect of input ``i`` is ``(y(x + Delta e_i) - y(x)) / Delta`` with ``Delta``
@@ -21,8 +21,6 @@ and how many were missing or failed, so that nothing leaves the indices silently
 
 from __future__ import annotations
 
-import logging
-import time
 from dataclasses import dataclass
 
 import numpy as np
@@ -31,8 +29,6 @@ from SALib.analyze import morris as morris_analyze
 from SALib.analyze import sobol as sobol_analyze
 from SALib.sample import morris as morris_sample
 from SALib.sample import sobol as sobol_sample
-
-log = logging.getLogger("sphgag")
 
 #: columns of the index table (results/sensitivity/indices.csv), besides method, charge_law, output, input
 INDEX_COLUMNS = ["index", "value", "conf_low", "conf_high", "samples_used", "samples_missing", "samples_failed"]
@@ -86,32 +82,6 @@ def sobol_design(problem: Problem, base_samples: int, seed: int) -> pd.DataFrame
     """``base_samples (k + 2)`` samples: Saltelli's scheme for S1 and ST (scrambled Sobol' sequence)."""
     X = sobol_sample.sample(problem.salib, base_samples, calc_second_order=False, seed=seed)
     return _design(problem, X)
-
-
-def evaluate_rows(design: pd.DataFrame, names, evaluate, failure=Exception, label: str = "") -> pd.DataFrame:
-    """Outputs of ``evaluate({name: value}) -> {output: value}`` on every row of ``design``, one row each with
-    ``status`` (``ok`` or ``failed``) and ``error``; a row whose evaluation raises ``failure`` keeps its inputs, has
-    no outputs and names the error (anything else propagates: a bug is not a failed sample)."""
-    rows = []
-    for k, row in enumerate(design.to_dict(orient="records")):
-        inputs = {n: float(row[n]) for n in names}
-        started = time.time()
-        try:
-            outputs, status, error = evaluate(inputs), "ok", ""
-        except failure as exc:
-            outputs, status, error = {}, "failed", f"{type(exc).__name__}: {exc}"
-            log.warning("[%s] sample %d failed at %s: %s", label, row["sample"], inputs, error)
-        rows.append(dict(sample=int(row["sample"]), **inputs, status=status, error=error, **outputs))
-        log.info(
-            "[%s] sample %d (%d of %d): %s in %.1f s",
-            label,
-            row["sample"],
-            k + 1,
-            len(design),
-            status,
-            time.time() - started,
-        )
-    return pd.DataFrame(rows)
 
 
 def _complete_blocks(y: np.ndarray, block: int) -> np.ndarray:

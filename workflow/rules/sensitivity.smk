@@ -90,7 +90,7 @@ rule sensitivity_batch:
     """Samples of batch {batch} of the {method} design, {law} charge: each reruns figure 5's pool from the homeostatic
     state at its inputs (swelling to the stated concentration, then growth); a failed run is a row with its error."""
     input:
-        code=SPHGAG + [SENSITIVITY],
+        code=SPHGAG,
         design="results/sensitivity/{method}/design.csv",
     output:
         table=SE_BATCH,

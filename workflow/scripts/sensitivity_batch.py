@@ -6,7 +6,7 @@ import time
 import numba
 import pandas as pd
 
-from sphgag import pool_response, provenance, runlog, sensitivity, solver
+from sphgag import pool_response, provenance, runlog, solver
 
 sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)
@@ -19,7 +19,7 @@ with runlog.run(run, sm.log[0]) as log:
     rows = design.iloc[int(w.batch) * size : (int(w.batch) + 1) * size]
     names = [c for c in design.columns if c != "sample"]
     scenario = sm.params.scenario
-    table = sensitivity.evaluate_rows(
+    table = pool_response.sample_rows(
         rows, names, pool_response.evaluate(scenario, run), failure=solver.SimulationError, label=run
     )
     table.insert(1, "charge_law", scenario["gag"]["charge_law"])
