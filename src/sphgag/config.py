@@ -9,6 +9,7 @@ allowed range and what the key means.
 
 from __future__ import annotations
 
+import functools
 import math
 from pathlib import Path
 
@@ -271,6 +272,20 @@ def _pool_set_roles(de: dict) -> list[str]:
     return out
 
 
+def _pool_radii(pool: dict) -> tuple[float, float]:
+    """Inner and outer reference radius [um] of a pool entry."""
+    return (
+        pool["centre_radius_um"] - pool["radial_extent_um"] / 2,
+        pool["centre_radius_um"] + pool["radial_extent_um"] / 2,
+    )
+
+
+def _pool_angles(pool: dict) -> tuple[float, float]:
+    """First and last angle [deg] of a pool entry."""
+    half = pool["angular_extent_deg"] / 2
+    return pool["centre_angle_deg"] - half, pool["centre_angle_deg"] + half
+
+
 def _consistency(config: dict) -> list[str]:
     """Relations between keys that a JSON schema cannot express."""
     from .materials import CHARGE_LAWS
@@ -361,16 +376,12 @@ def _consistency(config: dict) -> list[str]:
             if not r_in < r < border:
                 problems.append(f"bilayer.aligned_radii_um[{k}] = {r} is not inside the media ({r_in:g}-{border:g} um)")
         for name, pool in pools.items():
-            lo = pool["centre_radius_um"] - pool["radial_extent_um"] / 2
-            hi = pool["centre_radius_um"] + pool["radial_extent_um"] / 2
+            lo, hi = _pool_radii(pool)
             if lo < r_in or hi > border:
                 problems.append(f"{name}: radii {lo:g}-{hi:g} um leave the media ({r_in:g}-{border:g} um)")
-            half = pool["angular_extent_deg"] / 2
-            if pool["centre_angle_deg"] - half <= 0 or pool["centre_angle_deg"] + half >= 90:
-                problems.append(
-                    f"{name}: angles {pool['centre_angle_deg'] - half:g}-"
-                    f"{pool['centre_angle_deg'] + half:g} deg reach a symmetry edge (0 or 90 deg)"
-                )
+            first, last = _pool_angles(pool)
+            if first <= 0 or last >= 90:
+                problems.append(f"{name}: angles {first:g}-{last:g} deg reach a symmetry edge (0 or 90 deg)")
     problems += _thin_layers(config)
     if not problems and bil:
         problems += _empty_pools(config)
@@ -425,15 +436,10 @@ def _sensitivity(config: dict, schema: dict) -> list[str]:
             )
             continue
         key = sensitivity_config_key(config, path)
-        node = config
-        for part in key:
-            node = (
-                node[part]
-                if isinstance(node, (dict, list)) and (part in node if isinstance(node, dict) else part < len(node))
-                else None
-            )
-            if node is None:
-                break
+        try:
+            node = functools.reduce(lambda parent, part: parent[part], key, config)
+        except (KeyError, IndexError, TypeError):
+            node = None
         if isinstance(node, bool) or not isinstance(node, (int, float)):
             out.append(f"{name}: {_key(key)} is not a number of the configuration")
             continue
@@ -449,7 +455,7 @@ def _sensitivity(config: dict, schema: dict) -> list[str]:
     radius = se["inputs"].get("pool.centre_radius_um", {})
     for end in ("low", "high"):
         if end in radius:
-            lo, hi = radius[end] - pool["radial_extent_um"] / 2, radius[end] + pool["radial_extent_um"] / 2
+            lo, hi = _pool_radii(dict(pool, centre_radius_um=radius[end]))
             if lo < r_in or hi > border:
                 out.append(
                     f"sensitivity.inputs.pool.centre_radius_um.{end} = {radius[end]}: the pool ({lo:g}-{hi:g} um) "
@@ -461,15 +467,18 @@ def _sensitivity(config: dict, schema: dict) -> list[str]:
         for e in ("low", "high")
     ]
     for name, w in widths:
-        if w is not None and not (0 < pool["centre_angle_deg"] - w / 2 and pool["centre_angle_deg"] + w / 2 < 90):
+        if w is None:
+            continue
+        first, last = _pool_angles(dict(pool, angular_extent_deg=w))
+        if first <= 0 or last >= 90:
             out.append(
                 f"{name} = {w}: figure 5's pool (centre {pool['centre_angle_deg']:g} deg) would reach a symmetry edge"
             )
-    sw = config["swelling"]
-    step = sw["max_concentration_mEq_l"] / (sw["concentration_points"] - 1)
-    k = round(se["concentration_mEq_l"] / step)
-    if not (0 < k < sw["concentration_points"] and math.isclose(k * step, se["concentration_mEq_l"])):
-        steps = ", ".join(f"{i * step:g}" for i in range(1, sw["concentration_points"]))
+    from .protocols import concentration_steps
+
+    steps = concentration_steps(config["swelling"])
+    if not any(math.isclose(c, se["concentration_mEq_l"]) for c in steps):
+        steps = ", ".join(f"{c:g}" for c in steps)
         out.append(
             f"sensitivity.concentration_mEq_l = {se['concentration_mEq_l']} must be a step of the swelling ramp "
             f"({steps})"

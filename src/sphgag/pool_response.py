@@ -35,8 +35,6 @@ SWELLING_OUTPUTS = ("tip_radial_stress_kPa", "top_circ_stress_kPa", "pool_volume
 #: the delamination quantities (section 2.7)
 DELAMINATION_OUTPUTS = ("onset_concentration_mEq_l", "final_length_um", "propagated")
 OUTPUTS = SWELLING_OUTPUTS + DELAMINATION_OUTPUTS
-#: what a run did but the indices do not take: how each protocol ended, and whether onset was censored
-RECORDS = ("swelling_end", "delamination_stop", "outcome", "onset_censored", "max_residual")
 
 
 def _node(scenario: dict, path: str):
@@ -87,17 +85,18 @@ def perturbed(scenario: dict, inputs: dict) -> dict:
 
 
 def swelling_settings(scenario: dict) -> dict:
-    """The figure 4 settings cut at the stated concentration, on the same concentration steps (which it must be
-    one of), so that the path up to it is the pipeline's."""
+    """The figure 4 settings cut at the stated concentration, on the same concentration steps
+    (:func:`sphgag.protocols.concentration_steps`, which it must be one of), so that the path up to it is the
+    pipeline's."""
     sw, c = scenario["swelling"], scenario["concentration_mEq_l"]
-    step = sw["max_concentration_mEq_l"] / (sw["concentration_points"] - 1)
-    k = round(c / step)
-    if not (0 < k < sw["concentration_points"] and abs(k * step - c) <= 1e-9 * max(c, 1.0)):
+    steps = protocols.concentration_steps(sw)
+    at = np.flatnonzero(np.isclose(steps, c, rtol=1e-9, atol=0.0))
+    if not at.size:
         raise ValueError(
             f"the stated concentration {c:g} mEq/l is not a step of the swelling ramp (0 to "
             f"{sw['max_concentration_mEq_l']:g} in {sw['concentration_points']} points)"
         )
-    return dict(sw, max_concentration_mEq_l=k * step, concentration_points=k + 1)
+    return dict(sw, max_concentration_mEq_l=float(steps[at[0]]), concentration_points=int(at[0]) + 2)
 
 
 @dataclass
@@ -121,13 +120,13 @@ def pressurised(scenario: dict, name: str) -> solver.State:
     return protocols.pressurise(wall, start, s["delamination"]["pressure_mmHg"], s["numerics"])
 
 
-def respond(scenario: dict, name: str = "pool_response", start: solver.State | None = None) -> Response:
-    """Figure 4's swelling and figure 5's growth of the scenario's pool, from ``start`` (the pressurised wall; by
-    default :func:`pressurised`)."""
+def respond(scenario: dict, name: str = "pool_response") -> Response:
+    """Figure 4's swelling and figure 5's growth of the scenario's pool, each from the pressurised wall
+    (:func:`pressurised`) as a saved state: positions and load only."""
     s = scenario
     bl, numerics, gag, de = s["bilayer"], s["numerics"], s["gag"], s["delamination"]
-    start = start if start is not None else pressurised(s, name)
-    start = solver.State(start.load, start.x, None, None)
+    wall = pressurised(s, name)
+    start = solver.State(wall.load, wall.x, None, None)
     pool = artery.pool_sector(s["pool"])
     model = artery.bilayer_model(bl, numerics, name=f"{name}_swell", pool=pool, gag=gag)
     states = protocols.swell_pool(model, start, numerics, swelling_settings(s))

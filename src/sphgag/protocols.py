@@ -439,6 +439,12 @@ class PoolState:
         )
 
 
+def concentration_steps(sw: dict) -> np.ndarray:
+    """The fixed-charge concentrations [mEq/l] of the figure 4 ramp after c = 0: ``concentration_points`` evenly
+    spaced from 0 to ``max_concentration_mEq_l``."""
+    return np.linspace(0.0, sw["max_concentration_mEq_l"], sw["concentration_points"])[1:]
+
+
 def swell_pool(model: Model, start: solver.State, numerics: dict, sw: dict) -> list[PoolState]:
     """Figure 4 protocol for one pool, from a converged pressurised state (lumen pressure held).
 
@@ -474,7 +480,7 @@ def swell_pool(model: Model, start: solver.State, numerics: dict, sw: dict) -> l
     conv = solver.follow_path(
         model, intact.x, base, [swelling_load(base, f, 0.0) for f in np.linspace(0, 1, steps + 1)[1:]], **opts
     )[-1]
-    cs = np.linspace(0.0, sw["max_concentration_mEq_l"], sw["concentration_points"])[1:]
+    cs = concentration_steps(sw)
     log.info("[%s] swelling: c = %s mEq/l", run, ", ".join(f"{c:g}" for c in cs))
     states = [PoolState.of("intact", 0.0, intact), PoolState.of("converted", 0.0, conv)]
     last = conv

@@ -123,9 +123,9 @@ def morris_indices(
     an output with fewer than two complete trajectories has no indices (NaN)."""
     y, failed = np.asarray(y, float), np.asarray(failed, bool)
     X = design[list(problem.names)].to_numpy()
-    used = _complete_blocks(y, problem.salib["num_vars"] + 1)
-    counts = _counts(y, used, failed)
     k = len(problem.names)
+    used = _complete_blocks(y, k + 1)
+    counts = _counts(y, used, failed)
     if used.sum() < 2 * (k + 1):
         nan = {n: [(np.nan, np.nan)] * k for n in ("mu_star", "mu", "sigma")}
         return _rows("morris", problem, nan, counts)
