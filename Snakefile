@@ -45,11 +45,14 @@ wildcard_constraints:
 # affects; figure, claims and sensitivity-index rules depend on their own modules only; the modules that
 # compute no number (validation, logging, provenance records) are inputs of nothing.
 PRESENTATION = {"plots.py", "claims.py", "sensitivity.py", "config.py", "runlog.py", "provenance.py"}
-# (relative to the working directory, so that moving or re-cloning the checkout reruns nothing)
-SPHGAG = sorted(os.path.relpath(p) for p in Path(SRC, "sphgag").glob("*.py") if p.name not in PRESENTATION)
-PLOTS = os.path.relpath(Path(SRC, "sphgag", "plots.py"))
-CLAIMS = os.path.relpath(Path(SRC, "sphgag", "claims.py"))
-SENSITIVITY = os.path.relpath(Path(SRC, "sphgag", "sensitivity.py"))  # the indices, not the samples' simulations
+# every module of the package, subpackages included, by its path in the package; each path relative to the working
+# directory, so that moving or re-cloning the checkout reruns nothing
+PACKAGE = Path(SRC, "sphgag")
+MODULES = {p.relative_to(PACKAGE).as_posix(): os.path.relpath(p) for p in sorted(PACKAGE.rglob("*.py"))}
+SPHGAG = [path for name, path in MODULES.items() if name not in PRESENTATION]
+PLOTS = MODULES["plots.py"]
+CLAIMS = MODULES["claims.py"]
+SENSITIVITY = MODULES["sensitivity.py"]  # the indices, not the samples' simulations
 
 
 # snakemake --report report.zip: every figure and the main tables carry report(caption, category, labels) in

@@ -534,6 +534,28 @@ def plan(project, *args):
     return run, run.stdout + run.stderr
 
 
+# the modules that compute no number (validation, logging, provenance records): inputs of no rule, so that editing
+# them reruns nothing (Snakefile, PRESENTATION)
+NO_NUMBER = {"config.py", "runlog.py", "provenance.py"}
+
+
+def test_every_module_of_the_package_is_an_input_of_the_rules_that_run_it(fresh_copy):
+    """Every module under src/sphgag, subpackages included, is an input of some job of the full DAG (so that an edit
+    reruns what it affects), except the modules that compute no number."""
+    run, out = plan(fresh_copy, "--forceall", "--configfile", "config/ci.yaml")
+    assert run.returncode == 0, out
+    inputs = {
+        name.strip()
+        for line in out.splitlines()
+        if line.strip().startswith("input:")
+        for name in line.split(":", 1)[1].split(",")
+    }
+    package = fresh_copy / "src" / "sphgag"
+    modules = {p.relative_to(package).as_posix() for p in package.rglob("*.py")}
+    covered = {m for m in modules if f"src/sphgag/{m}" in inputs}
+    assert modules - covered == {m for m in modules if m.rsplit("/", 1)[-1] in NO_NUMBER}
+
+
 def test_a_configfile_stands_alone(fresh_copy, ci_config):
     """--configfile X means X: nothing of config/config.yaml (pools II, III, pressure 145) leaks in."""
     run, out = plan(fresh_copy, "--configfile", "config/ci.yaml")

@@ -23,10 +23,11 @@ __version__ = "0.1.0"
 _PACKAGE_DIR = Path(__file__).resolve().parent
 
 
-def _source_hash() -> str:
+def _source_hash(package: Path = _PACKAGE_DIR) -> str:
+    """SHA-256 of every module of the package, subpackages included (path relative to the package, then bytes)."""
     h = hashlib.sha256()
-    for path in sorted(_PACKAGE_DIR.glob("*.py")):
-        h.update(path.name.encode())
+    for path in sorted(package.rglob("*.py")):
+        h.update(path.relative_to(package).as_posix().encode())
         h.update(path.read_bytes())
     return h.hexdigest()
 
