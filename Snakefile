@@ -14,7 +14,7 @@ os.environ.update(PYTHONPATH=os.pathsep.join(filter(None, [SRC, os.environ.get("
 from snakemake.utils import update_config  # noqa: E402
 
 from sphgag.config import canonical, load_yaml, typed_overrides, validate  # noqa: E402
-from sphgag.materials import law_gag  # noqa: E402
+from sphgag.physics.materials import law_gag  # noqa: E402
 
 # The full study is the default only when no --configfile is given: a user's config stands alone (Snakemake would
 # otherwise merge it over config/config.yaml, so that pools, pressures and whole sections leak in from the full study).
@@ -44,15 +44,22 @@ wildcard_constraints:
 # rule depends on the package's physics sources, so a physics edit reruns what it
 # affects; figure, claims and sensitivity-index rules depend on their own modules only; the modules that
 # compute no number (validation, logging, provenance records) are inputs of nothing.
-PRESENTATION = {"plots.py", "claims.py", "sensitivity.py", "config.py", "runlog.py", "provenance.py"}
+PRESENTATION = {
+    "views/plots.py",
+    "studies/claims.py",
+    "studies/sensitivity.py",
+    "config.py",
+    "records/runlog.py",
+    "records/provenance.py",
+}
 # every module of the package, subpackages included, by its path in the package; each path relative to the working
 # directory, so that moving or re-cloning the checkout reruns nothing
 PACKAGE = Path(SRC, "sphgag")
 MODULES = {p.relative_to(PACKAGE).as_posix(): os.path.relpath(p) for p in sorted(PACKAGE.rglob("*.py"))}
 SPHGAG = [path for name, path in MODULES.items() if name not in PRESENTATION]
-PLOTS = MODULES["plots.py"]
-CLAIMS = MODULES["claims.py"]
-SENSITIVITY = MODULES["sensitivity.py"]  # the indices, not the samples' simulations
+PLOTS = MODULES["views/plots.py"]
+CLAIMS = MODULES["studies/claims.py"]
+SENSITIVITY = MODULES["studies/sensitivity.py"]  # the indices, not the samples' simulations
 
 
 # snakemake --report report.zip: every figure and the main tables carry report(caption, category, labels) in

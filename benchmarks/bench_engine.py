@@ -29,8 +29,10 @@ import scipy.sparse.linalg as spla
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
-from sphgag import artery, config, forces, protocols  # noqa: E402
-from sphgag.loading import MMHG_TO_KPA, Load  # noqa: E402
+from sphgag import config  # noqa: E402
+from sphgag.engine import forces  # noqa: E402
+from sphgag.engine.loading import MMHG_TO_KPA, Load  # noqa: E402
+from sphgag.studies import artery, protocols  # noqa: E402
 
 
 def median_time(fn, repeats, inner):

@@ -50,10 +50,13 @@ def measure(dx: float, config_path: str) -> dict:
     import numba
     import scipy.sparse.linalg as spla
 
-    from sphgag import artery, config, geometry, materials, protocols, solver
-    from sphgag.history import HistoryMaterial
-    from sphgag.loading import MMHG_TO_KPA, Load
-    from sphgag.model import Model
+    from sphgag import config
+    from sphgag.engine import geometry, solver
+    from sphgag.engine.history import HistoryMaterial
+    from sphgag.engine.loading import MMHG_TO_KPA, Load
+    from sphgag.engine.model import Model
+    from sphgag.physics import materials
+    from sphgag.studies import artery, protocols
 
     numba.set_num_threads(1)
     cfg = config.validate(config.load_yaml(config_path), ROOT / "config" / "schema.yaml")

@@ -1,6 +1,6 @@
 """How the hourglass parameter alpha (eq. 2.14) shapes the stress field around a swelling inclusion.
 
-The pool verification problem (sphgag.inclusion: elliptical GAG inclusion in the
+The pool verification problem (sphgag.studies.inclusion: elliptical GAG inclusion in the
 elastin matrix, exact far field, Pi = 0.5 kPa) at one aspect ratio and two
 resolutions, for several alpha, with the hourglass penalty measured within each
 material (the package's scheme) and, for comparison, across the interface (the
@@ -22,7 +22,9 @@ import pandas as pd
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
-from sphgag import config, inclusion, materials  # noqa: E402
+from sphgag import config  # noqa: E402
+from sphgag.physics import materials  # noqa: E402
+from sphgag.studies import inclusion  # noqa: E402
 
 
 def main():

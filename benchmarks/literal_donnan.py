@@ -1,5 +1,5 @@
 """The pools under the Donnan law as eq. (2.27) is printed: a swelling pressure Pi(c) that does not fall as the
-pool swells (``gag.charge_laws: [prescribed]``, the law ``prescribed`` of :data:`sphgag.materials.CHARGE_LAWS`).
+pool swells (``gag.charge_laws: [prescribed]``, the law ``prescribed`` of :data:`sphgag.physics.materials.CHARGE_LAWS`).
 
 For each particle spacing: passive homeostatic state at 103 mmHg, then the figure 4
 protocol for cases I and IV. Prints, per run, the pool's volume ratio and the tip
@@ -22,7 +22,10 @@ import pandas as pd
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
-from sphgag import artery, config, materials, protocols, solver  # noqa: E402
+from sphgag import config  # noqa: E402
+from sphgag.engine import solver  # noqa: E402
+from sphgag.physics import materials  # noqa: E402
+from sphgag.studies import artery, protocols  # noqa: E402
 
 
 def main():

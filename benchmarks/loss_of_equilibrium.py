@@ -4,7 +4,7 @@ Issue 15, section 3. The single pool (case I) under the paper's law (Pi(c) presc
 eqs. 2.25-2.27), averaged onset, sigma_cr = 40 kPa, passive wall at 103 mmHg:
 
 1. grow it with a snapshot at every pass until the first damage pass whose transition
-   has no equilibrium on its path (the run then follows a snap, sphgag.snap);
+   has no equilibrium on its path (the run then follows a snap, sphgag.engine.snap);
 2. from the converged state before that pass, walk the transition t = 0 -> 1 with
    halved increments (down to 1/1024) to the furthest t reached quasi-statically, and
    keep the last Newton iterate at the first t it cannot reach (the stall);
@@ -36,9 +36,12 @@ import scipy.sparse.linalg as spla
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
-from sphgag import artery, config, delamination, materials, measure, protocols, solver  # noqa: E402
-from sphgag.history import HistoryMaterial  # noqa: E402
-from sphgag.model import Model  # noqa: E402
+from sphgag import config  # noqa: E402
+from sphgag.engine import measure, solver  # noqa: E402
+from sphgag.engine.history import HistoryMaterial  # noqa: E402
+from sphgag.engine.model import Model  # noqa: E402
+from sphgag.physics import materials  # noqa: E402
+from sphgag.studies import artery, delamination, protocols  # noqa: E402
 
 
 def stiffness_modes(model, ev, shifts=(-3000.0, -300.0, 0.0), k=3, hourglass=True):

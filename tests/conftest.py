@@ -9,8 +9,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from sphgag import artery, config, geometry, kernel, materials, protocols, solver
-from sphgag.model import Model
+from sphgag import config
+from sphgag.engine import geometry, kernel, solver
+from sphgag.engine.model import Model
+from sphgag.physics import materials
+from sphgag.studies import artery, protocols
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -4,7 +4,8 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from sphgag import analytic, artery
+from sphgag.physics import analytic
+from sphgag.studies import artery
 
 
 def test_thin_wall_means():

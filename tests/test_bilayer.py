@@ -3,9 +3,11 @@
 import numpy as np
 import pytest
 
-from sphgag import artery, materials, protocols, state
-from sphgag.loading import MMHG_TO_KPA, Load
-from sphgag.state import StateMismatch
+from sphgag.engine.loading import MMHG_TO_KPA, Load
+from sphgag.physics import materials
+from sphgag.records import state
+from sphgag.records.state import StateMismatch
+from sphgag.studies import artery, protocols
 
 # Bounds at the CI resolution (dx = 6 um, 1222 particles), from measured values (dx = 8 um, alpha = 50):
 # carried pressure 104.7 mmHg (semi-analytical 104.6, target 103); hoop stress (max - min)/mean

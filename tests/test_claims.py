@@ -4,7 +4,7 @@ their roles (synthetic tables; the pipeline test runs the real ones)."""
 import numpy as np
 import pandas as pd
 
-from sphgag import claims
+from sphgag.studies import claims
 
 CASES = {"I": {"angular_extent_deg": 3.0}, "IV": {"angular_extent_deg": 16.0}}
 

@@ -111,7 +111,7 @@ def test_a_pool_named_by_a_number_is_rejected(ci_config):
 
 
 def test_a_corrupt_state_file_names_the_file_and_the_remedy(tmp_path):
-    from sphgag import state
+    from sphgag.records import state
 
     path = tmp_path / "homeostatic.npz"
     path.write_bytes(b"PK\x03\x04 truncated")
@@ -123,7 +123,7 @@ def test_a_corrupt_state_file_names_the_file_and_the_remedy(tmp_path):
 
 
 def test_the_schema_names_the_charge_laws_of_the_package():
-    from sphgag import materials
+    from sphgag.physics import materials
 
     schema = config.load_yaml(SCHEMA)
     assert tuple(schema["properties"]["gag"]["properties"]["charge_laws"]["items"]["enum"]) == materials.CHARGE_LAWS

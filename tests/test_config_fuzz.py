@@ -16,8 +16,9 @@ import yaml
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from sphgag import artery, config
-from sphgag.loading import Load
+from sphgag import config
+from sphgag.engine.loading import Load
+from sphgag.studies import artery
 
 from .conftest import ROOT, law_gag
 

@@ -1,9 +1,10 @@
-"""The pressurised-crack verification problem (sphgag.crack): its layout, its load and its opening before growth."""
+"""The pressurised-crack verification problem (sphgag.studies.crack): its layout, load and opening before growth."""
 
 import numpy as np
 import pytest
 
-from sphgag import crack, fracture, inclusion, materials
+from sphgag.physics import fracture, materials
+from sphgag.studies import crack, inclusion
 
 NUMERICS = dict(
     kernel_support_factor=2.5,

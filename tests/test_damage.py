@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from sphgag import damage
-from sphgag import materials as mt
+from sphgag.physics import damage
+from sphgag.physics import materials as mt
 
 from .test_materials import THETA, mixture_props, piola, random_F
 

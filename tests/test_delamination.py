@@ -6,9 +6,11 @@ import numpy as np
 import pytest
 from scipy.spatial import cKDTree
 
-from sphgag import artery, delamination, geometry, protocols, state
-from sphgag.history import DAMAGED, SEEDED, HistoryMaterial, ParticleHistory
-from sphgag.loading import Load
+from sphgag.engine import geometry
+from sphgag.engine.history import DAMAGED, SEEDED, HistoryMaterial, ParticleHistory
+from sphgag.engine.loading import Load
+from sphgag.records import state
+from sphgag.studies import artery, delamination, protocols
 
 from .conftest import law_gag
 

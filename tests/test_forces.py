@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from sphgag import forces, loading
-from sphgag.loading import Load, lumen_area_gradient
+from sphgag.engine import forces, loading
+from sphgag.engine.loading import Load, lumen_area_gradient
 
 from .conftest import assert_jacobian_matches_fd, direct_pair_sum
 

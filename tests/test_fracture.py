@@ -1,10 +1,10 @@
-"""The closed forms of the pressurised crack (sphgag.fracture) against each other and the literature's numbers."""
+"""The closed forms of the pressurised crack (sphgag.physics.fracture) against each other and the literature."""
 
 import numpy as np
 import pytest
 from scipy import integrate
 
-from sphgag import fracture
+from sphgag.physics import fracture
 
 E = fracture.plane_strain_modulus(42.0)  # the media's elastin matrix, incompressible: 168 kPa
 

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from sphgag import geometry, kernel
+from sphgag.engine import geometry, kernel
 
 
 def test_volumes_sum_to_the_exact_area():
@@ -71,7 +71,7 @@ def test_averaging_over_a_physical_length(annulus_layout):
     length 40 um); a length below the spacing is refused."""
     import pytest
 
-    from sphgag import measure
+    from sphgag.engine import measure
 
     lay = annulus_layout
     W = measure.averaging_matrix(lay, 40.0)

@@ -1,9 +1,9 @@
-"""The exact pressurised-elliptical-hole field (sphgag.inglis) checked against its defining equations."""
+"""The exact pressurised-elliptical-hole field (sphgag.physics.inglis) checked against its defining equations."""
 
 import numpy as np
 import pytest
 
-from sphgag import inglis
+from sphgag.physics import inglis
 
 P, MU, NU = 1.3, 2.0, 0.3
 LAM = 2.0 * MU * NU / (1.0 - 2.0 * NU)

@@ -4,9 +4,11 @@ pool stress field against closed forms (Inglis, Lamé) at the CI resolution."""
 import numpy as np
 import pytest
 
-from sphgag import inclusion, kernel, loading, materials
-from sphgag.loading import Load
-from sphgag.model import Model
+from sphgag.engine import kernel, loading
+from sphgag.engine.loading import Load
+from sphgag.engine.model import Model
+from sphgag.physics import materials
+from sphgag.studies import inclusion
 
 from .conftest import Lattice, assert_jacobian_matches_fd, direct_pair_sum, isotropic_props
 

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from sphgag import materials as mt
+from sphgag.physics import materials as mt
 
 rng = np.random.default_rng(7)
 THETA = 0.6  # reference angle of the test particle (local frame is rotated)

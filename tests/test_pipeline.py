@@ -15,7 +15,7 @@ import pandas as pd
 import pytest
 import yaml
 
-from sphgag import delamination, pool_response
+from sphgag.studies import delamination, pool_response
 
 from .conftest import ROOT, project_copy, snakemake
 
@@ -446,12 +446,12 @@ def edited_copy(workdir, tmp_path, module: str) -> Path:
 
 
 def test_a_comment_in_a_module_that_computes_no_number_reruns_nothing(workdir, tmp_path):
-    run = snakemake(edited_copy(workdir, tmp_path, "provenance.py"), "-n", "all")
+    run = snakemake(edited_copy(workdir, tmp_path, "records/provenance.py"), "-n", "all")
     assert run.returncode == 0 and "Nothing to be done" in run.stdout + run.stderr, run.stdout[-3000:]
 
 
 def test_an_edit_of_the_plotting_module_redraws_the_figures_only(workdir, tmp_path):
-    run = snakemake(edited_copy(workdir, tmp_path, "plots.py"), "-n", "all")
+    run = snakemake(edited_copy(workdir, tmp_path, "views/plots.py"), "-n", "all")
     jobs = planned_jobs(run.stdout + run.stderr)
     print("\nplots.py edit reruns:", jobs)
     assert jobs and all(rule.startswith("fig") or rule.endswith("_figure") or rule == "all" for rule in jobs), jobs

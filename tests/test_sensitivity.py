@@ -5,7 +5,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from sphgag import delamination, pool_response, sensitivity
+from sphgag.studies import delamination, pool_response, sensitivity
 
 LINEAR = np.array([2.0, -3.0, 0.5, 0.0])
 PROBLEM = sensitivity.Problem(("a", "b", "c", "d"), (0.0, 1.0, -1.0, 5.0), (1.0, 3.0, 1.0, 6.0))

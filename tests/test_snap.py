@@ -1,12 +1,14 @@
-"""Growth through snaps (sphgag.snap) and the pool's volume as the control of a swelling path (sphgag.pool_volume)."""
+"""Growth through snaps (sphgag.engine.snap) and the pool's volume as the control of a swelling path
+(sphgag.engine.pool_volume)."""
 
 import dataclasses
 
 import numpy as np
 import pytest
 
-from sphgag import artery, delamination, geometry, pool_volume, protocols, snap, solver
-from sphgag.history import DAMAGED, HistoryMaterial
+from sphgag.engine import geometry, pool_volume, snap, solver
+from sphgag.engine.history import DAMAGED, HistoryMaterial
+from sphgag.studies import artery, delamination, protocols
 
 from .conftest import law_gag
 from .test_delamination import mirror_map

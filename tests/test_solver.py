@@ -3,8 +3,9 @@
 import numpy as np
 import pytest
 
-from sphgag import artery, protocols, solver
-from sphgag.loading import MMHG_TO_KPA, Load
+from sphgag.engine import solver
+from sphgag.engine.loading import MMHG_TO_KPA, Load
+from sphgag.studies import artery, protocols
 
 from .conftest import law_gag
 

@@ -4,8 +4,10 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from sphgag import artery, convergence, geometry, materials, protocols, solver
-from sphgag.loading import Load
+from sphgag.engine import geometry, solver
+from sphgag.engine.loading import Load
+from sphgag.physics import materials
+from sphgag.studies import artery, convergence, protocols
 
 from .conftest import law_gag
 

@@ -3,8 +3,9 @@
 import numpy as np
 import pytest
 
-from sphgag import artery, dynamics, measure, protocols, solver
-from sphgag.loading import MMHG_TO_KPA, Load
+from sphgag.engine import dynamics, measure, solver
+from sphgag.engine.loading import MMHG_TO_KPA, Load
+from sphgag.studies import artery, protocols
 
 # Bound for the CI resolution (dx = 14 um, 392 particles): measured 0.31 % at 200 mmHg;
 # the full resolution (dx = 7 um) gives 0.10 % (README); the error falls like dx^2.

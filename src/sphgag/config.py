@@ -186,7 +186,7 @@ def validate(config: dict, schema_path) -> dict:
 
 def _empty_pools(config: dict) -> list[str]:
     """Pools that hold no medial particle at a resolution they are run at (too thin or too narrow for dx)."""
-    from . import artery
+    from .studies import artery
 
     bil, out, layouts = config["bilayer"], [], {}
     sw, de = config.get("swelling", {}), config.get("delamination", {})
@@ -232,7 +232,7 @@ def _thin_layers(config: dict) -> list[str]:
     de_conv = config.get("delamination", {}).get("convergence", {})
     spacings += [("delamination.convergence.dx_um", dx) for dx in de_conv.get("dx_um", [])]
     source, dx = max(spacings, key=lambda item: item[1])
-    from .artery import bilayer_interfaces
+    from .studies.artery import bilayer_interfaces
 
     r0, border, _ = bilayer_interfaces(bil)
     edges = sorted({r0, border, *(r for r in bil.get("aligned_radii_um", []) if r0 < r < border)})
@@ -288,7 +288,7 @@ def _pool_angles(pool: dict) -> tuple[float, float]:
 
 def _consistency(config: dict) -> list[str]:
     """Relations between keys that a JSON schema cannot express."""
-    from .materials import CHARGE_LAWS
+    from .physics.materials import CHARGE_LAWS
 
     problems = []
     for k, law in enumerate(config.get("gag", {}).get("charge_laws", [])):
@@ -395,9 +395,9 @@ def _consistency(config: dict) -> list[str]:
 
 
 def sensitivity_config_key(config: dict, path: str) -> tuple:
-    """The configuration key a sensitivity input (a dotted path into :mod:`sphgag.pool_response`'s scenario) sets:
-    ``pool.*`` is figure 5's pool (the first of ``delamination.figures.fig5``'s set), the other sections are the
-    configuration's own."""
+    """The configuration key a sensitivity input (a dotted path into
+    :mod:`sphgag.studies.pool_response`'s scenario) sets: ``pool.*`` is figure 5's pool (the first of
+    ``delamination.figures.fig5``'s set), the other sections are the configuration's own."""
     section, *rest = path.split(".")
     if section == "pool":
         return ("delamination", "pool_sets", config["delamination"]["figures"]["fig5"], 0, *rest)
@@ -474,7 +474,7 @@ def _sensitivity(config: dict, schema: dict) -> list[str]:
             out.append(
                 f"{name} = {w}: figure 5's pool (centre {pool['centre_angle_deg']:g} deg) would reach a symmetry edge"
             )
-    from .protocols import concentration_steps
+    from .studies.protocols import concentration_steps
 
     steps = concentration_steps(config["swelling"])
     if not any(math.isclose(c, se["concentration_mEq_l"]) for c in steps):

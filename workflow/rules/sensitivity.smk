@@ -1,9 +1,9 @@
 import math
 
-from sphgag import pool_response
+from sphgag.studies import pool_response
 
 SE = config["sensitivity"]
-# the nominal scenario of every sample (sphgag.pool_response): figure 5's pool with the pipeline's own slices, so
+# the nominal scenario of every sample (sphgag.studies.pool_response): figure 5's pool with the pipeline's own slices, so
 # that the nominal sample reruns the pipeline's runs of that pool to the bit
 SE_SCENARIO = dict(
     bilayer=config["bilayer"],

@@ -4,7 +4,9 @@ import time
 
 import numba
 
-from sphgag import artery, protocols, provenance, runlog, solver, state
+from sphgag.engine import solver
+from sphgag.records import provenance, runlog, state
+from sphgag.studies import artery, protocols
 
 sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)

@@ -3,7 +3,7 @@
 import numpy as np
 import pandas as pd
 
-from sphgag import runlog
+from sphgag.records import runlog
 
 sm = snakemake  # noqa: F821
 PAPER_REDUCTION = 0.20  # "approximately 20 %" (paper sections 2.5 and 3)

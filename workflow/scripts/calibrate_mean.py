@@ -4,7 +4,8 @@ import time
 
 import numba
 
-from sphgag import artery, protocols, provenance, runlog
+from sphgag.records import provenance, runlog
+from sphgag.studies import artery, protocols
 
 sm = snakemake  # noqa: F821 (injected by Snakemake)
 numba.set_num_threads(sm.threads)

@@ -5,7 +5,8 @@ claims on the pool sets of their figures (``params.figures``, i.e. ``delaminatio
 
 import pandas as pd
 
-from sphgag import claims, delamination, runlog
+from sphgag.records import runlog
+from sphgag.studies import claims, delamination
 
 sm = snakemake  # noqa: F821
 with runlog.run("claims", sm.log[0]) as log:

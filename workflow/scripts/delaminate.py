@@ -7,7 +7,9 @@ import time
 import numba
 import pandas as pd
 
-from sphgag import artery, delamination, provenance, runlog, solver, state
+from sphgag.engine import solver
+from sphgag.records import provenance, runlog, state
+from sphgag.studies import artery, delamination
 
 sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)

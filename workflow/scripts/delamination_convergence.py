@@ -5,7 +5,8 @@ import time
 
 import numba
 
-from sphgag import delamination, provenance, runlog
+from sphgag.records import provenance, runlog
+from sphgag.studies import delamination
 
 sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)

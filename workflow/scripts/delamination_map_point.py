@@ -1,11 +1,13 @@
 """Rule delamination_map_point: figure 5's pool at one angular extent and sigma_cr, grown over the concentration ramp
-by eq. (2.28); what it does at each level (sphgag.delamination.level_classes)."""
+by eq. (2.28); what it does at each level (sphgag.studies.delamination.level_classes)."""
 
 import time
 
 import numba
 
-from sphgag import artery, delamination, provenance, runlog, solver, state
+from sphgag.engine import solver
+from sphgag.records import provenance, runlog, state
+from sphgag.studies import artery, delamination
 
 sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)

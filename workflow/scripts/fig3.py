@@ -2,7 +2,8 @@
 
 import pandas as pd
 
-from sphgag import plots, runlog
+from sphgag.records import runlog
+from sphgag.views import plots
 
 sm = snakemake  # noqa: F821
 with runlog.run("fig3", sm.log[0]):

@@ -2,7 +2,9 @@
 
 import pandas as pd
 
-from sphgag import delamination, plots, runlog
+from sphgag.records import runlog
+from sphgag.studies import delamination
+from sphgag.views import plots
 
 sm = snakemake  # noqa: F821
 with runlog.run("fig5", sm.log[0]):

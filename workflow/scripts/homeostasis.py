@@ -5,8 +5,10 @@ import time
 import numba
 import pandas as pd
 
-from sphgag import artery, measure, protocols, provenance, runlog, state
-from sphgag.loading import MMHG_TO_KPA
+from sphgag.engine import measure
+from sphgag.engine.loading import MMHG_TO_KPA
+from sphgag.records import provenance, runlog, state
+from sphgag.studies import artery, protocols
 
 sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)

@@ -2,7 +2,7 @@
 
 import pandas as pd
 
-from sphgag import runlog
+from sphgag.records import runlog
 
 sm = snakemake  # noqa: F821
 with runlog.run("homeostasis_target", sm.log[0]) as log:

@@ -1,12 +1,14 @@
 """Rule sensitivity_batch: one batch of samples of a sensitivity design, each a rerun of figure 5's pool at its inputs
-(sphgag.pool_response); a sample whose run fails is a row with its inputs and its error."""
+(sphgag.studies.pool_response); a sample whose run fails is a row with its inputs and its error."""
 
 import time
 
 import numba
 import pandas as pd
 
-from sphgag import pool_response, provenance, runlog, solver
+from sphgag.engine import solver
+from sphgag.records import provenance, runlog
+from sphgag.studies import pool_response
 
 sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)

@@ -2,7 +2,8 @@
 
 import pandas as pd
 
-from sphgag import runlog, sensitivity
+from sphgag.records import runlog
+from sphgag.studies import sensitivity
 
 sm = snakemake  # noqa: F821
 method = getattr(sm.wildcards, "method", "sobol")

@@ -4,7 +4,8 @@ its design; every sample with its outputs."""
 import numpy as np
 import pandas as pd
 
-from sphgag import pool_response, runlog, sensitivity
+from sphgag.records import runlog
+from sphgag.studies import pool_response, sensitivity
 
 sm = snakemake  # noqa: F821
 method = sm.wildcards.method

@@ -3,7 +3,8 @@ the samples without an output, by their inputs."""
 
 import pandas as pd
 
-from sphgag import pool_response, runlog
+from sphgag.records import runlog
+from sphgag.studies import pool_response
 
 sm = snakemake  # noqa: F821
 with runlog.run("sensitivity", sm.log[0]) as log:

@@ -4,7 +4,8 @@ import time
 
 import numba
 
-from sphgag import convergence, provenance, runlog, state
+from sphgag.records import provenance, runlog, state
+from sphgag.studies import convergence
 
 sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)

@@ -5,7 +5,8 @@ import time
 
 import numba
 
-from sphgag import convergence, protocols, provenance, runlog, state
+from sphgag.records import provenance, runlog, state
+from sphgag.studies import convergence, protocols
 
 sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)

@@ -4,7 +4,8 @@ import time
 
 import numba
 
-from sphgag import crack, inclusion, provenance, runlog
+from sphgag.records import provenance, runlog
+from sphgag.studies import crack, inclusion
 
 sm = snakemake  # noqa: F821
 numba.set_num_threads(sm.threads)

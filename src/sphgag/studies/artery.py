@@ -9,9 +9,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import analytic, geometry, history, kernel, materials
-from .loading import Load
-from .model import Model
+from ..engine import geometry, history, kernel
+from ..engine.loading import Load
+from ..engine.model import Model
+from ..physics import analytic, materials
 
 
 def mean_fibre_families(p: dict):
@@ -136,7 +137,7 @@ class BilayerMaterial:
     ``prestretch`` in [0, 1] scales every deposition stretch from 1 to its Table 2 value
     (figure 2b); ``activation`` in [0, 1] scales the active tone T_max of the media (eq. 2.24).
     GAG pools and damage are the particles' history, layered on top by
-    :class:`sphgag.history.HistoryMaterial`.
+    :class:`sphgag.engine.history.HistoryMaterial`.
     """
 
     def __init__(self, p: dict, layout: geometry.Layout):

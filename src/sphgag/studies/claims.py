@@ -28,7 +28,7 @@ class Claim:
     our_value: str
     holds: str  # yes | no | n/a
     criterion: str
-    charge_law: str = "-"  # the Donnan law of a pool claim (sphgag.materials.CHARGE_LAWS); "-": no pool involved
+    charge_law: str = "-"  # a pool claim's Donnan law (sphgag.physics.materials.CHARGE_LAWS); "-": no pool
 
 
 def _yes(flag) -> str:

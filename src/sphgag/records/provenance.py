@@ -9,7 +9,7 @@ import subprocess
 import time
 from pathlib import Path
 
-from . import CODE_HASH, __version__
+from .. import CODE_HASH, __version__
 
 
 @functools.lru_cache

@@ -2,8 +2,8 @@
 
 The study (issue 17) is model-agnostic here: a *problem* is a list of inputs with uniform ranges; a *design* is a
 table of input values, one row per sample (:func:`morris_design`, :func:`sobol_design`); a model evaluated on every
-row gives a table of outputs (:func:`sphgag.pool_response.sample_rows`, which records a sample whose run fails by its
-inputs and its error instead of dropping it); the indices come back as one tidy table (:func:`morris_indices`,
+row gives a table of outputs (:func:`sphgag.studies.pool_response.sample_rows`, which records a sample whose run fails
+by its inputs and its error instead of dropping it); the indices come back as one tidy table (:func:`morris_indices`,
 :func:`sobol_indices`). This module computes no sample: editing it redoes the designs and the indices, not the runs.
 
 * **Morris** (Morris 1991; Campolongo et al. 2007): ``r`` one-at-a-time trajectories of ``k + 1`` samples on a grid

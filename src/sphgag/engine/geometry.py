@@ -12,7 +12,7 @@ triangle mesh. We generate the layout instead, from one resolution parameter
 * **Equal arc spacing.** Each ring carries ``n = round(arc / dx)`` particles at
   equal angular spacing, offset by half a spacing from the symmetry edges
   ``theta = 0`` and ``theta = pi/2``. The edges are mirror planes (see
-  :mod:`sphgag.kernel`), so no particle sits on them.
+  :mod:`sphgag.engine.kernel`), so no particle sits on them.
 * **Volumes.** A particle's volume is the exact area of its annular cell,
   ``(r_hi^2 - r_lo^2) / 2 * dtheta`` (reference area per unit reference axial
   length; the axial stretch enters through the constitutive law). The volumes

@@ -1,6 +1,6 @@
 """Pseudo-dynamic relaxation as in the paper: leapfrog steps with artificial viscosity (eqs. 2.12-2.13).
 
-The production solver is Newton's method (:mod:`sphgag.solver`); this module
+The production solver is Newton's method (:mod:`sphgag.engine.solver`); this module
 keeps the paper's explicit scheme as an independent route to the same
 equilibrium (the tests check that both agree) and as a reference for the
 benchmark. Masses are scaled (``m_i = density * V_i``); the viscous first

@@ -1,7 +1,7 @@
 """Loads and boundary conditions: axial stretch, lumen pressure, prescribed inner radius.
 
 A :class:`Load` is one point on a loading path; the quasi-static driver
-(:mod:`sphgag.solver`) moves between loads by linear interpolation, so every
+(:mod:`sphgag.engine.solver`) moves between loads by linear interpolation, so every
 ramp in the paper (axial stretch, pressure, deposition pre-stretch, swelling)
 is a path of loads.
 

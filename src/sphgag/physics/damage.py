@@ -18,7 +18,7 @@ mixture of eq. (2.23) (:func:`weaken`): every constituent's energy, and the acti
 tone, is scaled by ``1 - D``, so stress and tangent are exactly ``(1 - D)`` times
 the intact ones. The hourglass stiffness (eq. 2.14) is a property of the
 discretisation and is left alone. A particle with ``D = 1`` becomes a GAG particle
-(:func:`sphgag.materials.convert_to_gag`).
+(:func:`sphgag.physics.materials.convert_to_gag`).
 
 **A law with a fracture energy** (:class:`FractureEnergyLaw`, ``damage_law: fracture_energy``).
 Eq. (2.28) ruptures a particle after a fixed extra stretch, so the energy a particle

@@ -5,7 +5,7 @@ A :class:`ParticleHistory` is immutable (its arrays are read-only): every change
 material of a wall is then a pure function of ``(load, history)``
 (:class:`HistoryMaterial`), so a model's cached property table can never be
 stale: a new history means a new material object, installed with
-:meth:`sphgag.model.Model.set_props`, which clears the cache.
+:meth:`sphgag.engine.model.Model.set_props`, which clears the cache.
 
 Per particle:
 
@@ -14,7 +14,7 @@ Per particle:
   became GAG, section 2.7);
 * ``pool``: the index of the pool a GAG particle belongs to (-1 for tissue);
 * ``D``, ``onset_stretch`` and ``onset_energy``: the damage of eq. (2.28), and the radial
-  stretch and intact energy density at its onset (NaN before onset; :mod:`sphgag.damage`);
+  stretch and intact energy density at its onset (NaN before onset; :mod:`sphgag.physics.damage`);
 * ``converted_step``: the damage pass at which the particle became GAG (0 for
   seeded pools, -1 for tissue).
 
@@ -29,7 +29,7 @@ from dataclasses import dataclass, fields, replace
 
 import numpy as np
 
-from . import damage, materials
+from ..physics import damage, materials
 from .loading import Load
 
 TISSUE, SEEDED, DAMAGED = 0, 1, 2
@@ -111,7 +111,7 @@ class ParticleHistory:
 
     # -- files ----------------------------------------------------------------
     def arrays(self) -> dict:
-        """The arrays, keyed ``history_<name>`` (what :func:`sphgag.state.save` writes)."""
+        """The arrays, keyed ``history_<name>`` (what :func:`sphgag.records.state.save` writes)."""
         return {f"history_{f.name}": getattr(self, f.name) for f in fields(self)}
 
     @classmethod
@@ -129,18 +129,18 @@ class ParticleHistory:
 class HistoryMaterial:
     """Property table of a wall as a pure function of ``(load, history)``, on a path from ``before`` to ``after``.
 
-    ``base(load)``: the intact wall's table (e.g. :class:`sphgag.artery.BilayerMaterial`);
+    ``base(load)``: the intact wall's table (e.g. :class:`sphgag.studies.artery.BilayerMaterial`);
     ``gag``: the ``gag`` parameters of one run (eq. 2.27), with its Donnan law ``charge_law``
-    (:data:`sphgag.materials.CHARGE_LAWS`, :func:`sphgag.materials.law_gag`): ``prescribed`` gives GAG particles
-    the swelling pressure Pi(c) of the load's concentration (eqs. 2.25-2.27 as printed), ``conserved`` the Donnan
-    pressure of the conserved fixed charge at the current concentration c/J (:func:`sphgag.materials.donnan`).
-
+    (:data:`sphgag.physics.materials.CHARGE_LAWS`, :func:`sphgag.physics.materials.law_gag`):
+    ``prescribed`` gives GAG particles the swelling pressure Pi(c) of the load's concentration (eqs. 2.25-2.27 as
+    printed), ``conserved`` the Donnan pressure of the conserved fixed charge at the current concentration c/J
+    (:func:`sphgag.physics.materials.donnan`).
     The load's ``transition`` t in [0, 1] moves between the two histories (a load without one is at
     ``before``), so that the quasi-static solver can follow (and bisect) any change of history:
 
-    * damage ``D = D_before + t (D_after - D_before)``, as ``(1 - D) W`` (:func:`sphgag.damage.weaken`);
+    * damage ``D = D_before + t (D_after - D_before)``, as ``(1 - D) W`` (:func:`sphgag.physics.damage.weaken`);
     * particles that are GAG in ``after`` but not in ``before`` follow the conversion
-      homotopy of :func:`sphgag.materials.convert_to_gag` with fraction ``t``, and their
+      homotopy of :func:`sphgag.physics.materials.convert_to_gag` with fraction ``t``, and their
       fixed charge rises with it, ``t c``;
     * GAG particles of ``before`` are GAG at the load's ``concentration`` c.
 

@@ -17,9 +17,9 @@ from pathlib import Path
 
 import numpy as np
 
+from ..engine.history import ParticleHistory
+from ..engine.loading import Load
 from . import provenance
-from .history import ParticleHistory
-from .loading import Load
 
 
 class StateMismatch(ValueError):

@@ -25,7 +25,7 @@ particle type. A row describes a constrained mixture:
   (eq. 2.26 at the current concentration; :func:`donnan`);
 * ``TISSUE``: how much of the particle is tissue (1) rather than GAG (0). It
   does not enter the stress; it decides which neighbours a particle's
-  hourglass penalty measures against (:func:`sphgag.kernel.hourglass_gradients`).
+  hourglass penalty measures against (:func:`sphgag.engine.kernel.hourglass_gradients`).
 
 Plane strain at a prescribed axial stretch ``lz``: ``C = diag(C_2D, lz^2)``
 and ``J = det(F_2D) lz`` (section 2.4.1).
@@ -64,7 +64,7 @@ CHARGE_LAWS = ("prescribed", "conserved")
 
 def law_gag(gag: dict, law: str) -> dict:
     """The ``gag`` parameters of one run under the charge law ``law``: the configuration's ``gag`` section without its
-    list ``charge_laws``, with ``charge_law = law`` (what :class:`sphgag.history.HistoryMaterial` reads)."""
+    list ``charge_laws``, with ``charge_law = law`` (what :class:`sphgag.engine.history.HistoryMaterial` reads)."""
     if law not in CHARGE_LAWS:
         raise ValueError(f"unknown charge law {law!r}: one of {', '.join(CHARGE_LAWS)}")
     return dict({k: v for k, v in gag.items() if k not in ("charge_laws", "charge_law")}, charge_law=law)

@@ -2,13 +2,13 @@
 
 The answer is a sequence of converged equilibria, not a trajectory. From a
 pressurised passive wall (lumen pressure held), the pools of a *pool set* are
-seeded (converted to GAG at c = 0, :class:`sphgag.history.HistoryMaterial`); then
+seeded (converted to GAG at c = 0, :class:`sphgag.engine.history.HistoryMaterial`); then
 the fixed-charge concentration ``c`` is raised level by level to
 ``max_concentration_mEq_l`` and held there. At every level a staggered scheme runs:
 
 1. solve the equilibrium with the particles' history (damage ``D``, GAG pools) fixed;
 2. **damage pass**: update ``D`` of the candidate particles from that state
-   (eq. 2.28, :meth:`sphgag.damage.DamageState.update`); particles with ``D = 1``
+   (eq. 2.28, :meth:`sphgag.physics.damage.DamageState.update`); particles with ``D = 1``
    rupture and become GAG particles of the nearest pool (their fixed charge rises to
    the pool's along the same path); solve the transition from the old history to
    the new one (a material path the solver can bisect), and repeat;
@@ -18,7 +18,7 @@ the fixed-charge concentration ``c`` is raised level by level to
 **Snaps.** A damage pass whose new history cannot be reached along its transition, or a
 concentration step with no equilibrium on its path (after bisection), has lost
 equilibrium: the wall snaps. The run follows the snap to where the overdamped
-pseudo-dynamics come to rest (:mod:`sphgag.snap`), records that state (converged below
+pseudo-dynamics come to rest (:mod:`sphgag.engine.snap`), records that state (converged below
 the tolerance, ``snap`` in growth.csv) and keeps growing from it at the same
 concentration. A run ends where a level arrests at the highest concentration
 (``arrested``), where the pools merge (``merged``), where a pool spans ``max_extent_deg``
@@ -39,7 +39,7 @@ radial band (the reference radii of its seeded sector), not on a wall surface, w
 **Onset measure** (``criterion``): ``particle``, the particle's own radial Cauchy stress
 (current polar frame), as in the paper; or ``averaged``, the volume-weighted mean of the
 radial stress of the intact medial particles within a disc of diameter
-``averaging_length_um`` (:func:`sphgag.measure.averaging_matrix`), which has a fixed
+``averaging_length_um`` (:func:`sphgag.engine.measure.averaging_matrix`), which has a fixed
 physical size. Damage, once started, grows with the radial stretch beyond its onset
 value whatever the stress.
 
@@ -58,12 +58,14 @@ import numpy as np
 import pandas as pd
 from scipy.spatial import cKDTree
 
-from . import artery, damage, forces, fracture, materials, measure, protocols, snap, solver
-from . import state as state_io
-from .geometry import Sector
-from .history import DAMAGED, HistoryMaterial, ParticleHistory
-from .loading import MMHG_TO_KPA, Load
-from .model import Model
+from ..engine import forces, measure, snap, solver
+from ..engine.geometry import Sector
+from ..engine.history import DAMAGED, HistoryMaterial, ParticleHistory
+from ..engine.loading import MMHG_TO_KPA, Load
+from ..engine.model import Model
+from ..physics import damage, fracture, materials
+from ..records import state as state_io
+from . import artery, protocols
 
 log = logging.getLogger("sphgag")
 
@@ -249,7 +251,7 @@ class Pass:
     length: float
     tip_stress: float
     residual: float
-    snap: bool = False  # reached through a snap (sphgag.snap)
+    snap: bool = False  # reached through a snap (sphgag.engine.snap)
 
 
 @dataclass
@@ -534,9 +536,9 @@ class GrowthRun:
         return True
 
     def follow_snap(self, load: Load, what: str, exc: solver.SimulationError) -> solver.State:
-        """Follow a step with no equilibrium on its path (:mod:`sphgag.snap`) from the current state to the
+        """Follow a step with no equilibrium on its path (:mod:`sphgag.engine.snap`) from the current state to the
         equilibrium the overdamped pseudo-dynamics come to rest at, under the model's current material and ``load``;
-        raises :class:`sphgag.snap.NoStableState` if there is none."""
+        raises :class:`sphgag.engine.snap.NoStableState` if there is none."""
         log.info(
             "[%s] %s at c = %g mEq/l has no equilibrium on its path (%s): following the snap",
             self.run_name,
@@ -702,7 +704,7 @@ def grow(
     """Seed the pools of ``sectors`` in the wall at the converged pressurised state ``start`` and grow them
     (:class:`GrowthRun`).
 
-    ``base``: the intact wall's material (``load -> props``, e.g. :class:`sphgag.artery.BilayerMaterial`).
+    ``base``: the intact wall's material (``load -> props``, e.g. :class:`sphgag.studies.artery.BilayerMaterial`).
     ``snapshot_steps``: pseudo-times at which to keep the state (the first state of every concentration level and
     the last state are always kept). ``resume``: ``(state, history, pseudo_time)`` of a snapshot of this run
     (:func:`load_snapshot`) to continue from instead of seeding; the rows then start there.
@@ -712,9 +714,9 @@ def grow(
 
 
 def save_snapshots(path, model: Model, snapshots, params: dict) -> None:
-    """All snapshots of a run in one ``.npz`` (:func:`sphgag.state.save_series`: positions, load, particle history),
-    each with its radial Cauchy stress (eq. 2.10, current polar frame) as ``s{k}_radial_stress_kPa``; ``steps`` and
-    ``concentrations`` index them. Each snapshot can restart the run (:func:`load_snapshot`)."""
+    """All snapshots of a run in one ``.npz`` (:func:`sphgag.records.state.save_series`: positions, load, particle
+    history), each with its radial Cauchy stress (eq. 2.10, current polar frame) as ``s{k}_radial_stress_kPa``;
+    ``steps`` and ``concentrations`` index them. Each snapshot can restart the run (:func:`load_snapshot`)."""
     arrays = dict(
         steps=np.array([s[0] for s in snapshots]),
         concentrations=np.array([s[1].load.material_value("concentration") for s in snapshots]),
@@ -757,10 +759,10 @@ def paper_law(table: pd.DataFrame) -> pd.DataFrame:
 
 
 def griffith(sectors: list[Sector], fracture_energy_J_m2: float, modulus: float, gag: dict, concentration: float):
-    """The closed form of a pool as a pressurised straight crack (:mod:`sphgag.fracture`), in the media's plane-strain
-    modulus ``E'`` [kPa]: the concentration at which Griffith's criterion makes the longest seeded pool (half-length
-    half its arc) propagate, and the half-length it needs at ``concentration``, both under Pi(c) of eqs. (2.25-2.26)
-    (the prescribed law; the conserved law's Pi is lower where the pool has swollen)."""
+    """The closed form of a pool as a pressurised straight crack (:mod:`sphgag.physics.fracture`), in the media's
+    plane-strain modulus ``E'`` [kPa]: the concentration at which Griffith's criterion makes the longest seeded pool
+    (half-length half its arc) propagate, and the half-length it needs at ``concentration``, both under Pi(c) of
+    eqs. (2.25-2.26) (the prescribed law; the conserved law's Pi is lower where the pool has swollen)."""
     gc = fracture_energy_J_m2 * fracture.J_M2
     a = max(0.5 * np.deg2rad(s.angular_extent_deg) * s.centre_radius for s in sectors)
     p_c = fracture.griffith_pressure(a, gc, modulus)

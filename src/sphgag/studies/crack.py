@@ -1,10 +1,10 @@
 """A pressurised straight crack in a plane-strain block: the verification of the damage law with a fracture energy.
 
 A pool that splits the media is a crack whose faces carry the swelling pressure, so the
-fracture-energy law (:class:`sphgag.damage.FractureEnergyLaw`) is verified on the
-closed-form problem closest to it (:mod:`sphgag.fracture`): a straight crack of
+fracture-energy law (:class:`sphgag.physics.damage.FractureEnergyLaw`) is verified on the
+closed-form problem closest to it (:mod:`sphgag.physics.fracture`): a straight crack of
 half-length ``a`` in an infinite plane-strain block of the elastin matrix (the
-neo-Hookean law of eq. 2.21 without pre-stretch or fibres, as :mod:`sphgag.inclusion`),
+neo-Hookean law of eq. 2.21 without pre-stretch or fibres, as :mod:`sphgag.studies.inclusion`),
 its faces loaded by a pressure ``p``, in the linear regime:
 
 * **before growth**, the opening area ``V = 2 pi a^2 p / E'`` (Sneddon);
@@ -12,7 +12,7 @@ its faces loaded by a pressure ``p``, in the linear regime:
 * the **energy dissipated** per unit new crack area, ``G_c``.
 
 **Layout.** A quarter block ``[0, L]^2`` of square cells of side ``dx`` (mirror planes on
-both axes, :mod:`sphgag.kernel`). The crack is a slit of GAG particles (eq. 2.27, the
+both axes, :mod:`sphgag.engine.kernel`). The crack is a slit of GAG particles (eq. 2.27, the
 prescribed Donnan law at the concentration whose Pi is ``p``): the first ``slit_rows`` rows
 (half-thickness ``b = slit_rows dx``; one row, a sharp crack) for ``x < a`` (``a`` on a cell
 edge). Ahead of it the first ``band_rows`` rows are the damage band, of width
@@ -22,10 +22,10 @@ damages and ruptures as one (:meth:`SlitLayout.column_mean`). A band of one row 
 than the stencil a particle's deformation gradient is averaged over (2.5 dx): it ruptures
 alone while the rows beside it unload, and the crack needs far more than Griffith's
 pressure. The outer layer of cells is held on the exact displacement of the pressurised
-elliptical hole with the slit's half-axes (:class:`sphgag.inclusion.ExactBoundary`;
+elliptical hole with the slit's half-axes (:class:`sphgag.studies.inclusion.ExactBoundary`;
 Sneddon's crack as ``b/a -> 0``).
 
-**Growth** (as :mod:`sphgag.delamination`): the pressure is raised level by level; at each,
+**Growth** (as :mod:`sphgag.studies.delamination`): the pressure is raised level by level; at each,
 damage passes run until the band arrests: the onset measure is the opening stress ``sigma_yy``
 (eq. 2.10) of the candidate's column, a ruptured particle (D = 1) becomes a GAG particle of the
 slit along the conversion path, and every state is converged. Under pressure control
@@ -43,12 +43,14 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from . import damage, fracture, kernel, materials, measure, protocols, snap, solver
+from ..engine import kernel, measure, snap, solver
+from ..engine.history import HistoryMaterial, ParticleHistory
+from ..engine.loading import Load
+from ..engine.model import Model
+from ..physics import damage, fracture, materials
+from . import protocols
 from .delamination import intact_energy
-from .history import HistoryMaterial, ParticleHistory
 from .inclusion import ExactBoundary, Materials
-from .loading import Load
-from .model import Model
 
 MAX_PASSES_PER_LEVEL = 400  # damage passes at one pressure level at most (growth under pressure control runs away)
 
@@ -141,7 +143,7 @@ class Problem:
 
     @property
     def modulus(self) -> float:
-        """``E' = 2 mu / (1 - nu)`` of the linearised matrix (:func:`sphgag.fracture.plane_strain_modulus`)."""
+        """``E' = 2 mu / (1 - nu)`` of the linearised matrix (:func:`sphgag.physics.fracture.plane_strain_modulus`)."""
         return float(fracture.plane_strain_modulus(self.mat.mu, self.mat.poisson_ratio))
 
     @property
@@ -291,7 +293,7 @@ def energy_per_area(growth: Growth) -> float:
 def study(half_length: float, vc: dict, matrix: dict, gag: dict, numerics: dict, log=None) -> pd.DataFrame:
     """Rows of ``pressurised_crack.csv`` for one crack half-length at every spacing of ``vc['dx_um']``.
 
-    ``vc``: the ``verification.crack`` configuration; ``matrix`` and ``gag`` as :func:`sphgag.inclusion.study`.
+    ``vc``: the ``verification.crack`` configuration; ``matrix`` and ``gag`` as :func:`sphgag.studies.inclusion.study`.
     """
     mat = Materials.of(matrix, gag)
     gag_law = dict(

@@ -26,7 +26,8 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from . import artery, delamination, protocols, solver
+from ..engine import solver
+from . import artery, delamination, protocols
 
 log = logging.getLogger("sphgag")
 
@@ -86,7 +87,7 @@ def perturbed(scenario: dict, inputs: dict) -> dict:
 
 def swelling_settings(scenario: dict) -> dict:
     """The figure 4 settings cut at the stated concentration, on the same concentration steps
-    (:func:`sphgag.protocols.concentration_steps`, which it must be one of), so that the path up to it is the
+    (:func:`sphgag.studies.protocols.concentration_steps`, which it must be one of), so that the path up to it is the
     pipeline's."""
     sw, c = scenario["swelling"], scenario["concentration_mEq_l"]
     steps = protocols.concentration_steps(sw)
@@ -101,8 +102,8 @@ def swelling_settings(scenario: dict) -> dict:
 
 @dataclass
 class Response:
-    """The pool's swelling table (:func:`sphgag.protocols.pool_table`) and its delamination run's
-    ``(growth, summary)`` (:func:`sphgag.delamination.labelled`), with its scenario."""
+    """The pool's swelling table (:func:`sphgag.studies.protocols.pool_table`) and its delamination run's
+    ``(growth, summary)`` (:func:`sphgag.studies.delamination.labelled`), with its scenario."""
 
     scenario: dict
     swelling: pd.DataFrame

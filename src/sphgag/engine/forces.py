@@ -1,6 +1,6 @@
 """TLSPH deformation gradient, internal and hourglass forces, and their exact Jacobian.
 
-Kernels over the flat neighbour arrays of :mod:`sphgag.kernel`:
+Kernels over the flat neighbour arrays of :mod:`sphgag.engine.kernel`:
 
 * deformation gradient ``F_i = sum_j (x_j - x_i) (x) V_j A_i^-1 grad xi_ij`` (eq. 2.9);
 * internal force ``f_i = sum_j V_i V_j (P_i grad~xi_ij - P_j grad~xi_ji)`` (eq. 2.11),
@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit, prange
 
-from .materials import HG_E, first_piola, local_deformation, strain_energy, tangent_modulus
+from ..physics.materials import HG_E, first_piola, local_deformation, strain_energy, tangent_modulus
 
 
 @njit(cache=True, error_model="numpy")
@@ -67,7 +67,7 @@ class PairData:
 
     @classmethod
     def pack(cls, nb, V, hgc, ah=None):
-        """``ah``: the hourglass stencil's gradients (:func:`sphgag.kernel.hourglass_gradients`; default the full
+        """``ah``: the hourglass stencil's gradients (:func:`sphgag.engine.kernel.hourglass_gradients`; default the full
         stencil ``nb.a``)."""
         ah = nb.a if ah is None else ah
         pe, pr, se = nb.pair_entry, nb.pair_reverse, nb.solo_entry
@@ -100,7 +100,7 @@ def evaluate_forces(x, pd: PairData, lz, cth, sth, props, xe, fe, FP, f, extra=N
     """One force evaluation (see :func:`forces_and_stresses`); fills FP = (F, P, F~) and f.
 
     ``extra`` (N, 4), if given, is added to every particle's P before the forces
-    are formed (the viscous stress of section 2.3 in :mod:`sphgag.dynamics`).
+    are formed (the viscous stress of section 2.3 in :mod:`sphgag.engine.dynamics`).
     """
     return forces_and_stresses(
         x,
@@ -241,7 +241,7 @@ def forces_and_stresses(
     """One force evaluation: F (eq. 2.9), P (eq. 2.10) and the forces of eqs. (2.11), (2.14).
 
     Pass 1: ``F_i = sum_j (x_j - x_i) (x) a_ij`` and the hourglass deformation gradient
-    ``F~_i`` of the weighted stencil ``ah`` (:func:`sphgag.kernel.hourglass_gradients`;
+    ``F~_i`` of the weighted stencil ``ah`` (:func:`sphgag.engine.kernel.hourglass_gradients`;
     ``F~ = F`` without a GAG/tissue interface), accumulated over the half list of pairs
     (:func:`_deformation_gradients`), then ``P_i`` from each particle's material row
     (:func:`_stresses`, parallel); ``FP[i] = (F_i, P_i, F~_i)`` (row-major).

@@ -4,7 +4,7 @@ The paper integrates the particles' motion with leapfrog steps (eq. 2.13),
 mass scaling and artificial viscosity for a fixed number of steps, and takes
 the last state as quasi-static. We solve for the equilibrium itself: at every
 load we find ``x`` with ``f_int(x) + f_ext(x) = 0`` by Newton's method with the
-exact Jacobian of the same discrete forces (:func:`sphgag.forces.jacobian_blocks`),
+exact Jacobian of the same discrete forces (:func:`sphgag.engine.forces.jacobian_blocks`),
 a sparse direct solve and a backtracking line search, and accept the state
 only when the relative residual is below a tolerance.
 
@@ -154,8 +154,8 @@ def _lu(model: Model, data: np.ndarray):
 # (a chord step costs one force evaluation and one LU solve, a fresh Newton step 20-30 times more).
 CHORD_CONTRACTION = 0.5
 CHORD_STEPS = 12
-# The transition of a damage pass, whose fallback where it finds no equilibrium is a snap (sphgag.snap), is bisected
-# at most FALLBACK_BISECTIONS times (increments down to 1/16 of it), and Newton's method there gives up after
+# The transition of a damage pass, whose fallback where it finds no equilibrium is a snap (sphgag.engine.snap), is
+# bisected at most FALLBACK_BISECTIONS times (increments down to 1/16 of it), and Newton's method there gives up after
 # STALL_ITERATIONS fresh iterations that do not halve the relative residual: near a state with no equilibrium the
 # residual has a positive local minimum, where deeper bisection and more iterations only delay the snap
 # (:func:`transition_options`; a snap's own Newton handoffs stop the same way). Load steps (concentration, pressure)

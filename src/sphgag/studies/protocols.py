@@ -19,10 +19,11 @@ from dataclasses import dataclass, replace
 import numpy as np
 import pandas as pd
 
-from . import analytic, measure, pool_volume, solver
-from .loading import MMHG_TO_KPA, Load
-from .materials import swelling_pressure
-from .model import Model
+from ..engine import measure, pool_volume, solver
+from ..engine.loading import MMHG_TO_KPA, Load
+from ..engine.model import Model
+from ..physics import analytic
+from ..physics.materials import swelling_pressure
 
 log = logging.getLogger("sphgag")
 
@@ -341,7 +342,7 @@ def bilayer_pressure_diameter(
 
 def swelling_load(base: Load, conversion: float, concentration: float) -> Load:
     """``base`` (a pressure-controlled state) with the pool's conversion fraction (the ``transition`` of
-    :class:`sphgag.history.HistoryMaterial`) and GAG concentration."""
+    :class:`sphgag.engine.history.HistoryMaterial`) and GAG concentration."""
     return base.with_material(transition=float(conversion), concentration=float(concentration))
 
 
@@ -382,7 +383,7 @@ def pool_measurements(model: Model, ev, pool, members: np.ndarray, probe_length:
 class PoolState:
     """One converged state of the figure 4 protocol: its stage (``intact`` or ``converted``), the GAG
     concentration [mEq/l], the positions and load, how the solver reached it (``control``: ``concentration``, or
-    ``volume`` where the concentration-controlled path had lost equilibrium, :mod:`sphgag.pool_volume`), and how
+    ``volume`` where the concentration-controlled path had lost equilibrium, :mod:`sphgag.engine.pool_volume`), and how
     the run's path ended (the same for every state of a run: ``path_end`` ``complete``, ``limit point`` at
     ``limit_concentration``, or ``no equilibrium``, with ``end_reason``)."""
 
@@ -406,7 +407,7 @@ class PoolState:
         )
 
     def info(self) -> dict:
-        """What a state file keeps beside positions and load (:func:`sphgag.state.save_series`)."""
+        """What a state file keeps beside positions and load (:func:`sphgag.records.state.save_series`)."""
         return dict(
             stage=self.stage,
             concentration_mEq_l=self.concentration,
@@ -421,7 +422,7 @@ class PoolState:
 
     @classmethod
     def from_saved(cls, saved) -> PoolState:
-        """The state of a :class:`sphgag.state.SavedState` written with :meth:`info`."""
+        """The state of a :class:`sphgag.records.state.SavedState` written with :meth:`info`."""
         i = saved.info
         limit = i.get("limit_concentration_mEq_l")
         return cls(
@@ -459,7 +460,7 @@ def swell_pool(model: Model, start: solver.State, numerics: dict, sw: dict) -> l
     are measured by :func:`pool_table`.
 
     Where a concentration step finds no equilibrium on its path, the pool's own volume becomes the control
-    (:func:`sphgag.pool_volume.continue_path`): the path either passes a limit point (the states end at the last
+    (:func:`sphgag.engine.pool_volume.continue_path`): the path either passes a limit point (the states end at the last
     equilibrium before it, and every state records the limit concentration), or reaches the remaining
     concentrations (``control = volume``), or stops with the concentration still rising (``no equilibrium``: no
     limit point there, the discretisation fails; the reason is recorded). No state beyond the last equilibrium is

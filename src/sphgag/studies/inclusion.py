@@ -8,7 +8,7 @@ Gibbs-Donnan pressure ``Pi``. In the linear regime (``Pi`` << ``mu``) with a
 negligible GAG stiffness, this is Inglis' pressurised elliptical hole: hoop
 stress ``Pi (2a/b - 1)`` at the end of the major axis, and for a circle the
 Lamé field ``sigma_rr = -Pi (R/r)^2``, ``sigma_tt = +Pi (R/r)^2``
-(:mod:`sphgag.inglis`).
+(:mod:`sphgag.physics.inglis`).
 
 **Layout.** Particles sit on rings that are offset ellipses
 ``P(s, t) = ((a + s) cos t, (b + s) sin t)``: ``s in (-b, 0)`` inside the
@@ -16,10 +16,10 @@ inclusion, ``s in (0, L)`` in the matrix. The inclusion boundary ``s = 0`` is a
 cell boundary (as the pools' radial edges in the artery), every ring carries
 particles at equal arc length about ``dx`` apart, and a particle's volume is the
 exact area of its cell ``[s0, s1] x [t0, t1]``. Only the quarter ``x, y > 0`` is
-discretised: the axes are mirror planes (:mod:`sphgag.kernel`).
+discretised: the axes are mirror planes (:mod:`sphgag.engine.kernel`).
 
 **Boundary.** The outermost ring is placed on the exact infinite-plate
-displacement (:func:`sphgag.inglis.field`), so the block's finite size does
+displacement (:func:`sphgag.physics.inglis.field`), so the block's finite size does
 not enter the reference at all.
 
 **Tip value.** A particle's stress is a kernel average whose stencil straddles
@@ -42,16 +42,18 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from . import inglis, kernel, materials, measure, protocols, solver
-from .loading import Load
-from .model import Model
+from ..engine import kernel, measure, solver
+from ..engine.loading import Load
+from ..engine.model import Model
+from ..physics import inglis, materials
+from . import protocols
 
 
 @dataclass(frozen=True)
 class EllipseLayout:
     """Particles on offset-ellipse rings around an elliptical inclusion (quarter, mirror-symmetric).
 
-    X, volume, theta : as :class:`sphgag.geometry.Layout` (theta = 0: the local frame is global).
+    X, volume, theta : as :class:`sphgag.engine.geometry.Layout` (theta = 0: the local frame is global).
     s, t : ring offset and ellipse parameter of each particle.
     ring : ring index (0 = innermost); ``ring_offset[k]`` its ``s``.
     inclusion : True for particles inside the ellipse (``s < 0``).

@@ -12,7 +12,7 @@ import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 import seaborn as sns  # noqa: E402
 
-from .provenance import figure_metadata  # noqa: E402
+from ..records.provenance import figure_metadata  # noqa: E402
 
 HOMEOSTATIC_MMHG = 103.0
 PRESSURE_COLOURS = {103.0: "#1b9e77", 145.0: "#d95f02", 200.0: "#7570b3"}
@@ -57,8 +57,8 @@ def style_legend(ax, loc="best", fontsize=7, **kws):
     sns.move_legend(ax, loc, frameon=False, fontsize=fontsize, **kws)
 
 
-# the Donnan laws of the pools (sphgag.materials.CHARGE_LAWS, column charge_law of every pool table), as the figures
-# name them: the prescribed law is the paper's model, the one to compare with the paper's panels
+# the Donnan laws of the pools (sphgag.physics.materials.CHARGE_LAWS, column charge_law of every pool table), as the
+# figures name them: the prescribed law is the paper's model, the one to compare with the paper's panels
 LAW_TITLES = {
     "prescribed": "prescribed charge law: Pi(c), eqs. 2.25-2.27 as printed (the paper's model: compare with the paper)",
     "conserved": "conserved charge law: Pi at the current concentration c/J (mixture theory; a deviation)",
@@ -270,7 +270,7 @@ def fig3(mean_states, mean_exact, bilayer, bilayer_exact: dict, profiles: pd.Dat
 def fig1(particles: pd.DataFrame, mass_fractions: dict, support_factor: float, dx: float):
     """Figure 1: (a) the particles of the bi-layered quarter annulus by layer, (b) the spiky kernel and its
     derivative over the support, (c) the constituent mass fractions of each layer."""
-    from .kernel import spiky, spiky_derivative
+    from ..engine.kernel import spiky, spiky_derivative
 
     _style()
     fig = plt.figure(figsize=(11, 3.8))
@@ -312,8 +312,8 @@ def fig1(particles: pd.DataFrame, mass_fractions: dict, support_factor: float, d
 
 def pool_geometry_panel(ax, particles: pd.DataFrame, case: dict, probe_length: float, title: str):
     """Figure 4a: the pool (red), the media and adventitia around it, and the probe regions (outlines)."""
-    from .artery import pool_sector
-    from .measure import pool_probes
+    from ..engine.measure import pool_probes
+    from ..studies.artery import pool_sector
 
     pool = pool_sector(case)
     th0 = np.deg2rad(pool.centre_angle_deg)
@@ -459,7 +459,7 @@ RATIO_COLOURS = {1.0: "#1b9e77", 2.0: "#d95f02", 3.0: "#7570b3"}
 def verification_pool(table: pd.DataFrame, profiles: pd.DataFrame):
     """The pool verification: (a) Lamé field of the circle, (b) hoop stress ahead of the tip against Inglis,
     (c) tip error and (d) traction jump and field error against resolution (log-log, observed order)."""
-    from .inclusion import TIP_PARTICLES, observed_order
+    from ..studies.inclusion import TIP_PARTICLES, observed_order
 
     _style()
     fig, axes = plt.subplots(1, 4, figsize=(16.0, 3.1))
@@ -574,7 +574,7 @@ def verification_crack(table: pd.DataFrame, modulus: float, fracture_energy_J_m2
     """The pressurised crack (pressurised_crack.csv): (a) the pressure at which it grows against Griffith's (and
     Dugdale's, for the cohesive length), a marker per spacing; (b) the opening area before growth against Sneddon's;
     (c) the three relative errors against dx, log-log, a colour per half-length."""
-    from . import fracture
+    from ..physics import fracture
 
     _style()
     fig, axes = plt.subplots(1, 3, figsize=(11.5, 3.5), layout="constrained")
@@ -681,7 +681,7 @@ def swelling_convergence(table: pd.DataFrame, laws=None):
 
 # --- delamination (figures 5-7) ---------------------------------------------------------------------------------------
 
-SEEDED, CONVERTED = 1, 2  # history origin codes (sphgag.history): a seeded GAG pool, tissue converted by damage
+SEEDED, CONVERTED = 1, 2  # history origin codes (sphgag.engine.history): a seeded GAG pool, tissue converted by damage
 MATERIAL_COLOURS = {"media": "0.84", "adventitia": "0.62", SEEDED: LAYER_COLOURS["GAG"], CONVERTED: "#2166ac"}
 DAMAGE_CMAP = matplotlib.colors.LinearSegmentedColormap.from_list("damage", ["#ffd300", "#f47b20", "#7f2704"])
 SIDE_COLOURS = {"interior": "#1b9e77", "exterior": "#7570b3"}
@@ -901,7 +901,7 @@ def tip_stress_panel(
     rings = [
         ax.scatter(run.step, run.tip_radial_stress_kPa, s=42, facecolors="none", edgecolors=colours[key], lw=0.9)
         for key, run in snapped.groupby(by, sort=False)
-    ]  # a state reached through a snap (sphgag.snap): an open ring around its point
+    ]  # a state reached through a snap (sphgag.engine.snap): an open ring around its point
     if rings and ax.get_legend() is not None:
         old = ax.get_legend()
         ax.legend(list(old.legend_handles) + rings[:1], [t.get_text() for t in old.texts] + ["reached through a snap"])

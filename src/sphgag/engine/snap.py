@@ -15,14 +15,14 @@ one linearised step at a time, ``(M / dtau + K) dx = f_int + f_ext``, with no li
 search (the residual may rise while the wall moves: that is the snap). The
 pseudo-time step grows as the residual falls (switched evolution relaxation,
 ``dtau_k+1 = dtau_k |r_k-1| / |r_k|``), so the iteration turns into Newton's method as
-it comes to rest, and the state is then converged by :func:`sphgag.solver.newton`
+it comes to rest, and the state is then converged by :func:`sphgag.engine.solver.newton`
 to the same tolerance as every other state. The overdamped motion descends the
 energy, so where it comes to rest is a stable equilibrium (a saddle is not an
 attractor of it); a state it cannot converge within its budget is no state at all,
 and the caller ends its run there (:class:`NoStableState`).
 
 The damping matrix is that of the solver's Levenberg-Marquardt damping
-(:func:`sphgag.solver._factorise`, ``K + m diag|K|`` with ``m = 1/dtau``), so a snap
+(:func:`sphgag.engine.solver._factorise`, ``K + m diag|K|`` with ``m = 1/dtau``), so a snap
 costs one Jacobian and one LU per pseudo-time step.
 """
 
@@ -67,7 +67,7 @@ def follow(
     """The equilibrium at ``load`` that the overdamped pseudo-dynamics from ``x0`` comes to rest at.
 
     ``damping``: the first ``m = 1/dtau``. Once the relative residual is below ``handoff`` (or
-    ``m`` below 1e-3), Newton's method (:func:`sphgag.solver.newton`) tries to converge
+    ``m`` below 1e-3), Newton's method (:func:`sphgag.engine.solver.newton`) tries to converge
     the state; if it fails, the pseudo-dynamics resume from the best state so far
     with ten times more damping, and Newton is tried again once the residual is ten
     times lower (at most ``HANDOFFS`` tries). Raises :class:`NoStableState` after ``max_steps``
@@ -167,8 +167,8 @@ def _follow(model, x0, load, tol, max_iter, run, max_steps, handoff, damping) ->
 
 
 def transition(model: Model, x0: np.ndarray, material, after, load: Load, options: dict, on_snap=None):
-    """Solve the change of history from ``material``'s (a :class:`sphgag.history.HistoryMaterial`) to ``after`` at
-    ``load`` along its transition path (the load's ``transition`` 0 -> 1, :func:`solver.transition_options`); where
+    """Solve the change of history from ``material``'s (a :class:`sphgag.engine.history.HistoryMaterial`) to ``after``
+    at ``load`` along its transition path (the load's ``transition`` 0 -> 1, :func:`solver.transition_options`); where
     that path has no equilibrium, ``on_snap(exc)`` follows the snap under the new history in full (by default
     :func:`follow` from ``x0``; it may raise :class:`NoStableState`). Returns ``(state, settled material,
     snapped)``, the model set to the settled material and the state evaluated under it."""

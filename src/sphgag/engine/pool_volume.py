@@ -37,7 +37,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import materials, solver
+from ..physics import materials
+from . import solver
 from .loading import Load
 from .model import Model
 

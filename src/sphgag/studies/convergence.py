@@ -42,7 +42,7 @@ def swell_cases(
     name: str = "convergence",
 ) -> dict[str, list[protocols.PoolState]]:
     """The converged states of every study pool at particle spacing ``dx`` [um]: the passive wall pressurised at
-    this spacing, then each pool converted and swollen (:func:`sphgag.protocols.swell_pool`)."""
+    this spacing, then each pool converted and swollen (:func:`sphgag.studies.protocols.swell_pool`)."""
     p = dict(bilayer, dx_um=float(dx))
     wall = artery.bilayer_model(p, numerics, name=name)
     h = protocols.homeostasis(wall, numerics, homeostasis)
@@ -73,7 +73,7 @@ def measure(
     name: str = "convergence",
 ) -> pd.DataFrame:
     """Rows of ``results/swelling/convergence.csv`` for one particle spacing (converted stage only): the pool
-    stresses (:func:`sphgag.protocols.pool_table`) of the states of :func:`swell_cases`."""
+    stresses (:func:`sphgag.studies.protocols.pool_table`) of the states of :func:`swell_cases`."""
     tables = []
     for case, entry in cases.items():
         model = case_model(dx, bilayer, numerics, gag, entry, f"{name}_{case}")

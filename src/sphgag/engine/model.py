@@ -2,7 +2,7 @@
 
 :class:`Model` bundles the static data of a simulation (layout, neighbour
 lists, property table, hourglass parameter) and evaluates, for positions
-``x`` and a :class:`~sphgag.loading.Load`, everything the solver and the
+``x`` and a :class:`~sphgag.engine.loading.Load`, everything the solver and the
 measurements need (:class:`Evaluation`).
 """
 
@@ -15,7 +15,8 @@ from functools import cached_property
 import numpy as np
 import scipy.sparse as sp
 
-from . import forces, kernel, materials
+from ..physics import materials
+from . import forces, kernel
 from .geometry import Layout
 from .kernel import Neighbours
 from .loading import Load, add_pressure_stiffness, prescribed_inner_positions, pressure_forces
@@ -53,7 +54,7 @@ class Evaluation:
         return bool(np.isfinite(self.f_int).all() and np.isfinite(self.P).all())
 
     def force_scale(self, model: Model) -> float:
-        """Reference force of the relative residual (see :func:`sphgag.solver.relative_residual`)."""
+        """Reference force of the relative residual (see :func:`sphgag.engine.solver.relative_residual`)."""
         loaded = np.linalg.norm(self.f_ext) + np.linalg.norm(self.reactions)
         q = np.empty(model.n)
         forces.pair_force_scale(model.layout.volume, model.nb.ptr, model.nb.a, self.P, q)
@@ -73,7 +74,7 @@ class Model:
 
     name : run name used in logs and error messages.
     layout, nb : reference particles and neighbour lists.
-    props : (N, NPROP) property table (:mod:`sphgag.materials`), or a callable
+    props : (N, NPROP) property table (:mod:`sphgag.physics.materials`), or a callable
         ``props(load) -> table`` for materials that change along a path.
     hourglass_alpha : alpha of eq. (2.14); E comes from the property table.
     boundary : optional ``boundary(load) -> (indices, positions)`` of particles with

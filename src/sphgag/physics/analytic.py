@@ -14,7 +14,7 @@
   the smooth integrands).
 
 The constituent laws here are written from the paper's equations
-independently of :mod:`sphgag.materials` (no shared code), so that comparing
+independently of :mod:`sphgag.physics.materials` (no shared code), so that comparing
 SPH with them checks the discretisation *and* the transcription of the laws.
 """
 

@@ -1,0 +1,1 @@
+"""What a run leaves behind: saved states, provenance records and run logs."""

@@ -1,0 +1,1 @@
+"""What researchers look at: the figures."""
