@@ -76,6 +76,7 @@ include: "workflow/rules/verification.smk"
 include: "workflow/rules/delamination.smk"
 include: "workflow/rules/figures.smk"
 include: "workflow/rules/sensitivity.smk"
+include: "workflow/rules/views.smk"
 
 
 rule all:
@@ -108,3 +109,4 @@ rule all:
         rules.sensitivity_figure.output,
         rules.delamination_map.output,
         rules.delamination_map_figure.output,
+        VIEWS,

@@ -20,7 +20,8 @@ DE_SETTINGS = {
     if k not in ("pool_sets", "critical_stresses_kPa", "convergence", "figures", "fracture_energy")
 }
 DE_DX = [f"{dx:g}" for dx in DE["convergence"]["dx_um"]]
-DE_RUN = "results/delamination/runs/{law}/{poolset}_{sigma}kPa_{criterion}"
+DE_NAME = "{law}/{poolset}_{sigma}kPa_{criterion}"
+DE_RUN = f"results/delamination/runs/{DE_NAME}"
 # the damage law with a fracture energy: figure 5's set at critical_stress_kPa, default criterion, one run per G_c
 # (and per charge law); "paper" is the G_c that the paper's law dissipates in its run of that pool (prescribed law)
 DE_FE = DE["fracture_energy"]
@@ -28,13 +29,14 @@ DE_FE = DE["fracture_energy"]
 DE_MATCH = DE_FE["match_paper"] and "prescribed" in LAWS
 DE_TOUGHNESS = [f"{g:g}" for g in DE_FE["fracture_energies_J_m2"]] + (["paper"] if DE_MATCH else [])
 DE_FE_RUN = dict(poolset=FIG5_SET, sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"][0])
-DE_FE_PATH = "results/delamination/runs/{law}/{poolset}_{sigma}kPa_{criterion}_Gc{gc}"
-DE_GROWTH = [f"{DE_RUN}_growth.csv".format(law=law, **r) for law in LAWS for r in DE_RUNS] + [
-    f"{DE_FE_PATH}_growth.csv".format(law=law, gc=gc, **DE_FE_RUN) for law in LAWS for gc in DE_TOUGHNESS
+DE_FE_PATH = f"{DE_RUN}_Gc{{gc}}"
+# every delamination run by its path under results/delamination/runs/ ("{law}/{poolset}_{sigma}kPa_{criterion}",
+# with "_Gc{gc}" for the fracture-energy runs): its growth and summary tables, snapshots, ParaView series, animation
+DE_RUN_NAMES = [DE_NAME.format(law=law, **r) for law in LAWS for r in DE_RUNS] + [
+    f"{DE_NAME}_Gc{{gc}}".format(law=law, gc=gc, **DE_FE_RUN) for law in LAWS for gc in DE_TOUGHNESS
 ]
-DE_SUMMARIES = [f"{DE_RUN}_summary.csv".format(law=law, **r) for law in LAWS for r in DE_RUNS] + [
-    f"{DE_FE_PATH}_summary.csv".format(law=law, gc=gc, **DE_FE_RUN) for law in LAWS for gc in DE_TOUGHNESS
-]
+DE_GROWTH = [f"results/delamination/runs/{name}_growth.csv" for name in DE_RUN_NAMES]
+DE_SUMMARIES = [f"results/delamination/runs/{name}_summary.csv" for name in DE_RUN_NAMES]
 
 
 wildcard_constraints:
