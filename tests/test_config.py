@@ -122,13 +122,6 @@ def test_a_corrupt_state_file_names_the_file_and_the_remedy(tmp_path):
 # -- charge laws and pool-set roles (issue 15) ------------------------------------------------------------------
 
 
-def test_the_schema_names_the_charge_laws_of_the_package():
-    from sphgag.physics import materials
-
-    schema = config.load_yaml(SCHEMA)
-    assert tuple(schema["properties"]["gag"]["properties"]["charge_laws"]["items"]["enum"]) == materials.CHARGE_LAWS
-
-
 @pytest.mark.parametrize(
     "value, expected",
     [
@@ -215,3 +208,13 @@ def test_figure_5s_set_is_checked_at_the_resolution_studys_spacings(ci_config):
 )
 def test_a_bad_sensitivity_range_is_rejected_naming_the_input_and_its_allowed_range(full_config, path, value, expected):
     assert expected in bad(full_config, path, value)
+
+
+def test_the_schemas_enumerations_are_the_registries():
+    """A new charge law or onset criterion is an entry of its registry: the schema accepts it with no edit."""
+    from sphgag.physics.materials import CHARGE_LAWS
+    from sphgag.studies.onset import CRITERIA
+
+    s = config.schema(SCHEMA)
+    assert s["properties"]["delamination"]["properties"]["criteria"]["items"]["enum"] == list(CRITERIA)
+    assert s["properties"]["gag"]["properties"]["charge_laws"]["items"]["enum"] == list(CHARGE_LAWS)

@@ -46,7 +46,7 @@ def leaves(node, path=()):
 
 
 PATHS = sorted(leaves(BASE), key=str)
-SCHEMA_DICT = config.load_yaml(SCHEMA)
+SCHEMA_DICT = config.schema(SCHEMA)
 NUMBERS = [p for p in PATHS if not any("dx" in str(k) for k in p) and type(eval_leaf(BASE, p)) in (int, float)]
 MAPPINGS = sorted({p[:-1] for p in PATHS if p and isinstance(p[-1], str)}, key=str)
 ODD = st.one_of(

@@ -69,3 +69,15 @@ def test_a_stale_factorisation_never_lets_a_state_through_above_tolerance(wall):
             x, ev, conv = solver.newton(model, start.x, target, tol=tol, reuse=True)
             assert conv.residual < tol
             assert solver.relative_residual(model, ev) < tol
+
+
+def test_a_misspelt_material_name_raises():
+    load = Load(1.0, 0.0, material=(("concentration", 50.0),))
+    assert load.material_value("concentration") == 50.0
+    assert load.material_value("activation", 0.0) == 0.0  # a known name the load does not carry
+    with pytest.raises(KeyError, match="'concentraton' is not a material value"):
+        load.material_value("concentraton", 0.0)
+    with pytest.raises(KeyError, match="'activaton'"):
+        load.with_material(activaton=1.0)
+    with pytest.raises(KeyError, match="'prestrech'"):
+        Load(1.0, 0.0, material=(("prestrech", 1.0),))

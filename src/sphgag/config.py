@@ -166,18 +166,36 @@ def _literal_problems(node, path=()) -> list[str]:
     return out
 
 
+def _registries() -> dict:
+    """The schema's enumerations that sphgag's registries define, by the path of their array: a new charge law or
+    onset criterion is an entry of its registry, and the configuration accepts it with no edit of the schema."""
+    from .physics.materials import CHARGE_LAWS
+    from .studies.onset import CRITERIA
+
+    return {("gag", "charge_laws"): list(CHARGE_LAWS), ("delamination", "criteria"): list(CRITERIA)}
+
+
+def schema(schema_path) -> dict:
+    """The schema at ``schema_path`` with the enumerations of sphgag's registries (:func:`_registries`)."""
+    out = load_yaml(schema_path)
+    for (section, key), names in _registries().items():
+        out["properties"][section]["properties"][key]["items"]["enum"] = names
+    return out
+
+
 def validate(config: dict, schema_path) -> dict:
-    """Validate ``config`` against the schema at ``schema_path``; return it or raise :class:`ConfigError`."""
-    schema = load_yaml(schema_path)
+    """Validate ``config`` against the schema at ``schema_path`` (:func:`schema`); return it or raise
+    :class:`ConfigError`."""
+    schema_ = schema(schema_path)
     if not isinstance(config, dict):
         raise ConfigError(f"invalid configuration: expected a mapping of sections, got {type(config).__name__}")
     problems = _literal_problems(config)
     if not problems:
-        validator = _Validator(schema)
+        validator = _Validator(schema_)
         errors = sorted(validator.iter_errors(config), key=lambda e: list(map(str, e.absolute_path)))
-        problems = [_describe(e, schema) for e in errors] if errors else _consistency(config)
+        problems = [_describe(e, schema_) for e in errors] if errors else _consistency(config)
         if not problems:  # the sensitivity inputs refer to keys the checks above vouch for (e.g. figure 5's pool)
-            problems = _sensitivity(config, schema)
+            problems = _sensitivity(config, schema_)
     if problems:
         lines = "\n".join(f"  - {p}" for p in problems)
         raise ConfigError(f"invalid configuration ({Path(schema_path).name}):\n{lines}")
@@ -288,12 +306,7 @@ def _pool_angles(pool: dict) -> tuple[float, float]:
 
 def _consistency(config: dict) -> list[str]:
     """Relations between keys that a JSON schema cannot express."""
-    from .physics.materials import CHARGE_LAWS
-
     problems = []
-    for k, law in enumerate(config.get("gag", {}).get("charge_laws", [])):
-        if law not in CHARGE_LAWS:
-            problems.append(f"gag.charge_laws[{k}] = {law!r} is not a charge law of sphgag: one of {CHARGE_LAWS}")
     m = config.get("mean", {})
     if m.get("outer_radius_um", 0) <= m.get("inner_radius_um", 0):
         problems.append(

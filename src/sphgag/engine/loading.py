@@ -29,6 +29,22 @@ from numba import njit
 
 MMHG_TO_KPA = 0.133322387415
 
+# the named scalars a load can carry (Load.material): what the model's material depends on besides the deformation
+MATERIAL_NAMES = {
+    "prestretch": "fraction of the constituents' deposition pre-stretches (section 2.5), 0 -> 1",
+    "activation": "fraction of the active tone (eq. 2.24), 0 -> 1",
+    "concentration": "fixed-charge concentration c of the GAG particles [mEq/l] (eqs. 2.25-2.27)",
+    "transition": "fraction of the path between two particle histories (seeding, a damage pass), 0 -> 1",
+    "swelling_pressure": "pressure of the verification inclusion [kPa] (sphgag.studies.inclusion)",
+    "face_pressure": "pressure on the faces of the verification crack [kPa] (sphgag.studies.crack)",
+}
+
+
+def _known(name: str) -> str:
+    if name not in MATERIAL_NAMES:
+        raise KeyError(f"{name!r} is not a material value of a load: one of {', '.join(MATERIAL_NAMES)}")
+    return name
+
 
 @dataclass(frozen=True)
 class Load:
@@ -50,6 +66,8 @@ class Load:
     def __post_init__(self):
         if (self.pressure_kPa is None) == (self.inner_radius is None):
             raise ValueError("a load prescribes exactly one of pressure_kPa and inner_radius")
+        for name, _ in self.material:
+            _known(name)
 
     @property
     def pressure_mmHg(self):
@@ -60,8 +78,10 @@ class Load:
         d.update(values)
         return replace(self, material=tuple(sorted(d.items())))
 
-    def material_value(self, name, default=None):
-        return dict(self.material).get(name, default)
+    def material_value(self, name: str, default=None):
+        """The load's value of the material scalar ``name`` (:data:`MATERIAL_NAMES`), ``default`` if the load does
+        not carry it; a name that is not a material scalar raises ``KeyError``."""
+        return dict(self.material).get(_known(name), default)
 
     def lerp(self, other: Load, t: float) -> Load:
         """The load a fraction ``t`` of the way from ``self`` to ``other``."""

@@ -76,6 +76,11 @@ class DamageLaw:
     rupture_stretch_increment: float
     name = "paper"
 
+    @classmethod
+    def of(cls, settings) -> DamageLaw:
+        """The law of a run's settings (``critical_stress_kPa``, ``rupture_stretch_increment``)."""
+        return cls(settings.critical_stress_kPa, settings.rupture_stretch_increment)
+
     def __post_init__(self):
         if not self.rupture_stretch_increment > 0.0:
             raise ValueError(f"rupture_stretch_increment must be positive, got {self.rupture_stretch_increment}")
@@ -111,6 +116,11 @@ class FractureEnergyLaw:
     critical_stress_kPa: float
     fracture_energy_J_m2: float
     name = "fracture_energy"
+
+    @classmethod
+    def of(cls, settings) -> FractureEnergyLaw:
+        """The law of a run's settings (``critical_stress_kPa``, ``fracture_energy_J_m2``)."""
+        return cls(settings.critical_stress_kPa, settings.fracture_energy_J_m2)
 
     def __post_init__(self):
         if not self.fracture_energy_J_m2 > 0.0:
@@ -163,7 +173,9 @@ def _shape_integral(x) -> np.ndarray:
     return 0.5 * np.sqrt(np.pi / LN2) * erfi(np.sqrt(LN2) * x) - x
 
 
-LAWS = ("paper", "fracture_energy")
+# the registry of damage laws, by name: each builds itself from a run's settings (``of``); a new law is a class with
+# ``name``, ``of``, ``damage_at`` and ``rupture``, and an entry here
+LAWS = {law.name: law for law in (DamageLaw, FractureEnergyLaw)}
 
 
 @dataclass

@@ -66,10 +66,9 @@ from ..engine.model import Model
 from ..physics import damage, fracture, materials
 from ..records import state as state_io
 from . import artery, protocols
+from .onset import CRITERIA
 
 log = logging.getLogger("sphgag")
-
-CRITERIA = ("particle", "averaged")
 
 GROWTH_COLUMNS = [
     "case",
@@ -131,9 +130,9 @@ class Settings:
 
     def __post_init__(self):
         if self.criterion not in CRITERIA:
-            raise ValueError(f"criterion must be one of {CRITERIA}, got {self.criterion!r}")
+            raise ValueError(f"criterion must be one of {', '.join(CRITERIA)}, got {self.criterion!r}")
         if self.damage_law not in damage.LAWS:
-            raise ValueError(f"damage_law must be one of {damage.LAWS}, got {self.damage_law!r}")
+            raise ValueError(f"damage_law must be one of {', '.join(damage.LAWS)}, got {self.damage_law!r}")
 
     @classmethod
     def from_config(
@@ -152,9 +151,8 @@ class Settings:
 
     @property
     def law(self) -> damage.DamageLaw | damage.FractureEnergyLaw:
-        if self.damage_law == "fracture_energy":
-            return damage.FractureEnergyLaw(self.critical_stress_kPa, self.fracture_energy_J_m2)
-        return damage.DamageLaw(self.critical_stress_kPa, self.rupture_stretch_increment)
+        """The run's damage law, from the registry :data:`sphgag.physics.damage.LAWS`."""
+        return damage.LAWS[self.damage_law].of(self)
 
     @property
     def levels(self) -> np.ndarray:
@@ -264,14 +262,8 @@ class Result:
 
 def onset_measure(model: Model, ev, hist: ParticleHistory, cand: np.ndarray, settings: Settings) -> np.ndarray:
     """The radial Cauchy stress (eq. 2.10, current polar frame) the onset test of eq. (2.28) compares with sigma_cr,
-    at the candidates: the particle's own or its average (module docstring)."""
-    srr = measure.cauchy_polar(ev)[0]
-    if settings.criterion == "particle":
-        return srr[cand]
-    lay = model.layout
-    intact = np.flatnonzero(lay.layer_mask("media") & ~hist.gag)
-    W = measure.averaging_matrix(lay, settings.averaging_length_um, intact, rows=cand)
-    return W @ srr
+    at the candidates, by the run's onset criterion (:data:`sphgag.studies.onset.CRITERIA`)."""
+    return CRITERIA[settings.criterion].measure(model, ev, hist, cand, settings)
 
 
 def growth_rates(growth: pd.DataFrame, concentration_step: float) -> tuple[float, float]:
