@@ -14,7 +14,6 @@ os.environ.update(PYTHONPATH=os.pathsep.join(filter(None, [SRC, os.environ.get("
 from snakemake.utils import update_config  # noqa: E402
 
 from sphgag.config import canonical, load_yaml, typed_overrides, validate  # noqa: E402
-from sphgag.physics.materials import law_gag  # noqa: E402
 
 # The full study is the default only when no --configfile is given: a user's config stands alone (Snakemake would
 # otherwise merge it over config/config.yaml, so that pools, pressures and whole sections leak in from the full study).
@@ -30,36 +29,6 @@ update_config(config, typed_overrides(workflow.config_settings.config))
 validate(config, Path(workflow.basedir, "config", "schema.yaml"))
 # key order must not matter when Snakemake compares a rule's params with its last run
 config = canonical(config)
-# the Donnan laws run side by side (wildcard {law}); a run's params hold its own law only (gag.charge_law), so that
-# adding or removing a law adds or removes its jobs and reruns no other simulation
-LAWS = config["gag"]["charge_laws"]
-GAG = {law: canonical(law_gag(config["gag"], law)) for law in LAWS}
-
-
-wildcard_constraints:
-    law="|".join(LAWS),
-
-
-# Snakemake tracks a rule's script, not the modules it imports: every simulation
-# rule depends on the package's physics sources, so a physics edit reruns what it
-# affects; figure, claims and sensitivity-index rules depend on their own modules only; the modules that
-# compute no number (validation, logging, provenance records) are inputs of nothing.
-PRESENTATION = {
-    "views/plots.py",
-    "studies/claims.py",
-    "studies/sensitivity.py",
-    "config.py",
-    "records/runlog.py",
-    "records/provenance.py",
-}
-# every module of the package, subpackages included, by its path in the package; each path relative to the working
-# directory, so that moving or re-cloning the checkout reruns nothing
-PACKAGE = Path(SRC, "sphgag")
-MODULES = {p.relative_to(PACKAGE).as_posix(): os.path.relpath(p) for p in sorted(PACKAGE.rglob("*.py"))}
-SPHGAG = [path for name, path in MODULES.items() if name not in PRESENTATION]
-PLOTS = MODULES["views/plots.py"]
-CLAIMS = MODULES["studies/claims.py"]
-SENSITIVITY = MODULES["studies/sensitivity.py"]  # the indices, not the samples' simulations
 
 
 # snakemake --report report.zip: every figure and the main tables carry report(caption, category, labels) in
@@ -69,6 +38,7 @@ SENSITIVITY = MODULES["studies/sensitivity.py"]  # the indices, not the samples'
 report: "workflow/report/workflow.rst"
 
 
+include: "workflow/rules/common.smk"
 include: "workflow/rules/calibration.smk"
 include: "workflow/rules/homeostasis.smk"
 include: "workflow/rules/swelling.smk"

@@ -28,17 +28,3 @@ rule calibrate_mean:
         calibration=config["calibration"],
     script:
         "../scripts/calibrate_mean.py"
-
-
-rule transmural:
-    """Transmural stress profiles of all models in one tidy table (figure 3b,c)."""
-    input:
-        expand("results/calibration/transmural_{model}.csv", model=("mean", "passive", "active")),
-    output:
-        "results/calibration/transmural.csv",
-    log:
-        "logs/transmural.log",
-    conda:
-        "../envs/sphgag.yaml"
-    script:
-        "../scripts/concat_tables.py"

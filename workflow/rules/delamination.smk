@@ -1,48 +1,9 @@
 import re
 
-DE = config["delamination"]
-DE_PRESSURE = f"{DE['pressure_mmHg']:g}"
-# the pool sets' roles in the figures (delamination.figures): figure 5's set runs at every critical_stresses_kPa and
-# is the set of the resolution study; figures 6 and 7 show theirs; every set runs and appears in the tables
-DE_FIGURES = DE["figures"]
-FIG5_SET, FIG6_SETS, FIG7_SET = DE_FIGURES["fig5"], DE_FIGURES["fig6"], DE_FIGURES["fig7"]
-# one run per (charge law, pool set, sigma_cr, onset criterion): figure 5's set at every sigma_cr, the other sets at
-# critical_stress_kPa
-DE_RUNS = [
-    dict(poolset=case, sigma=f"{sigma:g}", criterion=criterion)
-    for case in DE["pool_sets"]
-    for sigma in (DE["critical_stresses_kPa"] if case == FIG5_SET else [DE["critical_stress_kPa"]])
-    for criterion in DE["criteria"]
-]
-DE_SETTINGS = {
-    k: v
-    for k, v in DE.items()
-    if k not in ("pool_sets", "critical_stresses_kPa", "convergence", "figures", "fracture_energy")
-}
-DE_DX = [f"{dx:g}" for dx in DE["convergence"]["dx_um"]]
-DE_NAME = "{law}/{poolset}_{sigma}kPa_{criterion}"
-DE_RUN = f"results/delamination/runs/{DE_NAME}"
-# the damage law with a fracture energy: figure 5's set at critical_stress_kPa, default criterion, one run per G_c
-# (and per charge law); "paper" is the G_c that the paper's law dissipates in its run of that pool (prescribed law)
-DE_FE = DE["fracture_energy"]
-# (matched where the prescribed law is studied: the conserved law's default run does not grow)
-DE_MATCH = DE_FE["match_paper"] and "prescribed" in LAWS
-DE_TOUGHNESS = [f"{g:g}" for g in DE_FE["fracture_energies_J_m2"]] + (["paper"] if DE_MATCH else [])
-DE_FE_RUN = dict(poolset=FIG5_SET, sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"][0])
-DE_FE_PATH = f"{DE_RUN}_Gc{{gc}}"
-# every delamination run by its path under results/delamination/runs/ ("{law}/{poolset}_{sigma}kPa_{criterion}",
-# with "_Gc{gc}" for the fracture-energy runs): its growth and summary tables, snapshots, ParaView series, animation
-DE_RUN_NAMES = [DE_NAME.format(law=law, **r) for law in LAWS for r in DE_RUNS] + [
-    f"{DE_NAME}_Gc{{gc}}".format(law=law, gc=gc, **DE_FE_RUN) for law in LAWS for gc in DE_TOUGHNESS
-]
-DE_GROWTH = [f"results/delamination/runs/{name}_growth.csv" for name in DE_RUN_NAMES]
-DE_SUMMARIES = [f"results/delamination/runs/{name}_summary.csv" for name in DE_RUN_NAMES]
-
 
 wildcard_constraints:
     poolset="|".join(re.escape(c) for c in DE["pool_sets"]),
     sigma=r"[0-9.]+",
-    criterion="averaged|particle",
     dedx="|".join(re.escape(dx) for dx in DE_DX),
 
 
@@ -51,7 +12,7 @@ rule delaminate:
     ({criterion})."""
     input:
         code=SPHGAG,
-        state=f"results/states/passive_{DE_PRESSURE}mmHg.npz",
+        state=STATE.format(model="passive", pressure=DE_PRESSURE),
     output:
         growth=f"{DE_RUN}_growth.csv",
         summary=f"{DE_RUN}_summary.csv",
@@ -81,7 +42,7 @@ rule delaminate_fracture_energy:
     J/m^2 (onset at sigma_cr = {sigma} kPa, {criterion}); G_c = paper: the energy the paper's law dissipates."""
     input:
         code=SPHGAG,
-        state=f"results/states/passive_{DE_PRESSURE}mmHg.npz",
+        state=STATE.format(model="passive", pressure=DE_PRESSURE),
         matched=lambda wildcards: (
             f"{DE_RUN}_summary.csv".format(law="prescribed", **DE_FE_RUN) if wildcards.gc == "paper" else []
         ),

@@ -1,14 +1,3 @@
-# Configuration slices that saved states depend on: a later rule refuses a state made with others.
-# (homeostasis.target_pressure_mmHg is only a reference value: it is not part of the slice)
-HOMEOSTATIC_SLICE = {
-    "bilayer": config["bilayer"],
-    "numerics": config["numerics"],
-    "homeostasis": {k: v for k, v in config["homeostasis"].items() if k != "target_pressure_mmHg"},
-}
-PRESSURISED_SLICE = dict(HOMEOSTATIC_SLICE, bilayer_calibration=config["bilayer_calibration"])
-STATE_PRESSURES = [f"{p:g}" for p in config["bilayer_calibration"]["state_pressures_mmHg"]]
-
-
 wildcard_constraints:
     model="passive|active",
 
@@ -70,7 +59,7 @@ rule bilayer_pressure_diameter:
         table="results/calibration/bilayer_{model}.csv",
         exact="results/calibration/bilayer_{model}_exact_curve.csv",
         transmural="results/calibration/transmural_{model}.csv",
-        states=expand("results/states/{{model}}_{pressure}mmHg.npz", pressure=STATE_PRESSURES),
+        states=[STATE.format(model="{model}", pressure=p) for p in STATE_PRESSURES],
         provenance="results/provenance/bilayer_pressure_diameter_{model}.json",
     log:
         "logs/bilayer_pressure_diameter_{model}.log",
@@ -90,11 +79,26 @@ rule bilayer_pressure_diameter:
         "../scripts/bilayer_pressure_diameter.py"
 
 
+rule transmural:
+    """Transmural stress profiles of all models in one tidy table (figure 3b,c)."""
+    input:
+        rules.calibrate_mean.output.transmural,
+        expand(rules.bilayer_pressure_diameter.output.transmural, model=("passive", "active")),
+    output:
+        "results/calibration/transmural.csv",
+    log:
+        "logs/transmural.log",
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/concat_tables.py"
+
+
 rule bilayer_table:
     """Passive and active pressure-diameter in one table, and the outer-diameter reduction by activation."""
     input:
-        passive="results/calibration/bilayer_passive.csv",
-        active="results/calibration/bilayer_active.csv",
+        passive=expand(rules.bilayer_pressure_diameter.output.table, model="passive"),
+        active=expand(rules.bilayer_pressure_diameter.output.table, model="active"),
     output:
         table="results/calibration/bilayer_pressure_diameter.csv",
         activation="results/calibration/activation_summary.csv",

@@ -29,6 +29,10 @@ SE_SIZES = dict(
 )
 SE_BATCHES = {m: range(math.ceil(n / SE["batch_size"])) for m, n in SE_SIZES.items()}
 SE_BATCH = "results/sensitivity/{method}/{law}/batch{batch}.csv"
+# a method's design, indices and samples (the Sobol design reads the Morris indices, which are written after it)
+SE_DESIGN = "results/sensitivity/{method}/design.csv"
+SE_INDICES = "results/sensitivity/{method}/indices.csv"
+SE_SAMPLES = "results/sensitivity/{method}/samples.csv"
 SE_MAP = SE["map"]
 SE_MAP_POINTS = [
     f"results/sensitivity/map/{law}/{w:g}deg_{s:g}kPa.csv"
@@ -50,7 +54,7 @@ rule sensitivity_design:
     input:
         code=SENSITIVITY,
     output:
-        "results/sensitivity/{method}/design.csv",
+        SE_DESIGN,
     log:
         "logs/sensitivity/{method}_design.log",
     wildcard_constraints:
@@ -72,9 +76,9 @@ rule sobol_design:
     indices)."""
     input:
         code=SENSITIVITY,
-        morris="results/sensitivity/morris/indices.csv",
+        morris=SE_INDICES.format(method="morris"),
     output:
-        "results/sensitivity/sobol/design.csv",
+        SE_DESIGN.format(method="sobol"),
     log:
         "logs/sensitivity/sobol_design.log",
     conda:
@@ -91,7 +95,7 @@ rule sensitivity_batch:
     state at its inputs (swelling to the stated concentration, then growth); a failed run is a row with its error."""
     input:
         code=SPHGAG,
-        design="results/sensitivity/{method}/design.csv",
+        design=SE_DESIGN,
     output:
         table=SE_BATCH,
         provenance="results/provenance/sensitivity_{method}_{law}_batch{batch}.json",
@@ -117,13 +121,13 @@ rule sensitivity_method:
     outputs."""
     input:
         code=SENSITIVITY,
-        design="results/sensitivity/{method}/design.csv",
+        design=SE_DESIGN,
         batches=lambda wildcards: expand(
             SE_BATCH, method=wildcards.method, law=LAWS, batch=SE_BATCHES[wildcards.method]
         ),
     output:
-        indices="results/sensitivity/{method}/indices.csv",
-        samples="results/sensitivity/{method}/samples.csv",
+        indices=SE_INDICES,
+        samples=SE_SAMPLES,
     log:
         "logs/sensitivity/{method}_indices.log",
     wildcard_constraints:
@@ -141,8 +145,8 @@ rule sensitivity:
     """The study in three tidy tables: the indices, every sample with its inputs and outputs (the nominal one first),
     and the samples without an output (a failed run, or no equilibrium at the stated concentration), by their inputs."""
     input:
-        indices=expand("results/sensitivity/{method}/indices.csv", method=("morris", "sobol")),
-        samples=expand("results/sensitivity/{method}/samples.csv", method=("morris", "sobol")),
+        indices=expand(rules.sensitivity_method.output.indices, method=("morris", "sobol")),
+        samples=expand(rules.sensitivity_method.output.samples, method=("morris", "sobol")),
         nominal=expand(SE_BATCH, method="nominal", law=LAWS, batch=0),
     output:
         indices=report(
@@ -187,7 +191,7 @@ rule delamination_map_point:
     each concentration level."""
     input:
         code=SPHGAG,
-        state=f"results/states/passive_{DE_PRESSURE}mmHg.npz",
+        state=STATE.format(model="passive", pressure=DE_PRESSURE),
     output:
         table="results/sensitivity/map/{law}/{width}deg_{sigma}kPa.csv",
         provenance="results/provenance/delamination_map_{law}_{width}deg_{sigma}kPa.json",

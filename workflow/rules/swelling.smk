@@ -1,16 +1,5 @@
 import re
 
-SW = config["swelling"]
-CASES = list(SW["cases"])
-SWELL_PRESSURES = [f"{p:g}" for p in SW["pressures_mmHg"]]
-# what the simulations depend on; probe_length_um only sets where rule pool_stresses measures
-SWELL_SETTINGS = {k: v for k, v in SW.items() if k not in ("cases", "models", "pressures_mmHg", "probe_length_um")}
-# one run per (charge law, model, pool, pressure), each with its own law only
-SWELL_NAMES = expand(
-    "{law}/{model}_{case}_{pressure}mmHg", law=LAWS, model=SW["models"], case=CASES, pressure=SWELL_PRESSURES
-)
-SWELL_RUNS = [f"results/swelling/runs/{name}.csv" for name in SWELL_NAMES]
-
 
 wildcard_constraints:
     case="|".join(re.escape(c) for c in CASES),
@@ -21,7 +10,7 @@ rule swell:
     """One GAG pool ({case}) in the {model} wall at {pressure} mmHg, {law} charge: conversion, then swelling (states)."""
     input:
         code=SPHGAG,
-        state="results/states/{model}_{pressure}mmHg.npz",
+        state=STATE,
     output:
         states="results/swelling/states/{law}/{model}_{case}_{pressure}mmHg.npz",
         provenance="results/provenance/swell_{law}_{model}_{case}_{pressure}mmHg.json",

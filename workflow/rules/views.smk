@@ -1,23 +1,13 @@
 # What researchers look at beside the figures: every swelling run and every delamination run as a ParaView series
 # (results/paraview/{swelling,delamination}/{law}/{run}/{run}.pvd, one .vtu per saved state), and an animation of
 # every delamination run drawn from its series (figures/animations/{law}/{run}.gif).
-PARAVIEW = MODULES["views/paraview.py"]
-
-
-def law_and_run(names):
-    """The wildcards law and run of run names "{law}/{run}", for expand(..., zip, **law_and_run(names))."""
-    return dict(zip(("law", "run"), zip(*(name.split("/") for name in names))))
-
-
-wildcard_constraints:
-    run=r"[^/]+",
 
 
 rule paraview_delamination:
     """Delamination run {law}/{run}: its snapshots as a ParaView series (a .vtu file per snapshot, a .pvd collection)."""
     input:
         code=SPHGAG + [PARAVIEW],
-        states="results/delamination/runs/{law}/{run}_snapshots.npz",
+        states=DE_SNAPSHOTS,
     output:
         series=directory("results/paraview/delamination/{law}/{run}"),
         provenance="results/provenance/paraview_delamination_{law}_{run}.json",
@@ -33,15 +23,16 @@ rule paraview_delamination:
 
 
 rule paraview_swelling:
-    """Swelling run {law}/{run}: its states as a ParaView series (a .vtu file per state, a .pvd collection)."""
+    """Swelling run {law}/{model}_{case}_{pressure}mmHg: its states as a ParaView series (a .vtu file per state, a .pvd
+    collection)."""
     input:
         code=SPHGAG + [PARAVIEW],
-        states="results/swelling/states/{law}/{run}.npz",
+        states=rules.swell.output.states,
     output:
-        series=directory("results/paraview/swelling/{law}/{run}"),
-        provenance="results/provenance/paraview_swelling_{law}_{run}.json",
+        series=directory("results/paraview/swelling/{law}/{model}_{case}_{pressure}mmHg"),
+        provenance="results/provenance/paraview_swelling_{law}_{model}_{case}_{pressure}mmHg.json",
     log:
-        "logs/paraview/swelling/{law}/{run}.log",
+        "logs/paraview/swelling/{law}/{model}_{case}_{pressure}mmHg.log",
     conda:
         "../envs/sphgag.yaml"
     resources:
@@ -73,7 +64,7 @@ rule animation:
 
 
 VIEWS = (
-    expand(rules.paraview_swelling.output.series, zip, **law_and_run(SWELL_NAMES))
+    expand(rules.paraview_swelling.output.series, law=LAWS, model=SW["models"], case=CASES, pressure=SWELL_PRESSURES)
     + expand(rules.paraview_delamination.output.series, zip, **law_and_run(DE_RUN_NAMES))
     + expand(rules.animation.output, zip, **law_and_run(DE_RUN_NAMES))
 )

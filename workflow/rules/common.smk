@@ -1,0 +1,113 @@
+# The names every rule file shares, included first: the package's modules (the rules' code inputs), the charge laws,
+# the configuration slices that saved states depend on, and the runs of each stage by name. A rule file defines only
+# the names it alone uses.
+
+from sphgag.physics.materials import law_gag
+from sphgag.studies.onset import CRITERIA
+
+# the Donnan laws run side by side (wildcard {law}); a run's params hold its own law only (gag.charge_law), so that
+# adding or removing a law adds or removes its jobs and reruns no other simulation
+LAWS = config["gag"]["charge_laws"]
+GAG = {law: canonical(law_gag(config["gag"], law)) for law in LAWS}
+
+
+# Snakemake tracks a rule's script, not the modules it imports: every simulation
+# rule depends on the package's physics sources, so a physics edit reruns what it
+# affects; figure, claims and sensitivity-index rules depend on their own modules only; the modules that
+# compute no number (validation, logging, provenance records) are inputs of nothing.
+PRESENTATION = {
+    "views/plots.py",
+    "studies/claims.py",
+    "studies/sensitivity.py",
+    "config.py",
+    "records/runlog.py",
+    "records/provenance.py",
+}
+# every module of the package, subpackages included, by its path in the package; each path relative to the working
+# directory, so that moving or re-cloning the checkout reruns nothing
+PACKAGE = Path(SRC, "sphgag")
+MODULES = {p.relative_to(PACKAGE).as_posix(): os.path.relpath(p) for p in sorted(PACKAGE.rglob("*.py"))}
+SPHGAG = [path for name, path in MODULES.items() if name not in PRESENTATION]
+PLOTS = MODULES["views/plots.py"]
+CLAIMS = MODULES["studies/claims.py"]
+SENSITIVITY = MODULES["studies/sensitivity.py"]  # the indices, not the samples' simulations
+PARAVIEW = MODULES["views/paraview.py"]
+
+
+# Configuration slices that saved states depend on: a later rule refuses a state made with others.
+# (homeostasis.target_pressure_mmHg is only a reference value: it is not part of the slice)
+HOMEOSTATIC_SLICE = {
+    "bilayer": config["bilayer"],
+    "numerics": config["numerics"],
+    "homeostasis": {k: v for k, v in config["homeostasis"].items() if k != "target_pressure_mmHg"},
+}
+PRESSURISED_SLICE = dict(HOMEOSTATIC_SLICE, bilayer_calibration=config["bilayer_calibration"])
+STATE_PRESSURES = [f"{p:g}" for p in config["bilayer_calibration"]["state_pressures_mmHg"]]
+# the pressurised walls' states (rule bilayer_pressure_diameter), from which swelling and delamination start
+STATE = "results/states/{model}_{pressure}mmHg.npz"
+
+
+# Swelling (figure 4)
+SW = config["swelling"]
+CASES = list(SW["cases"])
+SWELL_PRESSURES = [f"{p:g}" for p in SW["pressures_mmHg"]]
+# what the simulations depend on; probe_length_um only sets where rule pool_stresses measures
+SWELL_SETTINGS = {k: v for k, v in SW.items() if k not in ("cases", "models", "pressures_mmHg", "probe_length_um")}
+# one run per (charge law, model, pool, pressure), each with its own law only
+SWELL_NAMES = expand(
+    "{law}/{model}_{case}_{pressure}mmHg", law=LAWS, model=SW["models"], case=CASES, pressure=SWELL_PRESSURES
+)
+SWELL_RUNS = [f"results/swelling/runs/{name}.csv" for name in SWELL_NAMES]
+
+
+# Delamination (figures 5-7)
+DE = config["delamination"]
+DE_PRESSURE = f"{DE['pressure_mmHg']:g}"
+# the pool sets' roles in the figures (delamination.figures): figure 5's set runs at every critical_stresses_kPa and
+# is the set of the resolution study; figures 6 and 7 show theirs; every set runs and appears in the tables
+DE_FIGURES = DE["figures"]
+FIG5_SET, FIG6_SETS, FIG7_SET = DE_FIGURES["fig5"], DE_FIGURES["fig6"], DE_FIGURES["fig7"]
+# one run per (charge law, pool set, sigma_cr, onset criterion): figure 5's set at every sigma_cr, the other sets at
+# critical_stress_kPa
+DE_RUNS = [
+    dict(poolset=case, sigma=f"{sigma:g}", criterion=criterion)
+    for case in DE["pool_sets"]
+    for sigma in (DE["critical_stresses_kPa"] if case == FIG5_SET else [DE["critical_stress_kPa"]])
+    for criterion in DE["criteria"]
+]
+DE_SETTINGS = {
+    k: v
+    for k, v in DE.items()
+    if k not in ("pool_sets", "critical_stresses_kPa", "convergence", "figures", "fracture_energy")
+}
+DE_DX = [f"{dx:g}" for dx in DE["convergence"]["dx_um"]]
+DE_NAME = "{law}/{poolset}_{sigma}kPa_{criterion}"
+DE_RUN = f"results/delamination/runs/{DE_NAME}"
+# the damage law with a fracture energy: figure 5's set at critical_stress_kPa, default criterion, one run per G_c
+# (and per charge law); "paper" is the G_c that the paper's law dissipates in its run of that pool (prescribed law)
+DE_FE = DE["fracture_energy"]
+# (matched where the prescribed law is studied: the conserved law's default run does not grow)
+DE_MATCH = DE_FE["match_paper"] and "prescribed" in LAWS
+DE_TOUGHNESS = [f"{g:g}" for g in DE_FE["fracture_energies_J_m2"]] + (["paper"] if DE_MATCH else [])
+DE_FE_RUN = dict(poolset=FIG5_SET, sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"][0])
+DE_FE_PATH = f"{DE_RUN}_Gc{{gc}}"
+# every delamination run by its path under results/delamination/runs/ ("{law}/{poolset}_{sigma}kPa_{criterion}",
+# with "_Gc{gc}" for the fracture-energy runs): its growth and summary tables, snapshots, ParaView series, animation
+DE_RUN_NAMES = [DE_NAME.format(law=law, **r) for law in LAWS for r in DE_RUNS] + [
+    f"{DE_NAME}_Gc{{gc}}".format(law=law, gc=gc, **DE_FE_RUN) for law in LAWS for gc in DE_TOUGHNESS
+]
+DE_GROWTH = [f"results/delamination/runs/{name}_growth.csv" for name in DE_RUN_NAMES]
+DE_SUMMARIES = [f"results/delamination/runs/{name}_summary.csv" for name in DE_RUN_NAMES]
+# the snapshots of any delamination run (rule delaminate or delaminate_fracture_energy), by its name
+DE_SNAPSHOTS = "results/delamination/runs/{law}/{run}_snapshots.npz"
+
+
+def law_and_run(names):
+    """The wildcards law and run of run names "{law}/{run}", for expand(..., zip, **law_and_run(names))."""
+    return dict(zip(("law", "run"), zip(*(name.split("/") for name in names))))
+
+
+wildcard_constraints:
+    law="|".join(LAWS),
+    criterion="|".join(CRITERIA),
+    run=r"[^/]+",
