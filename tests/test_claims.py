@@ -95,3 +95,20 @@ def test_delamination_claims_follow_the_pool_sets_roles():
     assert [c.our_value.replace("pair_2deg", "low_separation") for c in b] == [c.our_value for c in a]
     assert {c.claim_id: c.holds for c in a}["C17"] == "yes"  # figure 7's set, found by its role
     assert "2 rupture passes" in a[0].our_value  # figure 5's set, found by its role
+
+
+def test_each_claim_is_one_function_of_the_list_in_the_tables_order():
+    ids = [f.__name__.split("_")[0].upper() for f in claims.CALIBRATION + claims.POOL]
+    assert ids == [f"C{k}" for k in range(1, 18)]
+
+
+def test_a_claim_is_evaluated_alone():
+    tips = tips_table("prescribed")
+    e = claims.Evidence(tips=tips, cases=CASES, max_concentration=150.0)
+    c8 = claims.c8_tensile_tip(e)
+    assert c8.claim_id == "C8" and c8.our_value.startswith("at 150 mEq/l: ")
+    both = pd.concat([tips, tips_table("conserved")], ignore_index=True)
+    assert (
+        claims.c8_tensile_tip(claims.Evidence(tips=both, cases=CASES, max_concentration=150.0).of_law("prescribed"))
+        == c8
+    )

@@ -17,16 +17,10 @@ with runlog.run("claims", sm.log[0]) as log:
     }
     # the paper's claims are about its damage law (eq. 2.28 as printed)
     t["growth"], t["delamination"] = delamination.paper_law(t["growth"]), delamination.paper_law(t["delamination"])
-    found = claims.calibration_claims(t["mean"], t["bilayer"], t["activation"], t["layers"], t["transmural"])
-    found += claims.by_law(
-        p.laws, lambda law: claims.swelling_claims(claims.of_law(t["tips"], law), p.cases, p.max_concentration)
+    evidence = claims.Evidence(
+        **t, cases=p.cases, max_concentration=p.max_concentration, criteria=tuple(p.criteria), figures=p.figures
     )
-    found += claims.by_law(
-        p.laws,
-        lambda law: claims.delamination_claims(
-            claims.of_law(t["growth"], law), claims.of_law(t["delamination"], law), p.criteria, p.figures
-        ),
-    )
+    found = claims.evaluate(evidence, p.laws)
     df = claims.table(found)
     df.to_csv(sm.output.table, index=False)
     with open(sm.output.markdown, "w") as fh:

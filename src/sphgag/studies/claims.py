@@ -1,20 +1,20 @@
 """The paper's claims (figures 3-7 and their text), evaluated from the pipeline's tables alone.
 
-Each claim is a function of the tidy CSV tables that returns our number and
-whether the claim holds by a criterion written next to it. A claim that does
-not hold is reported with our number; nothing here feeds back into a
-simulation. A claim whose data the configuration did not produce (e.g. a
-reduced sweep) is reported as ``n/a``.
+Each claim is one function of the :class:`Evidence` (the tidy CSV tables and the configuration that made them) that
+returns our number and whether the claim holds by a criterion written next to it. A claim that does not hold is
+reported with our number; nothing here feeds back into a simulation. A claim whose data the configuration did not
+produce (e.g. a reduced sweep) is reported as ``n/a``, or left out where the paper's figure itself needs the data
+(C4-C5: two profiled pressures; C11-C12: both models).
 
-The pool claims (figure 4: C6-C12; delamination: C13-C17) are evaluated once
-per charge law (:func:`by_law`; column ``charge_law``), with the same criteria:
-``prescribed`` is the paper's model, ``conserved`` our deviation. The
-calibration claims (C1-C5) involve no pool (``charge_law`` "-").
+The claims table is built from the lists :data:`CALIBRATION` (C1-C5, no pool: ``charge_law`` "-") and :data:`POOL`
+(figure 4: C6-C12; delamination: C13-C17), the pool claims evaluated once per charge law with the same criteria
+(:func:`evaluate`; column ``charge_law``): ``prescribed`` is the paper's model, ``conserved`` our deviation. A new
+claim is a function and an entry of its list.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 import pandas as pd
@@ -31,6 +31,38 @@ class Claim:
     charge_law: str = "-"  # a pool claim's Donnan law (sphgag.physics.materials.CHARGE_LAWS); "-": no pool
 
 
+@dataclass(frozen=True)
+class Evidence:
+    """What the claims read: the pipeline's tables (rule claims' inputs) and the configuration that made them.
+
+    Calibration: ``mean`` (mean_pressure_diameter.csv), ``bilayer`` (bilayer_pressure_diameter.csv), ``activation``
+    (activation_summary.csv), ``layers`` (homeostasis/layers.csv), ``transmural``. Pools: ``tips``
+    (swelling/tip_stress.csv), ``growth`` and ``delamination`` (delamination/growth.csv and summary.csv, the paper's
+    damage law), with ``cases`` (each swelling pool's angular extent), ``max_concentration`` of the swelling runs,
+    the onset ``criteria`` (the first is the default) and the pool sets' roles ``figures`` (``delamination.figures``).
+    """
+
+    mean: pd.DataFrame | None = None
+    bilayer: pd.DataFrame | None = None
+    activation: pd.DataFrame | None = None
+    layers: pd.DataFrame | None = None
+    transmural: pd.DataFrame | None = None
+    tips: pd.DataFrame | None = None
+    growth: pd.DataFrame | None = None
+    delamination: pd.DataFrame | None = None
+    cases: dict = field(default_factory=dict)
+    max_concentration: float | None = None
+    criteria: tuple = ()
+    figures: dict = field(default_factory=dict)
+
+    def of_law(self, law: str) -> Evidence:
+        """The evidence of one charge law: its rows of the pool tables (column ``charge_law``)."""
+        pools = {
+            k: of_law(getattr(self, k), law) for k in ("tips", "growth", "delamination") if getattr(self, k) is not None
+        }
+        return replace(self, **pools)
+
+
 def _yes(flag) -> str:
     return "yes" if bool(flag) else "no"
 
@@ -38,100 +70,6 @@ def _yes(flag) -> str:
 def _hoop_range(profile: pd.DataFrame) -> float:
     s = profile.circ_stress_kPa
     return float((s.max() - s.min()) / s.mean())
-
-
-def calibration_claims(
-    mean: pd.DataFrame,
-    bilayer: pd.DataFrame,
-    activation: pd.DataFrame,
-    homeostasis_layers: pd.DataFrame,
-    transmural: pd.DataFrame,
-) -> list[Claim]:
-    out = []
-    m_err = mean.loc[mean.pressure_mmHg >= 10, "od_rel_error"].abs().max()
-    b = bilayer[(bilayer.pressure_mmHg >= 60) & (bilayer.pressure_mmHg <= 200)]
-    b_err = b.groupby("model").od_rel_error.apply(lambda s: s.abs().max())
-    out.append(
-        Claim(
-            "C1",
-            "SPH pressure-outer diameter of the mean and bi-layered models agrees with the analytical solution",
-            "'agree well' (figure 3a)",
-            f"largest OD error: mean {100 * m_err:.2f} % (10-200 mmHg); bi-layered "
-            + ", ".join(f"{k} {100 * v:.2f} %" for k, v in b_err.items())
-            + " (60-200 mmHg)",
-            _yes(m_err < 0.01 and (b_err < 0.015).all()),
-            "mean < 1 %, bi-layered < 1.5 %",
-        )
-    )
-
-    sph = activation[activation.source == "sph"].iloc[0]
-    red = sph.od_reduction
-    out.append(
-        Claim(
-            "C2",
-            "Full SMC activation reduces the outer diameter by about 20 % at the homeostatic pressure",
-            "about 20 %",
-            f"{100 * red:.1f} % at {sph.pressure_mmHg:g} mmHg",
-            _yes(0.15 <= red <= 0.25),
-            "within 15-25 %",
-        )
-    )
-
-    passive = homeostasis_layers[homeostasis_layers.model == "passive"]
-    worst = passive.circ_variation.max()
-    t = transmural[transmural.source == "sph"]
-    mean103 = t[(t.model == "mean") & (np.isclose(t.pressure_mmHg, 103.0))]
-    mean_var = _hoop_range(mean103) if len(mean103) else np.nan
-    out.append(
-        Claim(
-            "C3",
-            "The bi-layered homeostatic state has near-uniform hoop stress within each layer, the mean model "
-            "a highly non-uniform one",
-            "near uniform per layer (figure 3c) vs highly non-uniform (figure 3b)",
-            f"bi-layered (max - min)/mean per layer <= {100 * worst:.1f} %; mean model across the wall at 103 mmHg "
-            f"{100 * mean_var:.0f} %",
-            _yes(worst < 0.10 and mean_var > 0.5),
-            "bi-layered < 10 % in every layer and mean model > 50 %",
-        )
-    )
-
-    def layer_mean(model, P, layer):
-        d = t[(t.model == model) & np.isclose(t.pressure_mmHg, P) & (t.layer == layer)]
-        return d.circ_stress_kPa.mean()
-
-    pressures = sorted(set(t[t.model == "passive"].pressure_mmHg))
-    if len(pressures) >= 2:
-        lo, hi = pressures[0], pressures[-1]
-        r_lo = layer_mean("passive", lo, "adventitia") / layer_mean("passive", lo, "media")
-        r_hi = layer_mean("passive", hi, "adventitia") / layer_mean("passive", hi, "media")
-        out.append(
-            Claim(
-                "C4",
-                "At elevated pressure the adventitia shields the media (passive model)",
-                "adventitia carries increasingly more load (figure 3c)",
-                f"adventitia/media hoop stress {r_lo:.2f} at {lo:g} mmHg, {r_hi:.2f} at {hi:g} mmHg",
-                _yes(r_hi > r_lo),
-                "the ratio grows with pressure",
-            )
-        )
-        shares, adv = [], []
-        for P in pressures:
-            sp = layer_mean("passive", P, "media") / layer_mean("passive", P, "adventitia")
-            sa = layer_mean("active", P, "media") / layer_mean("active", P, "adventitia")
-            shares.append((P, sp, sa))
-            adv.append(layer_mean("active", P, "adventitia") < layer_mean("passive", P, "adventitia"))
-        out.append(
-            Claim(
-                "C5",
-                "SMC activation shifts load to the media and lowers the adventitial hoop stress at fixed pressure",
-                "media bears more load, adventitial stress reduced (figure 3c)",
-                "media/adventitia hoop stress passive -> active: "
-                + ", ".join(f"{sp:.2f} -> {sa:.2f} ({P:g} mmHg)" for P, sp, sa in shares),
-                _yes(all(sa > sp for _, sp, sa in shares) and all(adv)),
-                "ratio larger when active and adventitial hoop stress lower, at every profiled pressure",
-            )
-        )
-    return out
 
 
 def _monotone_groups(table: pd.DataFrame, ordered: list, holds) -> tuple[int, int]:
@@ -167,151 +105,6 @@ def at_highest(top: pd.DataFrame, max_concentration: float | None) -> str:
     )
 
 
-def swelling_claims(tips: pd.DataFrame, cases: dict, max_concentration: float | None = None) -> list[Claim]:
-    """Claims of figure 4 and section 3 from ``tip_stress.csv`` (one charge law); ``cases`` gives each pool's angular
-    extent. "The highest concentration" is each run's last converged state (:func:`last_converged`), which is
-    ``max_concentration`` unless a run found no equilibrium up to it (then the values say so)."""
-    out = []
-    size = {c: cases[c]["angular_extent_deg"] for c in cases}
-    ordered = sorted(size, key=size.get)
-    conv0 = tips[(tips.stage == "converted") & (tips.concentration_mEq_l == 0)]
-    intact = tips[tips.stage == "intact"]
-    top = last_converged(tips)
-    at = at_highest(top, max_concentration)
-    key = ["model", "pressure_mmHg", "case"]
-    d = (
-        conv0.set_index(key)[["tip_radial_stress_kPa", "top_circ_stress_kPa"]]
-        - intact.set_index(key)[["tip_radial_stress_kPa", "top_circ_stress_kPa"]]
-    )
-    signs = (d.tip_radial_stress_kPa < 0) & (d.top_circ_stress_kPa > 0)
-    grow, groups = _monotone_groups(
-        d.reset_index(),
-        ordered,
-        lambda g: np.all(np.diff(-g.tip_radial_stress_kPa) >= 0) and np.all(np.diff(g.top_circ_stress_kPa) >= 0),
-    )
-    out.append(
-        Claim(
-            "C6",
-            "Converting the pool (no swelling) makes the tip radial stress compressive and raises the top hoop "
-            "(tensile) stress",
-            "figure 4b,c at c = 0",
-            f"tip change {d.tip_radial_stress_kPa.min():.0f} to {d.tip_radial_stress_kPa.max():.0f} kPa, top change "
-            f"+{d.top_circ_stress_kPa.min():.0f} to +{d.top_circ_stress_kPa.max():.0f} kPa; signs right in "
-            f"{int(signs.sum())}/{len(signs)} runs",
-            _yes(signs.all()),
-            "tip more compressive and top more tensile than intact in every run",
-        )
-    )
-    out.append(
-        Claim(
-            "C7",
-            "... in proportion to the pool size (text); the caption says the concentrations tend to decrease as "
-            "the pool enlarges",
-            "grow with size (text) / decrease with size (caption)",
-            f"both changes grow with pool size in {grow}/{groups} model-pressure groups; top change at 103 mmHg "
-            "(passive): "
-            + ", ".join(
-                f"{c} +{d.loc[('passive', 103.0, c), 'top_circ_stress_kPa']:.0f}"
-                for c in ordered
-                if ("passive", 103.0, c) in d.index
-            ),
-            _yes(grow == groups) if groups else "n/a",
-            "monotone growth in size in every group (the text's reading)",
-        )
-    )
-
-    high = tips[(tips.stage == "converted") & (tips.concentration_mEq_l > 100 - 1e-9)]
-    frac_tensile = (top.tip_radial_stress_kPa > 0).mean()
-    frac_50 = (high.tip_radial_stress_kPa > 50).mean()
-    out.append(
-        Claim(
-            "C8",
-            "Swelling turns the tip radial stress from compressive to tensile, typically above ~50 kPa for "
-            "concentrations over 100 mEq/l",
-            "> ~50 kPa above 100 mEq/l",
-            f"{at}: {top.tip_radial_stress_kPa.min():.0f} to {top.tip_radial_stress_kPa.max():.0f} kPa, "
-            f"tensile in {100 * frac_tensile:.0f} % of runs; "
-            f"> 50 kPa in {100 * frac_50:.0f} % of states above 100 mEq/l",
-            _yes(frac_tensile == 1 and frac_50 >= 0.5),
-            "tensile in every run at the highest concentration and > 50 kPa in most states above 100 mEq/l",
-        )
-    )
-
-    mono, groups = _monotone_groups(top, ordered, lambda g: np.all(np.diff(g.tip_radial_stress_kPa) <= 0))
-    out.append(
-        Claim(
-            "C9",
-            "Smaller pools give higher tip stress",
-            "figure 4, section 3",
-            f"tip radial stress {at} decreases with pool size in {mono}/{groups} model-pressure groups",
-            _yes(groups > 0 and mono == groups) if groups else "n/a",
-            "monotone in every group",
-        )
-    )
-
-    passive = tips[(tips.model == "passive") & (tips.stage == "converted") & (tips.concentration_mEq_l > 75 - 1e-9)]
-    if passive.pressure_mmHg.nunique() > 1:
-        by_level = passive.groupby(["case", "concentration_mEq_l"]).tip_radial_stress_kPa
-        spread = by_level.agg(np.ptp)[by_level.size() > 1]  # levels that more than one pressure reached
-        out.append(
-            Claim(
-                "C10",
-                "In the passive wall the tip stress hardly changes with lumen pressure above 75 mEq/l",
-                "does not change appreciably",
-                f"largest spread over pressures {spread.max():.1f} kPa (median {spread.median():.1f} kPa)",
-                _yes(spread.max() <= 10.0),
-                "spread <= 10 kPa at every case and concentration >= 75 mEq/l",
-            )
-        )
-    else:
-        out.append(
-            Claim(
-                "C10",
-                "In the passive wall the tip stress hardly changes with lumen pressure above 75 mEq/l",
-                "does not change appreciably",
-                "needs more than one pressure",
-                "n/a",
-                "-",
-            )
-        )
-
-    both = top.pivot_table(index=["case", "pressure_mmHg"], columns="model", values="tip_radial_stress_kPa")
-    if {"passive", "active"} <= set(both.columns):
-        diff = (both.active - both.passive).rename("active_minus_passive").reset_index()
-        top_p = diff.pressure_mmHg.max()
-        low = diff[diff.pressure_mmHg < top_p]
-        high_p = diff[(diff.pressure_mmHg == top_p) & diff.case.isin(ordered[:2])]
-        out.append(
-            Claim(
-                "C11",
-                "Activation lowers the tip stress at 103 and 145 mmHg",
-                "lower (section 3)",
-                f"active - passive {at}: "
-                + ", ".join(
-                    f"{r.case} at {r.pressure_mmHg:g} mmHg: {r.active_minus_passive:+.0f}" for r in low.itertuples()
-                )
-                + " kPa",
-                _yes(len(low) and (low.active_minus_passive < 0).all()) if len(low) else "n/a",
-                "negative for every case",
-            )
-        )
-        out.append(
-            Claim(
-                "C12",
-                "... but raises it for the two smallest pools at 200 mmHg",
-                "higher for cases I-II (section 3)",
-                f"active - passive {at}: "
-                + ", ".join(
-                    f"{r.case} at {r.pressure_mmHg:g} mmHg: {r.active_minus_passive:+.0f}" for r in high_p.itertuples()
-                )
-                + " kPa",
-                _yes((high_p.active_minus_passive > 0).all()) if len(high_p) else "n/a",
-                "positive for the two smallest pools",
-            )
-        )
-    return out
-
-
 def _ruptures(g: pd.DataFrame) -> pd.DataFrame:
     """Rows of one run (ordered) at which the converted count grew."""
     return g[g.converted_particles.diff() > 0]
@@ -324,90 +117,363 @@ def _runs(growth: pd.DataFrame, case: str, criterion: str):
     }
 
 
-def delamination_claims(growth: pd.DataFrame, summary: pd.DataFrame, criteria: list, figures: dict) -> list[Claim]:
-    """Claims of section 3 (figures 5-7) from ``delamination/growth.csv`` and ``summary.csv`` (one charge law).
+# -- calibration (figure 3): C1-C5 ----------------------------------------------------------------------------------
 
-    ``figures`` gives the pool sets' roles (``delamination.figures``): figure 5's set (C13-C15), figure 6's sets
-    (C16) and figure 7's set (C17). ``holds`` is judged on the default onset criterion (``criteria[0]``); the other
-    criteria's numbers are reported beside it.
-    """
-    out = []
-    fig5, fig6, fig7 = figures["fig5"], list(figures["fig6"]), figures["fig7"]
 
-    def per_criterion(fn):
-        return "; ".join(f"{c}: {fn(c)}" for c in criteria)
+def c1_pressure_diameter(e: Evidence) -> Claim:
+    m_err = e.mean.loc[e.mean.pressure_mmHg >= 10, "od_rel_error"].abs().max()
+    b = e.bilayer[(e.bilayer.pressure_mmHg >= 60) & (e.bilayer.pressure_mmHg <= 200)]
+    b_err = b.groupby("model").od_rel_error.apply(lambda s: s.abs().max())
+    return Claim(
+        "C1",
+        "SPH pressure-outer diameter of the mean and bi-layered models agrees with the analytical solution",
+        "'agree well' (figure 3a)",
+        f"largest OD error: mean {100 * m_err:.2f} % (10-200 mmHg); bi-layered "
+        + ", ".join(f"{k} {100 * v:.2f} %" for k, v in b_err.items())
+        + " (60-200 mmHg)",
+        _yes(m_err < 0.01 and (b_err < 0.015).all()),
+        "mean < 1 %, bi-layered < 1.5 %",
+    )
 
-    def spontaneous(c):
-        found = {}
-        for sigma, g in _runs(growth, fig5, c).items():
-            r = _ruptures(g)
-            levels = r.groupby("concentration_mEq_l").size()
-            found[sigma] = (len(r), int(levels.max()) if len(levels) else 0)
-        return found
 
-    def spont_text(c):
+def c2_activation_diameter(e: Evidence) -> Claim:
+    sph = e.activation[e.activation.source == "sph"].iloc[0]
+    red = sph.od_reduction
+    return Claim(
+        "C2",
+        "Full SMC activation reduces the outer diameter by about 20 % at the homeostatic pressure",
+        "about 20 %",
+        f"{100 * red:.1f} % at {sph.pressure_mmHg:g} mmHg",
+        _yes(0.15 <= red <= 0.25),
+        "within 15-25 %",
+    )
+
+
+def _sph_profiles(e: Evidence) -> pd.DataFrame:
+    return e.transmural[e.transmural.source == "sph"]
+
+
+def c3_uniform_hoop_stress(e: Evidence) -> Claim:
+    passive = e.layers[e.layers.model == "passive"]
+    worst = passive.circ_variation.max()
+    t = _sph_profiles(e)
+    mean103 = t[(t.model == "mean") & (np.isclose(t.pressure_mmHg, 103.0))]
+    mean_var = _hoop_range(mean103) if len(mean103) else np.nan
+    return Claim(
+        "C3",
+        "The bi-layered homeostatic state has near-uniform hoop stress within each layer, the mean model "
+        "a highly non-uniform one",
+        "near uniform per layer (figure 3c) vs highly non-uniform (figure 3b)",
+        f"bi-layered (max - min)/mean per layer <= {100 * worst:.1f} %; mean model across the wall at 103 mmHg "
+        f"{100 * mean_var:.0f} %",
+        _yes(worst < 0.10 and mean_var > 0.5),
+        "bi-layered < 10 % in every layer and mean model > 50 %",
+    )
+
+
+def _layer_mean(t: pd.DataFrame, model: str, P: float, layer: str) -> float:
+    d = t[(t.model == model) & np.isclose(t.pressure_mmHg, P) & (t.layer == layer)]
+    return d.circ_stress_kPa.mean()
+
+
+def _profiled_pressures(t: pd.DataFrame) -> list:
+    return sorted(set(t[t.model == "passive"].pressure_mmHg))
+
+
+def c4_adventitia_shields(e: Evidence) -> Claim | None:
+    t = _sph_profiles(e)
+    pressures = _profiled_pressures(t)
+    if len(pressures) < 2:
+        return None
+    lo, hi = pressures[0], pressures[-1]
+    r_lo = _layer_mean(t, "passive", lo, "adventitia") / _layer_mean(t, "passive", lo, "media")
+    r_hi = _layer_mean(t, "passive", hi, "adventitia") / _layer_mean(t, "passive", hi, "media")
+    return Claim(
+        "C4",
+        "At elevated pressure the adventitia shields the media (passive model)",
+        "adventitia carries increasingly more load (figure 3c)",
+        f"adventitia/media hoop stress {r_lo:.2f} at {lo:g} mmHg, {r_hi:.2f} at {hi:g} mmHg",
+        _yes(r_hi > r_lo),
+        "the ratio grows with pressure",
+    )
+
+
+def c5_activation_shifts_load(e: Evidence) -> Claim | None:
+    t = _sph_profiles(e)
+    pressures = _profiled_pressures(t)
+    if len(pressures) < 2:
+        return None
+    shares, adv = [], []
+    for P in pressures:
+        sp = _layer_mean(t, "passive", P, "media") / _layer_mean(t, "passive", P, "adventitia")
+        sa = _layer_mean(t, "active", P, "media") / _layer_mean(t, "active", P, "adventitia")
+        shares.append((P, sp, sa))
+        adv.append(_layer_mean(t, "active", P, "adventitia") < _layer_mean(t, "passive", P, "adventitia"))
+    return Claim(
+        "C5",
+        "SMC activation shifts load to the media and lowers the adventitial hoop stress at fixed pressure",
+        "media bears more load, adventitial stress reduced (figure 3c)",
+        "media/adventitia hoop stress passive -> active: "
+        + ", ".join(f"{sp:.2f} -> {sa:.2f} ({P:g} mmHg)" for P, sp, sa in shares),
+        _yes(all(sa > sp for _, sp, sa in shares) and all(adv)),
+        "ratio larger when active and adventitial hoop stress lower, at every profiled pressure",
+    )
+
+
+# -- swelling (figure 4): C6-C12 ------------------------------------------------------------------------------------
+
+
+def _ordered(e: Evidence) -> list:
+    """The swelling pools, smallest angular extent first."""
+    size = {c: e.cases[c]["angular_extent_deg"] for c in e.cases}
+    return sorted(size, key=size.get)
+
+
+def _conversion_change(e: Evidence) -> pd.DataFrame:
+    """Per run (model, pressure, case): the tip radial and top hoop stress changes from intact to converted at c = 0."""
+    tips = e.tips
+    conv0 = tips[(tips.stage == "converted") & (tips.concentration_mEq_l == 0)]
+    intact = tips[tips.stage == "intact"]
+    key = ["model", "pressure_mmHg", "case"]
+    return (
+        conv0.set_index(key)[["tip_radial_stress_kPa", "top_circ_stress_kPa"]]
+        - intact.set_index(key)[["tip_radial_stress_kPa", "top_circ_stress_kPa"]]
+    )
+
+
+def _highest(e: Evidence) -> tuple[pd.DataFrame, str]:
+    """Each run's last converged state and how the claims name it (:func:`last_converged`, :func:`at_highest`)."""
+    top = last_converged(e.tips)
+    return top, at_highest(top, e.max_concentration)
+
+
+def c6_conversion_signs(e: Evidence) -> Claim:
+    d = _conversion_change(e)
+    signs = (d.tip_radial_stress_kPa < 0) & (d.top_circ_stress_kPa > 0)
+    return Claim(
+        "C6",
+        "Converting the pool (no swelling) makes the tip radial stress compressive and raises the top hoop "
+        "(tensile) stress",
+        "figure 4b,c at c = 0",
+        f"tip change {d.tip_radial_stress_kPa.min():.0f} to {d.tip_radial_stress_kPa.max():.0f} kPa, top change "
+        f"+{d.top_circ_stress_kPa.min():.0f} to +{d.top_circ_stress_kPa.max():.0f} kPa; signs right in "
+        f"{int(signs.sum())}/{len(signs)} runs",
+        _yes(signs.all()),
+        "tip more compressive and top more tensile than intact in every run",
+    )
+
+
+def c7_conversion_grows_with_size(e: Evidence) -> Claim:
+    d = _conversion_change(e)
+    ordered = _ordered(e)
+    grow, groups = _monotone_groups(
+        d.reset_index(),
+        ordered,
+        lambda g: np.all(np.diff(-g.tip_radial_stress_kPa) >= 0) and np.all(np.diff(g.top_circ_stress_kPa) >= 0),
+    )
+    return Claim(
+        "C7",
+        "... in proportion to the pool size (text); the caption says the concentrations tend to decrease as "
+        "the pool enlarges",
+        "grow with size (text) / decrease with size (caption)",
+        f"both changes grow with pool size in {grow}/{groups} model-pressure groups; top change at 103 mmHg "
+        "(passive): "
+        + ", ".join(
+            f"{c} +{d.loc[('passive', 103.0, c), 'top_circ_stress_kPa']:.0f}"
+            for c in ordered
+            if ("passive", 103.0, c) in d.index
+        ),
+        _yes(grow == groups) if groups else "n/a",
+        "monotone growth in size in every group (the text's reading)",
+    )
+
+
+def c8_tensile_tip(e: Evidence) -> Claim:
+    top, at = _highest(e)
+    tips = e.tips
+    high = tips[(tips.stage == "converted") & (tips.concentration_mEq_l > 100 - 1e-9)]
+    frac_tensile = (top.tip_radial_stress_kPa > 0).mean()
+    frac_50 = (high.tip_radial_stress_kPa > 50).mean()
+    return Claim(
+        "C8",
+        "Swelling turns the tip radial stress from compressive to tensile, typically above ~50 kPa for "
+        "concentrations over 100 mEq/l",
+        "> ~50 kPa above 100 mEq/l",
+        f"{at}: {top.tip_radial_stress_kPa.min():.0f} to {top.tip_radial_stress_kPa.max():.0f} kPa, "
+        f"tensile in {100 * frac_tensile:.0f} % of runs; "
+        f"> 50 kPa in {100 * frac_50:.0f} % of states above 100 mEq/l",
+        _yes(frac_tensile == 1 and frac_50 >= 0.5),
+        "tensile in every run at the highest concentration and > 50 kPa in most states above 100 mEq/l",
+    )
+
+
+def c9_smaller_pools_higher_tip(e: Evidence) -> Claim:
+    top, at = _highest(e)
+    mono, groups = _monotone_groups(top, _ordered(e), lambda g: np.all(np.diff(g.tip_radial_stress_kPa) <= 0))
+    return Claim(
+        "C9",
+        "Smaller pools give higher tip stress",
+        "figure 4, section 3",
+        f"tip radial stress {at} decreases with pool size in {mono}/{groups} model-pressure groups",
+        _yes(groups > 0 and mono == groups) if groups else "n/a",
+        "monotone in every group",
+    )
+
+
+def c10_pressure_independent_tip(e: Evidence) -> Claim:
+    statement = "In the passive wall the tip stress hardly changes with lumen pressure above 75 mEq/l"
+    tips = e.tips
+    passive = tips[(tips.model == "passive") & (tips.stage == "converted") & (tips.concentration_mEq_l > 75 - 1e-9)]
+    if passive.pressure_mmHg.nunique() <= 1:
+        return Claim("C10", statement, "does not change appreciably", "needs more than one pressure", "n/a", "-")
+    by_level = passive.groupby(["case", "concentration_mEq_l"]).tip_radial_stress_kPa
+    spread = by_level.agg(np.ptp)[by_level.size() > 1]  # levels that more than one pressure reached
+    return Claim(
+        "C10",
+        statement,
+        "does not change appreciably",
+        f"largest spread over pressures {spread.max():.1f} kPa (median {spread.median():.1f} kPa)",
+        _yes(spread.max() <= 10.0),
+        "spread <= 10 kPa at every case and concentration >= 75 mEq/l",
+    )
+
+
+def _activation_change(e: Evidence) -> pd.DataFrame | None:
+    """Active minus passive tip radial stress of each case and pressure at the highest concentration (None without
+    both models)."""
+    top, _ = _highest(e)
+    both = top.pivot_table(index=["case", "pressure_mmHg"], columns="model", values="tip_radial_stress_kPa")
+    if not {"passive", "active"} <= set(both.columns):
+        return None
+    return (both.active - both.passive).rename("active_minus_passive").reset_index()
+
+
+def _activation_text(e: Evidence, rows: pd.DataFrame) -> str:
+    _, at = _highest(e)
+    return (
+        f"active - passive {at}: "
+        + ", ".join(f"{r.case} at {r.pressure_mmHg:g} mmHg: {r.active_minus_passive:+.0f}" for r in rows.itertuples())
+        + " kPa"
+    )
+
+
+def c11_activation_lowers_tip(e: Evidence) -> Claim | None:
+    diff = _activation_change(e)
+    if diff is None:
+        return None
+    low = diff[diff.pressure_mmHg < diff.pressure_mmHg.max()]
+    return Claim(
+        "C11",
+        "Activation lowers the tip stress at 103 and 145 mmHg",
+        "lower (section 3)",
+        _activation_text(e, low),
+        _yes(len(low) and (low.active_minus_passive < 0).all()) if len(low) else "n/a",
+        "negative for every case",
+    )
+
+
+def c12_activation_raises_small_tips(e: Evidence) -> Claim | None:
+    diff = _activation_change(e)
+    if diff is None:
+        return None
+    high_p = diff[(diff.pressure_mmHg == diff.pressure_mmHg.max()) & diff.case.isin(_ordered(e)[:2])]
+    return Claim(
+        "C12",
+        "... but raises it for the two smallest pools at 200 mmHg",
+        "higher for cases I-II (section 3)",
+        _activation_text(e, high_p),
+        _yes((high_p.active_minus_passive > 0).all()) if len(high_p) else "n/a",
+        "positive for the two smallest pools",
+    )
+
+
+# -- delamination (figures 5-7): C13-C17 ----------------------------------------------------------------------------
+# ``holds`` is judged on the default onset criterion (``criteria[0]``); the other criteria's numbers are reported
+# beside it.
+
+
+def _per_criterion(e: Evidence, fn) -> str:
+    return "; ".join(f"{c}: {fn(c)}" for c in e.criteria)
+
+
+def _spontaneous(e: Evidence, criterion: str) -> dict:
+    """Per sigma_cr of figure 5's set: (rupture passes, the most at one concentration)."""
+    found = {}
+    for sigma, g in _runs(e.growth, e.figures["fig5"], criterion).items():
+        r = _ruptures(g)
+        levels = r.groupby("concentration_mEq_l").size()
+        found[sigma] = (len(r), int(levels.max()) if len(levels) else 0)
+    return found
+
+
+def c13_spontaneous_propagation(e: Evidence) -> Claim:
+    def text(c):
         return ", ".join(
-            f"{s:g} kPa {n} rupture passes (at most {m} at one concentration)" for s, (n, m) in spontaneous(c).items()
+            f"{s:g} kPa {n} rupture passes (at most {m} at one concentration)"
+            for s, (n, m) in _spontaneous(e, c).items()
         )
 
-    default = spontaneous(criteria[0])
-    grew = [v for v in default.values() if v[0] > 0]
-    out.append(
-        Claim(
-            "C13",
-            "Propagation is spontaneous: once the tip stress first exceeds sigma_cr, the pool keeps growing at "
-            "fixed concentration",
-            "section 3, figure 5",
-            per_criterion(spont_text),
-            _yes(grew and all(m >= 2 for _, m in grew)),
-            "in every single-pool run (default criterion) the pool grows, "
-            "and ruptures recur at least twice at one concentration",
-        )
+    grew = [v for v in _spontaneous(e, e.criteria[0]).values() if v[0] > 0]
+    return Claim(
+        "C13",
+        "Propagation is spontaneous: once the tip stress first exceeds sigma_cr, the pool keeps growing at "
+        "fixed concentration",
+        "section 3, figure 5",
+        _per_criterion(e, text),
+        _yes(grew and all(m >= 2 for _, m in grew)),
+        "in every single-pool run (default criterion) the pool grows, "
+        "and ruptures recur at least twice at one concentration",
     )
 
-    def sawtooth(c):
-        drops = {}
-        for sigma, g in _runs(growth, fig5, c).items():
-            tip = g.tip_radial_stress_kPa.to_numpy()
-            drops[sigma] = int(np.sum(np.diff(tip) < -0.1 * sigma))
-        return drops
 
-    saw = sawtooth(criteria[0])
-    out.append(
-        Claim(
-            "C14",
-            "The tip stress rises and drops repeatedly (a sawtooth)",
-            "figure 5b",
-            per_criterion(lambda c: ", ".join(f"{s:g} kPa {n} drops" for s, n in sawtooth(c).items())),
-            _yes(saw and all(n >= 2 for n in saw.values())),
-            "at least two drops by > 10 % of sigma_cr in every single-pool run (default criterion)",
-        )
+def _sawtooth(e: Evidence, criterion: str) -> dict:
+    """Per sigma_cr of figure 5's set: the drops of the tip stress by more than 10 % of sigma_cr."""
+    drops = {}
+    for sigma, g in _runs(e.growth, e.figures["fig5"], criterion).items():
+        tip = g.tip_radial_stress_kPa.to_numpy()
+        drops[sigma] = int(np.sum(np.diff(tip) < -0.1 * sigma))
+    return drops
+
+
+def c14_sawtooth(e: Evidence) -> Claim:
+    saw = _sawtooth(e, e.criteria[0])
+    return Claim(
+        "C14",
+        "The tip stress rises and drops repeatedly (a sawtooth)",
+        "figure 5b",
+        _per_criterion(e, lambda c: ", ".join(f"{s:g} kPa {n} drops" for s, n in _sawtooth(e, c).items())),
+        _yes(saw and all(n >= 2 for n in saw.values())),
+        "at least two drops by > 10 % of sigma_cr in every single-pool run (default criterion)",
     )
 
-    def rates(c):
-        s = summary[(summary.case == fig5) & (summary.criterion == c)].set_index("sigma_cr_kPa")
-        return s
 
-    def rate_text(c):
-        s = rates(c)
-        text = ", ".join(
-            f"{k:g} kPa {r.growth_rate_um_per_pseudo_time:.3g} um/pass, {r.growth_rate_um_per_mEq_l:.3g} um/(mEq/l)"
-            for k, r in s.iterrows()
+def _rates(e: Evidence, criterion: str) -> pd.DataFrame:
+    s = e.delamination
+    return s[(s.case == e.figures["fig5"]) & (s.criterion == criterion)].set_index("sigma_cr_kPa")
+
+
+def _rate_text(e: Evidence, criterion: str) -> str:
+    s = _rates(e, criterion)
+    text = ", ".join(
+        f"{k:g} kPa {r.growth_rate_um_per_pseudo_time:.3g} um/pass, {r.growth_rate_um_per_mEq_l:.3g} um/(mEq/l)"
+        for k, r in s.iterrows()
+    )
+    if len(s) > 1 and s.index.min() < s.index.max():
+        a, b = s.loc[s.index.min()], s.loc[s.index.max()]
+
+        def ratio(x, y):
+            return f"{x / y:.3g}" if y > 0 else ("inf" if x > 0 else "-")
+
+        text += (
+            f" (ratio {s.index.min():g}/{s.index.max():g} kPa: "
+            f"{ratio(a.growth_rate_um_per_pseudo_time, b.growth_rate_um_per_pseudo_time)} per pass, "
+            f"{ratio(a.growth_rate_um_per_mEq_l, b.growth_rate_um_per_mEq_l)} per mEq/l)"
         )
-        if len(s) > 1 and s.index.min() < s.index.max():
-            a, b = s.loc[s.index.min()], s.loc[s.index.max()]
+    return text
 
-            def ratio(x, y):
-                return f"{x / y:.3g}" if y > 0 else ("inf" if x > 0 else "-")
 
-            text += (
-                f" (ratio {s.index.min():g}/{s.index.max():g} kPa: "
-                f"{ratio(a.growth_rate_um_per_pseudo_time, b.growth_rate_um_per_pseudo_time)} per pass, "
-                f"{ratio(a.growth_rate_um_per_mEq_l, b.growth_rate_um_per_mEq_l)} per mEq/l)"
-            )
-        return text
-
-    s = rates(criteria[0])
+def c15_sigma_cr_slows_growth(e: Evidence) -> Claim:
+    s = _rates(e, e.criteria[0])
     lo, hi = (s.index.min(), s.index.max()) if len(s) else (None, None)
     if lo is not None and lo < hi:
         a, b = s.loc[lo], s.loc[hi]
@@ -421,63 +487,118 @@ def delamination_claims(growth: pd.DataFrame, summary: pd.DataFrame, criteria: l
         holds = _yes(slows)
     else:
         holds = "n/a"
-    out.append(
-        Claim(
-            "C15",
-            "Raising sigma_cr from 30 to 60 kPa slows propagation more than twofold",
-            "section 3, figure 5",
-            per_criterion(rate_text),
-            holds,
-            "rate at the lowest sigma_cr > 2 x the rate at the highest, per pass and per mEq/l (default criterion)",
-        )
+    return Claim(
+        "C15",
+        "Raising sigma_cr from 30 to 60 kPa slows propagation more than twofold",
+        "section 3, figure 5",
+        _per_criterion(e, lambda c: _rate_text(e, c)),
+        holds,
+        "rate at the lowest sigma_cr > 2 x the rate at the highest, per pass and per mEq/l (default criterion)",
     )
 
-    def pair_runs(c):
-        """``(summary row, growth row at the merge or at the end)`` of every pool-pair run of criterion ``c``."""
-        runs = summary[summary.case.isin(fig6) & (summary.criterion == c)]
-        for r in runs.itertuples():
-            g = growth[(growth.case == r.case) & (growth.criterion == c)].sort_values("step")
-            yield r, (g[g.pseudo_time <= r.merge_step].iloc[-1] if r.merged else g.iloc[-1])
 
-    def merge_text(c):
+def _pair_runs(e: Evidence, criterion: str):
+    """``(summary row, growth row at the merge or at the end)`` of every pool-pair run (figure 6's sets)."""
+    summary, growth = e.delamination, e.growth
+    runs = summary[summary.case.isin(list(e.figures["fig6"])) & (summary.criterion == criterion)]
+    for r in runs.itertuples():
+        g = growth[(growth.case == r.case) & (growth.criterion == criterion)].sort_values("step")
+        yield r, (g[g.pseudo_time <= r.merge_step].iloc[-1] if r.merged else g.iloc[-1])
+
+
+def c16_pairs_merge(e: Evidence) -> Claim:
+    def text(c):
         return ", ".join(
             f"{r.case} {f'merged at pass {r.merge_step:.0f}' if r.merged else 'not merged'}, converted "
             f"interior {at.converted_interior:.0f} / exterior {at.converted_exterior:.0f}"
-            for r, at in pair_runs(c)
+            for r, at in _pair_runs(e, c)
         )
 
-    pairs = list(pair_runs(criteria[0]))
+    pairs = list(_pair_runs(e, e.criteria[0]))
     ok = any(r.merged and at.converted_exterior > at.converted_interior for r, at in pairs)
-    out.append(
-        Claim(
-            "C16",
-            "Two nearby pools grow and merge, and at merging their exterior growth exceeds their interior growth",
-            "figure 6",
-            per_criterion(merge_text),
-            _yes(ok) if len(pairs) else "n/a",
-            "a pool pair merges and has more exterior than interior converted particles at the merge (default "
-            "criterion)",
-        )
+    return Claim(
+        "C16",
+        "Two nearby pools grow and merge, and at merging their exterior growth exceeds their interior growth",
+        "figure 6",
+        _per_criterion(e, text),
+        _yes(ok) if len(pairs) else "n/a",
+        "a pool pair merges and has more exterior than interior converted particles at the merge (default criterion)",
     )
 
-    off = summary[(summary.case == fig7)]
-    out.append(
-        Claim(
-            "C17",
-            "Radially offset pools link up",
-            "figure 7",
-            per_criterion(
-                lambda c: ", ".join(
-                    f"{f'merged at pass {r.merge_step:.0f}' if r.merged else 'not merged'} "
-                    f"({r.final_length_um:.1f} um delaminated)"
-                    for r in off[off.criterion == c].itertuples()
-                )
+
+def c17_offset_pools_link(e: Evidence) -> Claim:
+    off = e.delamination[(e.delamination.case == e.figures["fig7"])]
+    return Claim(
+        "C17",
+        "Radially offset pools link up",
+        "figure 7",
+        _per_criterion(
+            e,
+            lambda c: ", ".join(
+                f"{f'merged at pass {r.merge_step:.0f}' if r.merged else 'not merged'} "
+                f"({r.final_length_um:.1f} um delaminated)"
+                for r in off[off.criterion == c].itertuples()
             ),
-            _yes(off[off.criterion == criteria[0]].merged.any()) if len(off) else "n/a",
-            "the radially offset pair merges (default criterion)",
-        )
+        ),
+        _yes(off[off.criterion == e.criteria[0]].merged.any()) if len(off) else "n/a",
+        "the radially offset pair merges (default criterion)",
     )
-    return out
+
+
+# the claims in the table's order: the calibration claims once, each pool claim once per charge law
+CALIBRATION = [
+    c1_pressure_diameter,
+    c2_activation_diameter,
+    c3_uniform_hoop_stress,
+    c4_adventitia_shields,
+    c5_activation_shifts_load,
+]
+SWELLING = [
+    c6_conversion_signs,
+    c7_conversion_grows_with_size,
+    c8_tensile_tip,
+    c9_smaller_pools_higher_tip,
+    c10_pressure_independent_tip,
+    c11_activation_lowers_tip,
+    c12_activation_raises_small_tips,
+]
+DELAMINATION = [
+    c13_spontaneous_propagation,
+    c14_sawtooth,
+    c15_sigma_cr_slows_growth,
+    c16_pairs_merge,
+    c17_offset_pools_link,
+]
+POOL = SWELLING + DELAMINATION
+
+
+def _found(claims, e: Evidence) -> list[Claim]:
+    """The claims of ``claims`` that ``e`` has the data for."""
+    return [c for c in (claim(e) for claim in claims) if c is not None]
+
+
+def evaluate(e: Evidence, laws) -> list[Claim]:
+    """The claims table's rows: every calibration claim, then every pool claim once per charge law in ``laws``."""
+    return _found(CALIBRATION, e) + by_law(laws, lambda law: _found(POOL, e.of_law(law)))
+
+
+def calibration_claims(mean, bilayer, activation, homeostasis_layers, transmural) -> list[Claim]:
+    """Claims C1-C5 of figure 3."""
+    return _found(CALIBRATION, Evidence(mean, bilayer, activation, homeostasis_layers, transmural))
+
+
+def swelling_claims(tips: pd.DataFrame, cases: dict, max_concentration: float | None = None) -> list[Claim]:
+    """Claims C6-C12 of figure 4 and section 3 from ``tip_stress.csv`` (one charge law); ``cases`` gives each pool's
+    angular extent. "The highest concentration" is each run's last converged state (:func:`last_converged`), which
+    is ``max_concentration`` unless a run found no equilibrium up to it (then the values say so)."""
+    return _found(SWELLING, Evidence(tips=tips, cases=cases, max_concentration=max_concentration))
+
+
+def delamination_claims(growth: pd.DataFrame, summary: pd.DataFrame, criteria: list, figures: dict) -> list[Claim]:
+    """Claims C13-C17 of section 3 (figures 5-7) from ``delamination/growth.csv`` and ``summary.csv`` (one charge
+    law); ``figures`` gives the pool sets' roles (``delamination.figures``)."""
+    e = Evidence(growth=growth, delamination=summary, criteria=tuple(criteria), figures=figures)
+    return _found(DELAMINATION, e)
 
 
 def of_law(table: pd.DataFrame, law: str) -> pd.DataFrame:
