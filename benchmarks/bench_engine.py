@@ -26,6 +26,8 @@ import numpy as np
 import pandas as pd
 import scipy.sparse.linalg as spla
 
+from sphgag.engine.numerics import Numerics
+
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
@@ -58,14 +60,14 @@ def main():
     out = {
         "particles": model.n,
         "neighbour_entries": model.nb.n_entries,
-        "kernel_support_factor": numerics["kernel_support_factor"],
+        "kernel_support_factor": Numerics.of(numerics).kernel_support_factor,
     }
 
     # a representative pressurised state: 103 mmHg
     lz = p["axial_stretch"]
     load = Load(lz, 103 * MMHG_TO_KPA)
     states = protocols.solver.follow_path(
-        model, model.layout.X, Load(1.0, 0.0), [Load(lz, 0.0), load], **protocols.solver_options(numerics)
+        model, model.layout.X, Load(1.0, 0.0), [Load(lz, 0.0), load], **Numerics.of(numerics).solver_options()
     )
     x = states[-1].x
     props, _, pairs = model.material(load)

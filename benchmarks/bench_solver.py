@@ -32,6 +32,8 @@ from pathlib import Path
 
 import numpy as np
 
+from sphgag.engine.numerics import Numerics
+
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
@@ -91,7 +93,7 @@ def measure(dx: float, config_path: str) -> dict:
         model.factorisation = solver._factorise(model, ev, model.jacobian(ev), 0.0, model.name)
 
     for label, reuse in (("", numerics["reuse_factorisation"]), ("_fresh_newton", False)):
-        opts = dict(protocols.solver_options(numerics), reuse=reuse)
+        opts = dict(Numerics.of(numerics).solver_options(), reuse=reuse)
         opts.pop("max_bisections")
         factorised_at_start()
         times, xs, current = [], x, load

@@ -8,6 +8,7 @@ import pytest
 
 from sphgag.engine import geometry, pool_volume, snap, solver
 from sphgag.engine.history import DAMAGED, HistoryMaterial
+from sphgag.engine.numerics import Numerics
 from sphgag.studies import artery, delamination, protocols
 
 from .conftest import law_gag
@@ -98,7 +99,7 @@ def test_a_snap_lands_on_the_equilibrium_the_quasi_static_path_reaches_where_tha
     numerics = ci_config["numerics"]
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=law_gag(ci_config))
-    opts = protocols.solver_options(numerics)
+    opts = Numerics.of(numerics).solver_options()
     seeded = protocols.swelling_load(ci_wall.load, 1.0, 0.0)
     conv = solver.follow_path(model, ci_wall.x, protocols.swelling_load(ci_wall.load, 0.0, 0.0), [seeded], **opts)[-1]
     swollen = seeded.with_material(concentration=150.0)
@@ -116,7 +117,7 @@ def test_no_stable_state_ends_a_snap_with_its_reason(ci_config, ci_wall):
     model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=law_gag(ci_config))
     load = protocols.swelling_load(ci_wall.load, 1.0, 150.0)
     with pytest.raises(snap.NoStableState, match="no equilibrium in 2 steps"):
-        snap.follow(model, ci_wall.x, load, max_steps=2, **protocols.solver_options(numerics))
+        snap.follow(model, ci_wall.x, load, max_steps=2, **Numerics.of(numerics).solver_options())
 
 
 # -- the pool's volume as the control --------------------------------------------------------------------------------
@@ -163,7 +164,7 @@ def test_volume_control_reaches_a_requested_concentration(ci_config, swollen_poo
     """From a converged state, the volume-controlled path reaches a requested concentration, and the state it returns
     there is the one concentration control reaches."""
     model, state = swollen_pool
-    opts = dict(protocols.solver_options(ci_config["numerics"]), tol=1e-8)
+    opts = dict(Numerics.of(ci_config["numerics"]).solver_options(), tol=1e-8)
     path, reached = pool_volume.continue_path(model, state, model.props.converting, [60.0], **opts)
     assert path.end == "complete" and len(reached) == 1
     assert reached[0].load.material_value("concentration") == 60.0

@@ -153,7 +153,7 @@ def test_the_charge_law_of_a_run_selects_its_donnan_term(ci_config):
     wall = ci_config["bilayer"], ci_config["numerics"]
     for law in materials.CHARGE_LAWS:
         model = artery.bilayer_model(*wall, name="test-law", pool=sector, gag=law_gag(ci_config, law))
-        assert model.props.gag["charge_law"] == law and "charge_laws" not in model.props.gag
+        assert model.props.gag == materials.Gag.of(law_gag(ci_config, law)) and model.props.gag.charge_law == law
         rows[law] = model.props(load)[model.props.converting]
     g = ci_config["gag"]
     pi = materials.swelling_pressure(150.0, g["bath_concentration_mEq_l"], g["temperature_K"])

@@ -151,15 +151,10 @@ class HistoryMaterial:
         self,
         base: Callable[[Load], np.ndarray],
         before: ParticleHistory,
-        gag: dict,
+        gag: materials.Gag | dict,
         after: ParticleHistory | None = None,
     ):
-        if gag.get("charge_law") not in materials.CHARGE_LAWS:
-            raise ValueError(
-                f"gag['charge_law'] = {gag.get('charge_law')!r}: one of {', '.join(materials.CHARGE_LAWS)} "
-                "(materials.law_gag gives the parameters of one law)"
-            )
-        self.base, self.gag = base, gag
+        self.base, self.gag = base, materials.Gag.of(gag)
         self.before, self.after = before, before if after is None else after
         if self.before.n != self.after.n:
             raise ValueError("the two histories have different particle counts")
@@ -187,16 +182,16 @@ class HistoryMaterial:
         if np.any(D > 0.0):
             out = damage.weaken(out, D)
         g = self.gag
-        conserved = g["charge_law"] == "conserved"
+        conserved = g.charge_law == "conserved"
         for rows, fraction, charge in ((self.kept, 1.0, c), (self.converting, t, t * c)):
             if not rows.size or fraction == 0.0:
                 continue
             if conserved:
-                pi, fixed = 0.0, (charge, g["bath_concentration_mEq_l"], g["temperature_K"])
+                pi, fixed = 0.0, (charge, g.bath_concentration_mEq_l, g.temperature_K)
             else:
-                pi = float(materials.swelling_pressure(charge, g["bath_concentration_mEq_l"], g["temperature_K"]))
+                pi = float(materials.swelling_pressure(charge, g.bath_concentration_mEq_l, g.temperature_K))
                 fixed = None
             materials.convert_to_gag(
-                out, rows, fraction, g["shear_modulus_kPa"], g["hourglass_modulus_kPa"], pi, g["lame_lambda_kPa"], fixed
+                out, rows, fraction, g.shear_modulus_kPa, g.hourglass_modulus_kPa, pi, g.lame_lambda_kPa, fixed
             )
         return out

@@ -39,8 +39,12 @@ we use ``mu/2 (I1 - 3) - mu ln J``, whose derivative is the first term of
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 from numba import njit
+
+from ..options import Options
 
 # Column layout of the property table.
 MU, LAM, GR, GT, GZ, PI, TACT, LMAX, LMIN, HG_E, NFAM = range(11)
@@ -62,9 +66,34 @@ GAS_CONSTANT = 8.314462618  # J / (mol K)
 CHARGE_LAWS = ("prescribed", "conserved")
 
 
+@dataclass(frozen=True)
+class Gag(Options):
+    """The GAG parameters of one run (:func:`law_gag`): ``shear_modulus_kPa`` mu_GAG (eq. 2.27),
+    ``lame_lambda_kPa`` the bulk term of GAG particles (not in eq. 2.27; docs/physics.md), ``temperature_K`` T and
+    ``bath_concentration_mEq_l`` c* of eqs. (2.25-2.26), ``hourglass_modulus_kPa`` E of eq. (2.14) for GAG particles,
+    and the run's Donnan law ``charge_law`` (:data:`CHARGE_LAWS`)."""
+
+    SECTION = "gag"
+
+    shear_modulus_kPa: float
+    lame_lambda_kPa: float
+    temperature_K: float
+    bath_concentration_mEq_l: float
+    hourglass_modulus_kPa: float
+    charge_law: str
+
+    def __post_init__(self):
+        if self.charge_law not in CHARGE_LAWS:
+            raise ValueError(
+                f"gag charge_law = {self.charge_law!r}: one of {', '.join(CHARGE_LAWS)} "
+                "(materials.law_gag gives the parameters of one law)"
+            )
+
+
 def law_gag(gag: dict, law: str) -> dict:
     """The ``gag`` parameters of one run under the charge law ``law``: the configuration's ``gag`` section without its
-    list ``charge_laws``, with ``charge_law = law`` (what :class:`sphgag.engine.history.HistoryMaterial` reads)."""
+    list ``charge_laws``, with ``charge_law = law`` (a plain dict, as Snakemake params and state files keep it;
+    :class:`Gag` is its typed form)."""
     if law not in CHARGE_LAWS:
         raise ValueError(f"unknown charge law {law!r}: one of {', '.join(CHARGE_LAWS)}")
     return dict({k: v for k, v in gag.items() if k not in ("charge_laws", "charge_law")}, charge_law=law)

@@ -1,17 +1,22 @@
 """Arterial models built from configuration slices (paper section 2.4, Tables 1-2).
 
-The builders take plain dictionaries (the ``mean`` and ``numerics`` sections
-of ``config/config.yaml``) so that a Snakemake rule passes exactly the
-parameters it depends on.
+A Snakemake rule passes exactly the parameters it depends on, as plain dictionaries (the ``mean``, ``bilayer`` and
+``numerics`` sections of ``config/config.yaml``); the bi-layered wall and the numerics are read as typed options
+(:class:`Bilayer`, :class:`sphgag.engine.numerics.Numerics`).
 """
 
 from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
 
 import numpy as np
 
 from ..engine import geometry, history, kernel
 from ..engine.loading import Load
 from ..engine.model import Model
+from ..engine.numerics import Numerics
+from ..options import Options
 from ..physics import analytic, materials
 
 
@@ -27,14 +32,15 @@ def mean_fibre_families(p: dict):
     )
 
 
-def mean_model(p: dict, numerics: dict, name: str = "mean") -> Model:
+def mean_model(p: dict, numerics: Numerics, name: str = "mean") -> Model:
     """Mean-behaviour model (section 2.4.1, Table 1) in its unloaded reference configuration."""
+    numerics = Numerics.of(numerics)
     layout = geometry.quarter_annulus([p["inner_radius_um"], p["outer_radius_um"]], p["dx_um"])
-    nb = kernel.for_layout(layout, numerics["kernel_support_factor"])
+    nb = kernel.for_layout(layout, numerics.kernel_support_factor)
     props = materials.mean_behaviour(
         layout.n, p["shear_modulus_kPa"], p["lame_lambda_kPa"], mean_fibre_families(p), p["hourglass_modulus_kPa"]
     )
-    return Model(name, layout, nb, props, numerics["hourglass_alpha"])
+    return Model(name, layout, nb, props, numerics.hourglass_alpha)
 
 
 def mean_thick_wall(p: dict) -> analytic.ThickWallTube:
@@ -51,14 +57,70 @@ def mean_thick_wall(p: dict) -> analytic.ThickWallTube:
 LAYERS = ("media", "adventitia")
 
 
-def bilayer_interfaces(p: dict):
+@dataclass(frozen=True)
+class FibreConstants(Options):
+    """Fung constants of a fibre family (eq. 2.22) in tension and in compression; ``angle_deg`` is the diagonal
+    collagen's angle alpha_0 to the axis (Table 2)."""
+
+    c1_kPa: float
+    c2: float
+    c1_compression_kPa: float
+    c2_compression: float
+    angle_deg: float = 0.0
+
+
+@dataclass(frozen=True)
+class Prestretch(Options):
+    """Deposition stretches of Table 2: the elastin matrix's circumferential and axial G, SMC and collagen G."""
+
+    elastin_circumferential: float
+    elastin_axial: float
+    smc: float
+    collagen: float
+
+
+@dataclass(frozen=True)
+class Active(Options):
+    """The active tone of eq. (2.24): T_max and the stretches of its maximum and of zero tone."""
+
+    max_stress_kPa: float
+    stretch_max: float
+    stretch_min: float
+
+
+@dataclass(frozen=True)
+class Bilayer(Options):
+    """The ``bilayer`` configuration section (section 2.4.2, Table 2): the in vivo geometry, the particle spacing,
+    the constituents' moduli, mass fractions, orientations, fibre constants, pre-stretches and active tone.
+    ``mass_fractions[layer][constituent]`` and ``orientations[layer][direction]`` are read-only mappings."""
+
+    SECTION = "bilayer"
+
+    inner_radius_um: float
+    media_thickness_um: float
+    adventitia_thickness_um: float
+    dx_um: float
+    elastin_shear_modulus_kPa: float
+    lame_lambda_kPa: float
+    hourglass_modulus_kPa: float
+    aligned_radii_um: tuple
+    mass_fractions: Mapping
+    orientations: Mapping
+    collagen: FibreConstants
+    smc: FibreConstants
+    prestretch: Prestretch
+    active: Active
+
+
+def bilayer_interfaces(p: Bilayer | dict):
     """Reference radii [R_in, media/adventitia border, R_out] of the in vivo (homeostatic) geometry."""
-    r0 = p["inner_radius_um"]
-    border = r0 + p["media_thickness_um"]
-    return r0, border, border + p["adventitia_thickness_um"]
+    p = Bilayer.of(p)
+    r0 = p.inner_radius_um
+    border = r0 + p.media_thickness_um
+    return r0, border, border + p.adventitia_thickness_um
 
 
-def bilayer_families(p: dict, layer: str):
+def bilayer_families(p: Bilayer | dict, layer: str):
     """Fibre families of one layer as :class:`analytic.Family` (eqs. 2.22-2.23, Table 2).
 
     Media: SMC + circumferential collagen (phi_M^s, 90 deg, SMC constants, pre-stretch G_M^2),
@@ -66,27 +128,18 @@ def bilayer_families(p: dict, layer: str):
     Adventitia: collagen only, axial (beta_A^z), circumferential (beta_A^theta) and diagonal
     (beta_A^d / 2 each). All collagen has the same constants and pre-stretch in both layers.
     """
-    col, smc, pre = p["collagen"], p["smc"], p["prestretch"]
-    frac, beta = p["mass_fractions"][layer], p["orientations"][layer]
-    a0 = col["angle_deg"]
+    p = Bilayer.of(p)
+    col, smc, pre = p.collagen, p.smc, p.prestretch
+    frac, beta = p.mass_fractions[layer], p.orientations[layer]
+    a0 = col.angle_deg
 
     def collagen(phi, alpha):
-        return analytic.Family(
-            phi, alpha, col["c1_kPa"], col["c2"], col["c1_compression_kPa"], col["c2_compression"], pre["collagen"]
-        )
+        return analytic.Family(phi, alpha, col.c1_kPa, col.c2, col.c1_compression_kPa, col.c2_compression, pre.collagen)
 
     fams = []
     if layer == "media":
         fams.append(
-            analytic.Family(
-                frac["smc"],
-                90.0,
-                smc["c1_kPa"],
-                smc["c2"],
-                smc["c1_compression_kPa"],
-                smc["c2_compression"],
-                pre["smc"],
-            )
+            analytic.Family(frac["smc"], 90.0, smc.c1_kPa, smc.c2, smc.c1_compression_kPa, smc.c2_compression, pre.smc)
         )
     else:
         fams.append(collagen(frac["collagen"] * beta["circumferential"], 90.0))
@@ -96,30 +149,31 @@ def bilayer_families(p: dict, layer: str):
     return tuple(fams)
 
 
-def elastin_prestretch(p: dict, fraction: float = 1.0):
+def elastin_prestretch(p: Bilayer | dict, fraction: float = 1.0):
     """(G_r, G_theta, G_z) of the elastin-dominated matrix a ``fraction`` of the way from 1 (G_r = 1/(G_t G_z))."""
-    pre = p["prestretch"]
-    gt = 1.0 + fraction * (pre["elastin_circumferential"] - 1.0)
-    gz = 1.0 + fraction * (pre["elastin_axial"] - 1.0)
+    pre = Bilayer.of(p).prestretch
+    gt = 1.0 + fraction * (pre.elastin_circumferential - 1.0)
+    gz = 1.0 + fraction * (pre.elastin_axial - 1.0)
     return 1.0 / (gt * gz), gt, gz
 
 
-def bilayer_law(p: dict, layer: str, active: bool) -> analytic.Mixture:
+def bilayer_law(p: Bilayer | dict, layer: str, active: bool) -> analytic.Mixture:
     """Incompressible constituents of one layer at full pre-stretch, for the semi-analytical tube."""
+    p = Bilayer.of(p)
     gr, gt, _ = elastin_prestretch(p)
-    act = p["active"]
+    act = p.active
     return analytic.Mixture(
-        mu=p["mass_fractions"][layer]["elastin"] * p["elastin_shear_modulus_kPa"],
+        mu=p.mass_fractions[layer]["elastin"] * p.elastin_shear_modulus_kPa,
         families=bilayer_families(p, layer),
         Gr=gr,
         Gt=gt,
-        tmax=act["max_stress_kPa"] if (active and layer == "media") else 0.0,
-        lmax=act["stretch_max"],
-        lmin=act["stretch_min"],
+        tmax=act.max_stress_kPa if (active and layer == "media") else 0.0,
+        lmax=act.stretch_max,
+        lmin=act.stretch_min,
     )
 
 
-def bilayer_tube(p: dict, active: bool) -> analytic.ThickWallTube:
+def bilayer_tube(p: Bilayer | dict, active: bool) -> analytic.ThickWallTube:
     """Semi-analytical incompressible bi-layered tube (same constituents and pre-stretches)."""
     r0, rb, r1 = bilayer_interfaces(p)
     return analytic.ThickWallTube(
@@ -140,21 +194,21 @@ class BilayerMaterial:
     :class:`sphgag.engine.history.HistoryMaterial`.
     """
 
-    def __init__(self, p: dict, layout: geometry.Layout):
-        self.p = p
+    def __init__(self, p: Bilayer | dict, layout: geometry.Layout):
+        self.p = p = Bilayer.of(p)
         n = layout.n
         table = materials.empty_props(n)
         self.media = layout.layer_mask("media")
         for layer in LAYERS:
             rows = np.flatnonzero(layout.layer_mask(layer))
-            table[rows, materials.MU] = p["mass_fractions"][layer]["elastin"] * p["elastin_shear_modulus_kPa"]
+            table[rows, materials.MU] = p.mass_fractions[layer]["elastin"] * p.elastin_shear_modulus_kPa
             for k, f in enumerate(bilayer_families(p, layer)):
                 materials.set_family(table, rows, k, f.phi, f.alpha_deg, f.c1, f.c2, f.c1m, f.c2m, f.prestretch)
             # eq. (2.23) weights the whole elastin energy (2.21), bulk term included, by phi^e
-            table[rows, materials.LAM] = p["mass_fractions"][layer]["elastin"] * p["lame_lambda_kPa"]
-        table[:, materials.HG_E] = p["hourglass_modulus_kPa"]
-        act = p["active"]
-        table[:, materials.LMAX], table[:, materials.LMIN] = act["stretch_max"], act["stretch_min"]
+            table[rows, materials.LAM] = p.mass_fractions[layer]["elastin"] * p.lame_lambda_kPa
+        table[:, materials.HG_E] = p.hourglass_modulus_kPa
+        act = p.active
+        table[:, materials.LMAX], table[:, materials.LMIN] = act.stretch_max, act.stretch_min
         self.target = materials.merge_identical_families(table)
         nf = int(self.target[:, materials.NFAM].max())
         self._fibre_g = [materials.FAM0 + k * materials.FAM_STRIDE + materials.GF for k in range(nf)]
@@ -167,7 +221,7 @@ class BilayerMaterial:
         out[:, materials.GR], out[:, materials.GT], out[:, materials.GZ] = gr, gt, gz
         for col in self._fibre_g:
             out[:, col] = 1.0 + s * (self.target[:, col] - 1.0)
-        out[self.media, materials.TACT] = a * self.p["active"]["max_stress_kPa"]
+        out[self.media, materials.TACT] = a * self.p.active.max_stress_kPa
         return out
 
 
@@ -178,16 +232,23 @@ def pool_sector(case: dict) -> geometry.Sector:
     )
 
 
-def bilayer_layout(p: dict) -> geometry.Layout:
+def bilayer_layout(p: Bilayer | dict) -> geometry.Layout:
     """Particles of the bi-layered wall: media (with ``aligned_radii_um`` as cell boundaries) and adventitia."""
+    p = Bilayer.of(p)
     r0, border, r1 = bilayer_interfaces(p)
-    aligned = sorted(r for r in p["aligned_radii_um"] if r0 < r < border)
+    aligned = sorted(r for r in p.aligned_radii_um if r0 < r < border)
     return geometry.quarter_annulus(
-        [r0, *aligned, border, r1], p["dx_um"], layer_names=["media"] * (len(aligned) + 1) + ["adventitia"]
+        [r0, *aligned, border, r1], p.dx_um, layer_names=["media"] * (len(aligned) + 1) + ["adventitia"]
     )
 
 
-def bilayer_model(p: dict, numerics: dict, name: str = "bilayer", pool=None, gag: dict | None = None) -> Model:
+def bilayer_model(
+    p: Bilayer | dict,
+    numerics: Numerics | dict,
+    name: str = "bilayer",
+    pool=None,
+    gag: materials.Gag | dict | None = None,
+) -> Model:
     """Bi-layered model (section 2.4.2, Table 2) in its in vivo reference configuration.
 
     The radii ``aligned_radii_um`` inside the media are cell boundaries of the
@@ -199,12 +260,13 @@ def bilayer_model(p: dict, numerics: dict, name: str = "bilayer", pool=None, gag
     the intact wall to the wall with those medial sectors seeded as GAG pools: the
     load's ``transition`` converts them and its ``concentration`` swells them.
     """
+    numerics = Numerics.of(numerics)
     layout = bilayer_layout(p)
-    nb = kernel.for_layout(layout, numerics["kernel_support_factor"])
+    nb = kernel.for_layout(layout, numerics.kernel_support_factor)
     material = BilayerMaterial(p, layout)
     if pool is not None:
         material = seeding(material, layout, [pool] if isinstance(pool, geometry.Sector) else list(pool), gag)
-    return Model(name, layout, nb, material, numerics["hourglass_alpha"])
+    return Model(name, layout, nb, material, numerics.hourglass_alpha)
 
 
 def seeding(base, layout: geometry.Layout, sectors, gag: dict) -> history.HistoryMaterial:

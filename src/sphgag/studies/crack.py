@@ -47,8 +47,8 @@ from ..engine import kernel, measure, snap, solver
 from ..engine.history import HistoryMaterial, ParticleHistory
 from ..engine.loading import Load
 from ..engine.model import Model
+from ..engine.numerics import Numerics
 from ..physics import damage, fracture, materials
-from . import protocols
 from .delamination import intact_energy
 from .inclusion import ExactBoundary, Materials
 
@@ -137,9 +137,12 @@ class Problem:
     slit_rows: int
     band_rows: int
     mat: Materials
-    gag: dict  # HistoryMaterial's GAG parameters (prescribed Donnan law)
+    gag: materials.Gag  # HistoryMaterial's GAG parameters (prescribed Donnan law)
     critical_stress_kPa: float
     fracture_energy_J_m2: float
+
+    def __post_init__(self):
+        object.__setattr__(self, "gag", materials.Gag.of(self.gag))
 
     @property
     def modulus(self) -> float:
@@ -162,24 +165,25 @@ class Problem:
 def load_at(problem: Problem, pressure: float, transition: float | None = None) -> Load:
     """The load with face pressure ``p``: the concentration whose Pi (eqs. 2.25-2.26) is ``p``, and the far field."""
     g = problem.gag
-    c = materials.concentration_for_pressure(pressure, g["bath_concentration_mEq_l"], g["temperature_K"])
+    c = materials.concentration_for_pressure(pressure, g.bath_concentration_mEq_l, g.temperature_K)
     values = dict(concentration=float(c), face_pressure=float(pressure))
     if transition is not None:
         values["transition"] = float(transition)
     return Load(1.0, 0.0).with_material(**values)
 
 
-def crack_model(problem: Problem, numerics: dict, name: str = "crack") -> tuple[Model, HistoryMaterial]:
+def crack_model(problem: Problem, numerics: Numerics, name: str = "crack") -> tuple[Model, HistoryMaterial]:
     """The block with its slit (seeded GAG), mirror planes on both axes and the exact far field on its outer layer."""
+    numerics = Numerics.of(numerics)
     lay = slit_layout(problem.a, problem.dx, problem.size_factor * problem.a, problem.slit_rows, problem.band_rows)
-    nb = kernel.build_neighbours(lay.X, lay.volume, numerics["kernel_support_factor"] * lay.dx, mirrors=(1, 2))
+    nb = kernel.build_neighbours(lay.X, lay.volume, numerics.kernel_support_factor * lay.dx, mirrors=(1, 2))
     table = materials.empty_props(lay.n)
     table[:, materials.MU], table[:, materials.LAM] = problem.mat.mu, problem.mat.lam
     table[:, materials.HG_E] = problem.mat.hourglass_modulus
     table.setflags(write=False)
     material = HistoryMaterial(lambda load: table.copy(), ParticleHistory.intact(lay.n).seed([lay.slit]), problem.gag)
     boundary = ExactBoundary(lay, problem.mat, pressure="face_pressure")
-    model = Model(name, lay, nb, material, numerics["hourglass_alpha"], boundary=boundary)
+    model = Model(name, lay, nb, material, numerics.hourglass_alpha, boundary=boundary)
     return model, material
 
 
@@ -208,13 +212,14 @@ class Growth:
     history: ParticleHistory  # at the end
 
 
-def grow(problem: Problem, numerics: dict, levels, growth_cells: int, log=None, name="crack") -> Growth:
+def grow(problem: Problem, numerics: Numerics, levels, growth_cells: int, log=None, name="crack") -> Growth:
     """Raise the face pressure through ``levels`` [kPa], with damage passes at each, until the crack has grown by
     ``growth_cells`` cells or the band is used up (module docstring)."""
+    numerics = Numerics.of(numerics)
     model, material = crack_model(problem, numerics, name)
     lay: SlitLayout = model.layout
     law, h = problem.law, lay.band_width
-    opts = dict(run=name, **protocols.solver_options(numerics))
+    opts = dict(run=name, **numerics.solver_options())
     state = solver.State(load_at(problem, 0.0), lay.X.copy(), None, None)
     dmg = damage.DamageState.intact(lay.n)
     passes, dissipated = [], 0.0
@@ -290,13 +295,13 @@ def energy_per_area(growth: Growth) -> float:
     return 2.0 * float(np.polyfit(P[:, 1], P[:, 2], 1)[0]) / fracture.J_M2
 
 
-def study(half_length: float, vc: dict, matrix: dict, gag: dict, numerics: dict, log=None) -> pd.DataFrame:
+def study(half_length: float, vc: dict, matrix: dict, gag: dict, numerics: Numerics, log=None) -> pd.DataFrame:
     """Rows of ``pressurised_crack.csv`` for one crack half-length at every spacing of ``vc['dx_um']``.
 
     ``vc``: the ``verification.crack`` configuration; ``matrix`` and ``gag`` as :func:`sphgag.studies.inclusion.study`.
     """
     mat = Materials.of(matrix, gag)
-    gag_law = dict(
+    gag_law = materials.Gag(
         charge_law="prescribed",
         bath_concentration_mEq_l=gag["bath_concentration_mEq_l"],
         temperature_K=gag["temperature_K"],

@@ -63,6 +63,7 @@ from ..engine.geometry import Sector
 from ..engine.history import DAMAGED, HistoryMaterial, ParticleHistory
 from ..engine.loading import MMHG_TO_KPA, Load
 from ..engine.model import Model
+from ..engine.numerics import Numerics
 from ..physics import damage, fracture, materials
 from ..records import state as state_io
 from . import artery, protocols
@@ -360,7 +361,7 @@ class GrowthRun:
     model: Model
     front: Front
     settings: Settings
-    opts: dict  # solver options and the run name (protocols.solver_options)
+    opts: dict  # solver options and the run name (Numerics.solver_options)
     material: HistoryMaterial
     state: solver.State
     step: int = 0  # pseudo-time: damage passes so far
@@ -389,7 +390,8 @@ class GrowthRun:
     def seed(cls, model, start, sectors, settings, numerics, gag, base, run=None, snapshot_steps=()) -> GrowthRun:
         """Convert the medial particles of ``sectors`` to GAG pools at c = 0 in the converged pressurised state
         ``start`` (``settings.conversion_steps`` converged increments of the seeding path)."""
-        opts = dict(run=run or model.name, **protocols.solver_options(numerics))
+        numerics = Numerics.of(numerics)
+        opts = dict(run=run or model.name, **numerics.solver_options())
         material = artery.seeding(base, model.layout, sectors, gag)
         model.set_props(material)
         base_load = protocols.swelling_load(start.load, 0.0, 0.0)
@@ -418,8 +420,9 @@ class GrowthRun:
     @classmethod
     def resume(cls, model, snapshot, sectors, settings, numerics, gag, base, run=None, snapshot_steps=()) -> GrowthRun:
         """Continue from ``snapshot = (state, history, pseudo_time)`` of this run (:func:`load_snapshot`)."""
+        numerics = Numerics.of(numerics)
         state, hist, step = snapshot
-        opts = dict(run=run or model.name, **protocols.solver_options(numerics))
+        opts = dict(run=run or model.name, **numerics.solver_options())
         material = HistoryMaterial(base, hist, gag)
         model.set_props(material)
         log.info(
@@ -686,7 +689,7 @@ def grow(
     start: solver.State,
     sectors: list[Sector],
     settings: Settings,
-    numerics: dict,
+    numerics: Numerics,
     gag: dict,
     base,
     snapshot_steps=(),
@@ -758,12 +761,13 @@ def griffith(sectors: list[Sector], fracture_energy_J_m2: float, modulus: float,
     gc = fracture_energy_J_m2 * fracture.J_M2
     a = max(0.5 * np.deg2rad(s.angular_extent_deg) * s.centre_radius for s in sectors)
     p_c = fracture.griffith_pressure(a, gc, modulus)
-    pi = materials.swelling_pressure(concentration, gag["bath_concentration_mEq_l"], gag["temperature_K"])
+    gag = materials.Gag.of(gag)
+    pi = materials.swelling_pressure(concentration, gag.bath_concentration_mEq_l, gag.temperature_K)
     return dict(
         griffith_pool_half_length_um=float(a),
         griffith_pressure_kPa=float(p_c),
         griffith_concentration_mEq_l=float(
-            materials.concentration_for_pressure(p_c, gag["bath_concentration_mEq_l"], gag["temperature_K"])
+            materials.concentration_for_pressure(p_c, gag.bath_concentration_mEq_l, gag.temperature_K)
         ),
         griffith_half_length_um=float(fracture.griffith_half_length(pi, gc, modulus)),
     )
@@ -772,7 +776,7 @@ def griffith(sectors: list[Sector], fracture_energy_J_m2: float, modulus: float,
 def convergence_study(
     dx: float,
     bilayer: dict,
-    numerics: dict,
+    numerics: Numerics,
     homeostasis: dict,
     de: dict,
     gag: dict,

@@ -45,8 +45,8 @@ import pandas as pd
 from ..engine import kernel, measure, solver
 from ..engine.loading import Load
 from ..engine.model import Model
+from ..engine.numerics import Numerics
 from ..physics import inglis, materials
-from . import protocols
 
 
 @dataclass(frozen=True)
@@ -216,22 +216,27 @@ class ExactBoundary:
         return self.idx, self.X + load.material_value(self.pressure, 0.0) * self.u
 
 
-def inclusion_model(a, b, dx, extent, mat: Materials, numerics: dict, name: str = "inclusion") -> Model:
+def inclusion_model(a, b, dx, extent, mat: Materials, numerics: Numerics, name: str = "inclusion") -> Model:
     """The block with its inclusion, mirror planes on both axes and the exact far field on the outer ring."""
+    numerics = Numerics.of(numerics)
     lay = ellipse_layout(a, b, dx, extent)
-    nb = kernel.build_neighbours(lay.X, lay.volume, numerics["kernel_support_factor"] * dx, mirrors=(1, 2))
+    nb = kernel.build_neighbours(lay.X, lay.volume, numerics.kernel_support_factor * dx, mirrors=(1, 2))
     return Model(
-        name, lay, nb, InclusionMaterial(lay, mat), numerics["hourglass_alpha"], boundary=ExactBoundary(lay, mat)
+        name,
+        lay,
+        nb,
+        InclusionMaterial(lay, mat),
+        numerics.hourglass_alpha,
+        boundary=ExactBoundary(lay, mat),
     )
 
 
-def swell(model: Model, pressure_kPa: float, numerics: dict) -> solver.State:
+def swell(model: Model, pressure_kPa: float, numerics: Numerics) -> solver.State:
     """The converged state with the inclusion at swelling pressure ``pressure_kPa`` (one load step from rest)."""
+    numerics = Numerics.of(numerics)
     load = Load(1.0, 0.0, material=(("swelling_pressure", float(pressure_kPa)),))
     rest = Load(1.0, 0.0, material=(("swelling_pressure", 0.0),))
-    return solver.follow_path(
-        model, model.layout.X, rest, [load], run=model.name, **protocols.solver_options(numerics)
-    )[-1]
+    return solver.follow_path(model, model.layout.X, rest, [load], run=model.name, **numerics.solver_options())[-1]
 
 
 def normal_stress(lay: EllipseLayout, ev) -> tuple[np.ndarray, np.ndarray]:
@@ -346,7 +351,7 @@ def ring_profile(model: Model, state: solver.State, pressure_kPa: float, mat: Ma
     return pd.DataFrame(rows)
 
 
-def study(aspect_ratio: float, vp: dict, matrix: dict, gag: dict, numerics: dict, log=None):
+def study(aspect_ratio: float, vp: dict, matrix: dict, gag: dict, numerics: Numerics, log=None):
     """The verification of issue 7 for one aspect ratio ``a/b`` at every resolution of ``vp['resolutions']``.
 
     ``vp``: the ``verification.pool`` configuration; ``matrix``: shear modulus,

@@ -22,19 +22,11 @@ import pandas as pd
 from ..engine import measure, pool_volume, solver
 from ..engine.loading import MMHG_TO_KPA, Load
 from ..engine.model import Model
+from ..engine.numerics import Numerics
 from ..physics import analytic
-from ..physics.materials import swelling_pressure
+from ..physics.materials import Gag, swelling_pressure
 
 log = logging.getLogger("sphgag")
-
-
-def solver_options(numerics: dict) -> dict:
-    return dict(
-        tol=numerics["tolerance"],
-        max_iter=numerics["max_newton_iterations"],
-        max_bisections=numerics["max_bisections"],
-        reuse=numerics["reuse_factorisation"],
-    )
 
 
 def pressure_points(calibration: dict) -> np.ndarray:
@@ -151,13 +143,14 @@ def exact_curve(tube: analytic.ThickWallTube, pressures_mmHg, R_ref: float, H_re
 
 
 def mean_pressure_diameter(
-    model: Model, tube: analytic.ThickWallTube, p: dict, numerics: dict, calibration: dict, label: str = "mean"
+    model: Model, tube: analytic.ThickWallTube, p: dict, numerics: Numerics, calibration: dict, label: str = "mean"
 ) -> PressureDiameter:
     """Figure 2a on the mean-behaviour model, compared with the exact tube ``tube``.
 
     ``label`` is the ``model`` column of the transmural table. The mean
     circumferential stretch is normalised by the unloaded geometry (eq. 2.17).
     """
+    numerics = Numerics.of(numerics)
     run = model.name
     lz = p["axial_stretch"]
     R_in, H = p["inner_radius_um"], p["outer_radius_um"] - p["inner_radius_um"]
@@ -176,7 +169,13 @@ def mean_pressure_diameter(
         pressures.max(),
     )
     states = solver.follow_path(
-        model, model.layout.X, Load(1.0, 0.0), loads, run=run, on_state=log_state(run), **solver_options(numerics)
+        model,
+        model.layout.X,
+        Load(1.0, 0.0),
+        loads,
+        run=run,
+        on_state=log_state(run),
+        **numerics.solver_options(),
     )
     final = [s for s in states if s.load.axial_stretch == lz]
     wanted = set(np.round(calibration["transmural_pressures_mmHg"], 10))
@@ -210,7 +209,7 @@ class Homeostasis:
 
 
 def homeostasis(
-    model: Model, numerics: dict, homeo: dict, x0=None, start: Load | None = None, activation: float = 0.0
+    model: Model, numerics: Numerics, homeo: dict, x0=None, start: Load | None = None, activation: float = 0.0
 ) -> Homeostasis:
     """Figure 2b: ramp every deposition pre-stretch from 1 to its value, inner radius held.
 
@@ -220,6 +219,7 @@ def homeostasis(
     ``activation > 0`` the active tone is ramped afterwards, still at the held
     radius (``x0``/``start`` then give the passive homeostatic state).
     """
+    numerics = Numerics.of(numerics)
     run = model.name
     R0 = model.layout.inner_radius
     steps = homeo["prestretch_steps"]
@@ -238,7 +238,7 @@ def homeostasis(
         steps,
         R0,
     )
-    state = solver.follow_path(model, x0, start, loads, run=run, on_state=log_state(run), **solver_options(numerics))[
+    state = solver.follow_path(model, x0, start, loads, run=run, on_state=log_state(run), **numerics.solver_options())[
         -1
     ]
     profile = measure.ring_profile(model, state.evaluation)
@@ -252,12 +252,13 @@ def homeostasis(
 
 
 def pressurise(
-    model: Model, homeostatic: solver.State, pressure_mmHg: float, numerics: dict, on_state=None
+    model: Model, homeostatic: solver.State, pressure_mmHg: float, numerics: Numerics, on_state=None
 ) -> solver.State:
     """The homeostatic state (held radius) moved to ``pressure_mmHg`` under pressure control: first the same
     equilibrium under pressure control at the carried pressure P_h, then the pressure. Every pressurised state of the
     pipeline takes this path (:func:`bilayer_pressure_diameter`, the resolution studies, the sensitivity samples), so
     that the same pressure gives the same state to the bit."""
+    numerics = Numerics.of(numerics)
     P_h = measure.carried_pressure(model, homeostatic.evaluation)
     material = homeostatic.load.material
     here = Load(1.0, P_h, material=material)
@@ -268,7 +269,7 @@ def pressurise(
         [here, Load(1.0, pressure_mmHg * MMHG_TO_KPA, material=material)],
         run=model.name,
         on_state=on_state,
-        **solver_options(numerics),
+        **numerics.solver_options(),
     )[-1]
 
 
@@ -276,7 +277,7 @@ def bilayer_pressure_diameter(
     model: Model,
     tube: analytic.ThickWallTube,
     homeostatic: solver.State,
-    numerics: dict,
+    numerics: Numerics,
     cal: dict,
     active: bool,
     label: str,
@@ -291,10 +292,11 @@ def bilayer_pressure_diameter(
     geometry, as in figure 3a (that of the semi-analytical tube, so that SPH
     points and exact curve share the normalisation).
     """
+    numerics = Numerics.of(numerics)
     run = model.name
     P_h = measure.carried_pressure(model, homeostatic.evaluation)
     P_act = cal["activation_pressure_mmHg"]
-    opts = dict(run=run, on_state=log_state(run), **solver_options(numerics))
+    opts = dict(run=run, on_state=log_state(run), **numerics.solver_options())
     activation = []
     if active:
         steps = cal["activation_steps"]
@@ -446,7 +448,7 @@ def concentration_steps(sw: dict) -> np.ndarray:
     return np.linspace(0.0, sw["max_concentration_mEq_l"], sw["concentration_points"])[1:]
 
 
-def swell_pool(model: Model, start: solver.State, numerics: dict, sw: dict) -> list[PoolState]:
+def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) -> list[PoolState]:
     """Figure 4 protocol for one pool, from a converged pressurised state (lumen pressure held).
 
     1. ``intact``: the wall before conversion (the filled markers of figure 4);
@@ -466,8 +468,9 @@ def swell_pool(model: Model, start: solver.State, numerics: dict, sw: dict) -> l
     limit point there, the discretisation fails; the reason is recorded). No state beyond the last equilibrium is
     returned.
     """
+    numerics = Numerics.of(numerics)
     run = model.name
-    opts = dict(run=run, on_state=log_state(run), **solver_options(numerics))
+    opts = dict(run=run, on_state=log_state(run), **numerics.solver_options())
     base = swelling_load(start.load, 0.0, 0.0)
     intact = solver.follow_path(model, start.x, base, [base], **opts)[-1]
     steps = sw["conversion_steps"]
@@ -501,9 +504,10 @@ def swell_pool(model: Model, start: solver.State, numerics: dict, sw: dict) -> l
     return states
 
 
-def pool_table(model: Model, states: list[PoolState], pool, probe_length: float, gag: dict) -> pd.DataFrame:
+def pool_table(model: Model, states: list[PoolState], pool, probe_length: float, gag: Gag | dict) -> pd.DataFrame:
     """One row per state of :func:`swell_pool`: the Donnan swelling pressure (eq. 2.26), the carried lumen pressure
     and the stresses around the pool (:func:`pool_measurements`), with the residual of the state."""
+    gag = Gag.of(gag)
     members = model.props.converting  # the seeded pool (history.HistoryMaterial)
     rows = []
     for st in states:
@@ -512,7 +516,7 @@ def pool_table(model: Model, states: list[PoolState], pool, probe_length: float,
             stage=st.stage,
             concentration_mEq_l=st.concentration,
             swelling_pressure_kPa=float(
-                swelling_pressure(st.concentration, gag["bath_concentration_mEq_l"], gag["temperature_K"])
+                swelling_pressure(st.concentration, gag.bath_concentration_mEq_l, gag.temperature_K)
             ),
             pressure_mmHg=measure.carried_pressure(model, ev) / MMHG_TO_KPA,
         )

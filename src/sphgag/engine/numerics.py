@@ -1,0 +1,33 @@
+"""The numerical settings of a run (the ``numerics`` configuration section): the discretisation and the solver."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..options import Options
+
+
+@dataclass(frozen=True)
+class Numerics(Options):
+    """``kernel_support_factor``: the kernel's support radius over the particle spacing (eq. 2.5);
+    ``hourglass_alpha``: the hourglass penalty's alpha (eq. 2.14); ``tolerance``: the relative residual of a
+    converged state; ``max_newton_iterations`` and ``max_bisections``: Newton's method per load step and the halvings
+    of a step; ``reuse_factorisation``: chord steps with the last factorisation before refactorising."""
+
+    SECTION = "numerics"
+
+    kernel_support_factor: float
+    hourglass_alpha: float
+    tolerance: float
+    max_newton_iterations: int
+    max_bisections: int
+    reuse_factorisation: bool
+
+    def solver_options(self) -> dict:
+        """The options of the quasi-static solver (:func:`sphgag.engine.solver.follow_path`)."""
+        return dict(
+            tol=self.tolerance,
+            max_iter=self.max_newton_iterations,
+            max_bisections=self.max_bisections,
+            reuse=self.reuse_factorisation,
+        )

@@ -1,0 +1,55 @@
+"""Typed options: sections of the validated configuration as small frozen dataclasses.
+
+The package is entered with typed options: :class:`sphgag.engine.numerics.Numerics`,
+:class:`sphgag.physics.materials.Gag`, :class:`sphgag.studies.artery.Bilayer` and
+:class:`sphgag.studies.delamination.Settings`. The pipeline keeps plain dicts where rerun detection and provenance
+read them (Snakemake ``params``, the parameters a state file records); the package builds its options from them with
+``of``, at the functions it is entered by. A key the options do not know, or one they miss, raises naming it.
+"""
+
+from __future__ import annotations
+
+import typing
+from collections.abc import Mapping
+from dataclasses import MISSING, fields
+from types import MappingProxyType
+
+
+def _frozen(value):
+    """Lists as tuples and mappings as read-only mappings, all the way down."""
+    if isinstance(value, Mapping):
+        return MappingProxyType({k: _frozen(v) for k, v in value.items()})
+    if isinstance(value, list | tuple):
+        return tuple(_frozen(v) for v in value)
+    return value
+
+
+class Options:
+    """Base of the typed options (frozen dataclasses): :meth:`of` builds one from a configuration section."""
+
+    SECTION: typing.ClassVar[str] = ""
+
+    @classmethod
+    def of(cls, value):
+        """``value`` as options of this class: itself, or built from a mapping (:meth:`from_mapping`)."""
+        return value if isinstance(value, cls) else cls.from_mapping(value, cls.SECTION)
+
+    @classmethod
+    def from_mapping(cls, mapping, where: str):
+        """The options of the mapping ``mapping`` (named ``where`` in errors): every field's key and no other; a field
+        whose type is itself :class:`Options` is built from its sub-mapping."""
+        if not isinstance(mapping, Mapping):
+            raise TypeError(f"{where}: expected a mapping of {cls.__name__}'s keys, got {type(mapping).__name__}")
+        required = {f.name for f in fields(cls) if f.default is MISSING and f.default_factory is MISSING}
+        known = {f.name for f in fields(cls)}
+        unknown, missing = sorted(set(mapping) - known), sorted(required - set(mapping))
+        if unknown or missing:
+            problems = [f"unknown key {where}.{k}" for k in unknown] + [f"missing key {where}.{k}" for k in missing]
+            raise ValueError(f"{cls.__name__}: {'; '.join(problems)}")
+        hints = typing.get_type_hints(cls)
+        values = {}
+        for name, value in mapping.items():
+            kind = hints[name]
+            nested = isinstance(kind, type) and issubclass(kind, Options)
+            values[name] = kind.from_mapping(value, f"{where}.{name}") if nested else _frozen(value)
+        return cls(**values)

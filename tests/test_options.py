@@ -1,0 +1,46 @@
+"""Typed options: the configuration's sections as frozen dataclasses, built from the plain dicts the pipeline keeps."""
+
+import dataclasses
+
+import pytest
+
+from sphgag.engine.numerics import Numerics
+from sphgag.physics.materials import Gag, law_gag
+from sphgag.studies.artery import Bilayer, FibreConstants
+
+
+def test_numerics_from_the_configuration(ci_config):
+    n = Numerics.of(ci_config["numerics"])
+    assert n.tolerance == ci_config["numerics"]["tolerance"] and Numerics.of(n) is n
+    assert n.solver_options()["tol"] == n.tolerance
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        n.tolerance = 1.0
+
+
+def test_a_misspelt_or_missing_key_raises_naming_it(ci_config):
+    bad = dict(ci_config["numerics"], tolerence=1e-4)
+    del bad["tolerance"]
+    with pytest.raises(ValueError, match=r"unknown key numerics\.tolerence; missing key numerics\.tolerance"):
+        Numerics.of(bad)
+    bilayer = dict(ci_config["bilayer"], collagen=dict(ci_config["bilayer"]["collagen"], c1_kpa=1.0))
+    with pytest.raises(ValueError, match=r"unknown key bilayer\.collagen\.c1_kpa"):
+        Bilayer.of(bilayer)
+
+
+def test_the_bilayer_is_typed_all_the_way_down(ci_config):
+    b = Bilayer.of(ci_config["bilayer"])
+    assert isinstance(b.collagen, FibreConstants) and b.smc.angle_deg == 0.0
+    assert b.prestretch.collagen == ci_config["bilayer"]["prestretch"]["collagen"]
+    assert b.aligned_radii_um == tuple(ci_config["bilayer"]["aligned_radii_um"])
+    assert b.mass_fractions["media"]["elastin"] == ci_config["bilayer"]["mass_fractions"]["media"]["elastin"]
+    with pytest.raises(TypeError):
+        b.mass_fractions["media"]["elastin"] = 0.0  # read-only
+
+
+def test_the_gag_of_one_run_has_one_charge_law(ci_config):
+    g = Gag.of(law_gag(ci_config["gag"], "conserved"))
+    assert g.charge_law == "conserved" and g.temperature_K == ci_config["gag"]["temperature_K"]
+    with pytest.raises(ValueError, match="charge_law = 'literal'"):
+        Gag.of(dict(law_gag(ci_config["gag"], "conserved"), charge_law="literal"))
+    with pytest.raises(ValueError, match=r"unknown key gag\.charge_laws"):
+        Gag.of(ci_config["gag"])  # the configuration's section lists the laws: a run has one
