@@ -44,3 +44,33 @@ def test_a_new_module_in_a_new_subpackage_changes_the_source_hash(package_copy):
         assert _source_hash(package_copy) != before
     finally:
         shutil.rmtree(extra.parent)
+
+
+LAYERS = ["physics", "engine", "records", "studies", "views"]  # each imports only the layers before it
+
+
+def _imports(path):
+    """The subpackages of sphgag a module imports (relative imports resolved)."""
+    import ast
+
+    rel = path.relative_to(PACKAGE).parts
+    out = set()
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.ImportFrom):
+            if node.level:  # relative: resolve against the module's package
+                base = list(rel[:-1])[: len(rel) - node.level]
+                parts = base + (node.module.split(".") if node.module else [])
+                names = [parts + [a.name] for a in node.names] if not node.module else [parts]
+            elif (node.module or "").startswith("sphgag"):
+                names = [node.module.split(".")[1:]]
+            else:
+                continue
+            out |= {n[0] for n in names if n and n[0] in LAYERS}
+    return out
+
+
+@pytest.mark.parametrize("module", [m for m in MODULES if m.split("/")[0] in LAYERS])
+def test_a_layer_imports_only_the_layers_before_it(module):
+    layer = module.split("/")[0]
+    allowed = set(LAYERS[: LAYERS.index(layer) + 1])
+    assert _imports(PACKAGE / module) <= allowed, module

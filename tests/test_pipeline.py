@@ -457,6 +457,17 @@ def test_an_edit_of_the_plotting_module_redraws_the_figures_only(workdir, tmp_pa
     assert jobs and all(rule.startswith("fig") or rule.endswith("_figure") or rule == "all" for rule in jobs), jobs
 
 
+def test_an_edit_of_a_module_in_a_subpackage_reruns_the_simulations_that_import_it(workdir, tmp_path):
+    """engine/forces.py is imported by every model: its edit reruns every simulation (and what reads them), and
+    the Numba cache is keyed anew (sphgag._source_hash covers the subpackages)."""
+    run = snakemake(edited_copy(workdir, tmp_path, "engine/forces.py"), "-n", "all")
+    jobs = planned_jobs(run.stdout + run.stderr)
+    print("\nengine/forces.py edit reruns:", jobs)
+    simulations = {"calibrate_mean", "homeostasis", "bilayer_pressure_diameter", "swell", "delaminate"}
+    assert simulations <= set(jobs), jobs
+    assert {"paraview_delamination", "animation", "fig5", "claims"} <= set(jobs), jobs
+
+
 def test_a_warm_numba_cache_gives_the_bytes_of_a_cold_one(workdir, numba_cache, tmp_path, ci_config):
     """Same config, same bytes, whatever the state of the Numba cache: the CI run compiled every kernel itself
     (cold cache); these jobs, rerun in a copy of it, load them all from that cache (warm)."""

@@ -17,10 +17,11 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.animation import FuncAnimation, PillowWriter  # noqa: E402
+from scipy.spatial import cKDTree  # noqa: E402
 
 from ..engine.history import DAMAGED, SEEDED  # noqa: E402
 
-ORIGIN_COLOURS = {SEEDED: "#1f4e9c", DAMAGED: "#e6550d"}
+ORIGIN_COLOURS = {SEEDED: "#222222", DAMAGED: "#1b9e77"}  # off the stress colour map: black and green
 MARGIN_UM = 40.0  # the view: the GAG particles of the last frame and this margin around them
 FRAME_SECONDS = 0.6
 
@@ -44,16 +45,26 @@ def stress_range(frames, box) -> float:
     return peak or 1.0
 
 
+def spacing(frame) -> float:
+    """The particle spacing [um]: the median distance of a particle to its nearest neighbour in the reference."""
+    X = frame.data["reference_position"][:, :2]
+    return float(np.median(cKDTree(X).query(X, k=2)[0][:, 1]))
+
+
 def write(path, frames, title: str) -> Path:
     """The frames of a run (:class:`sphgag.views.paraview.Frame`) as an animated GIF at ``path``."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     box = view(frames)
     vmax = stress_range(frames, box)
-    fig, ax = plt.subplots(figsize=(5.0, 4.2), dpi=100)
-    fig.subplots_adjust(left=0.14, right=0.86, bottom=0.12, top=0.86)
-    cax = fig.add_axes([0.88, 0.12, 0.025, 0.74])
-    size = 2.0e4 / max(box[1] - box[0], box[3] - box[2])  # particles about as large as their spacing
+    fig, ax = plt.subplots(figsize=(5.4, 4.4), dpi=100)
+    fig.subplots_adjust(left=0.14, right=0.78, bottom=0.11, top=0.86)
+    cax = fig.add_axes([0.82, 0.11, 0.025, 0.75])
+    ax.set(xlim=box[:2], ylim=box[2:], aspect="equal")
+    fig.canvas.draw()
+    # a marker as wide as 80 % of the particle spacing, in points (72 per inch) at the axes' drawn scale
+    width_in = ax.get_window_extent().width / fig.dpi
+    size = (0.8 * spacing(frames[0]) * 72.0 * width_in / (box[1] - box[0])) ** 2
 
     def draw(k):
         ax.clear()
@@ -67,7 +78,7 @@ def write(path, frames, title: str) -> Path:
             ax.scatter(*f.x[members].T, color=colour, s=size, lw=0)
         ax.set(xlim=box[:2], ylim=box[2:], aspect="equal", xlabel="x [um]", ylabel="y [um]")
         c = float(f.data["concentration_mEq_l"].max())
-        ax.set_title(f"{title}\nc = {c:g} mEq/l, pass {f.time:g}   (blue: seeded GAG, orange: ruptured)", fontsize=8)
+        ax.set_title(f"{title}\nc = {c:g} mEq/l, pass {f.time:g}   (black: seeded GAG, green: ruptured)", fontsize=8)
         if k == 0:
             fig.colorbar(scatter, cax=cax, label="radial Cauchy stress [kPa]")
         return []
