@@ -340,6 +340,31 @@ def test_outputs_follow_the_data_contracts(workdir, ci_config):
         assert (workdir / fig).stat().st_size > 5000
 
 
+def test_every_run_has_its_paraview_series_and_every_delamination_run_its_animation(workdir):
+    """The series read back as the saved states (positions, history) and the animation has a frame per state."""
+    from PIL import Image
+
+    from sphgag.records import state
+    from sphgag.views import paraview
+
+    runs = sorted((workdir / "results/delamination/runs").glob("*/*_snapshots.npz"))
+    runs += sorted((workdir / "results/swelling/states").glob("*/*.npz"))
+    assert len(runs) > 10
+    for path in runs:
+        kind = "delamination" if path.name.endswith("_snapshots.npz") else "swelling"
+        law, run = path.parent.name, path.name.removesuffix("_snapshots.npz").removesuffix(".npz")
+        series = paraview.read_series(workdir / f"results/paraview/{kind}/{law}/{run}/{run}.pvd")
+        saved = state.load_series(path)
+        assert len(series) == len(saved), path
+        for frame, s in zip(series, saved):
+            np.testing.assert_array_equal(frame.x, s.x)
+            if s.history is not None:
+                np.testing.assert_array_equal(frame.data["damage"], s.history.D)
+        if kind == "delamination":
+            with Image.open(workdir / f"figures/animations/{law}/{run}.gif") as gif:
+                assert gif.n_frames == len(series), run
+
+
 def test_logs_show_progress_and_the_verification_numbers(workdir):
     log = (workdir / "logs/calibrate_mean.log").read_text()
     assert log.count("converged at") >= 5
@@ -376,6 +401,8 @@ def test_the_report_holds_every_figure_and_the_claims_table_first(workdir):
             assert z.read(f"report/{entry['data_uri']}") == (workdir / path).read_bytes(), path
             assert len(entry["caption"]) > 300 and "system-message" not in entry["caption"], path
         assert all(results[path]["mime_type"] == "image/png" for path in pngs)  # shown inline
+        animations = [str(p.relative_to(workdir)) for p in sorted((workdir / "figures/animations").glob("*/*.gif"))]
+        assert animations and set(animations) <= set(results), sorted(set(animations) - set(results))
         # the menu sorts the categories by name (localeCompare; the same order as Python's for these names)
         first = sorted(categories)[0]
         assert [p for paths in categories[first].values() for p in paths] == ["results/claims.csv"], categories

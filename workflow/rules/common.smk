@@ -98,6 +98,10 @@ DE_RUN_NAMES = [DE_NAME.format(law=law, **r) for law in LAWS for r in DE_RUNS] +
 ]
 DE_GROWTH = [f"results/delamination/runs/{name}_growth.csv" for name in DE_RUN_NAMES]
 DE_SUMMARIES = [f"results/delamination/runs/{name}_summary.csv" for name in DE_RUN_NAMES]
+# the run whose dissipation is the fracture-energy runs' "paper" G_c (prescribed law), and every run that keeps
+# snapshots: the runs of the tables and that one, where it is not among them (a reduced configuration's sigma_cr)
+DE_MATCHED = DE_NAME.format(law="prescribed", **DE_FE_RUN)
+DE_SNAPSHOT_NAMES = DE_RUN_NAMES + ([DE_MATCHED] if DE_MATCH and DE_MATCHED not in DE_RUN_NAMES else [])
 # the snapshots of any delamination run (rule delaminate or delaminate_fracture_energy), by its name
 DE_SNAPSHOTS = "results/delamination/runs/{law}/{run}_snapshots.npz"
 

@@ -44,7 +44,7 @@ rule delaminate_fracture_energy:
         code=SPHGAG,
         state=STATE.format(model="passive", pressure=DE_PRESSURE),
         matched=lambda wildcards: (
-            f"{DE_RUN}_summary.csv".format(law="prescribed", **DE_FE_RUN) if wildcards.gc == "paper" else []
+            f"results/delamination/runs/{DE_MATCHED}_summary.csv" if wildcards.gc == "paper" else []
         ),
     output:
         growth=f"{DE_FE_PATH}_growth.csv",

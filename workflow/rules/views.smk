@@ -65,6 +65,6 @@ rule animation:
 
 VIEWS = (
     expand(rules.paraview_swelling.output.series, law=LAWS, model=SW["models"], case=CASES, pressure=SWELL_PRESSURES)
-    + expand(rules.paraview_delamination.output.series, zip, **law_and_run(DE_RUN_NAMES))
-    + expand(rules.animation.output, zip, **law_and_run(DE_RUN_NAMES))
+    + expand(rules.paraview_delamination.output.series, zip, **law_and_run(DE_SNAPSHOT_NAMES))
+    + expand(rules.animation.output, zip, **law_and_run(DE_SNAPSHOT_NAMES))
 )
