@@ -484,6 +484,12 @@ def test_an_edit_of_the_plotting_module_redraws_the_figures_only(workdir, tmp_pa
     assert jobs and all(rule.startswith("fig") or rule.endswith("_figure") or rule == "all" for rule in jobs), jobs
 
 
+def test_an_edit_of_the_paraview_module_rewrites_the_series_and_animations_only(workdir, tmp_path):
+    run = snakemake(edited_copy(workdir, tmp_path, "views/paraview.py"), "-n", "all")
+    jobs = planned_jobs(run.stdout + run.stderr)
+    assert set(jobs) == {"paraview_swelling", "paraview_delamination", "animation", "all"}, jobs
+
+
 def test_an_edit_of_a_module_in_a_subpackage_reruns_the_simulations_that_import_it(workdir, tmp_path):
     """engine/forces.py is imported by every model: its edit reruns every simulation (and what reads them), and
     the Numba cache is keyed anew (sphgag._source_hash covers the subpackages)."""

@@ -13,10 +13,13 @@ GAG = {law: canonical(law_gag(config["gag"], law)) for law in LAWS}
 
 # Snakemake tracks a rule's script, not the modules it imports: every simulation
 # rule depends on the package's physics sources, so a physics edit reruns what it
-# affects; figure, claims and sensitivity-index rules depend on their own modules only; the modules that
+# affects; figure, claims, sensitivity-index and view (ParaView, animation) rules depend on their own modules only (a
+# series depends on the physics it recomputes the stresses with, too); the modules that
 # compute no number (validation, logging, provenance records) are inputs of nothing.
 PRESENTATION = {
     "views/plots.py",
+    "views/paraview.py",
+    "views/animation.py",
     "studies/claims.py",
     "studies/sensitivity.py",
     "config.py",

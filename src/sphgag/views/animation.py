@@ -78,7 +78,8 @@ def write(path, frames, title: str) -> Path:
             ax.scatter(*f.x[members].T, color=colour, s=size, lw=0)
         ax.set(xlim=box[:2], ylim=box[2:], aspect="equal", xlabel="x [um]", ylabel="y [um]")
         c = float(f.data["concentration_mEq_l"].max())
-        ax.set_title(f"{title}\nc = {c:g} mEq/l, pass {f.time:g}   (black: seeded GAG, green: ruptured)", fontsize=8)
+        step = f.data["pseudo_time"][0]
+        ax.set_title(f"{title}\nc = {c:g} mEq/l, pass {step:g}   (black: seeded GAG, green: ruptured)", fontsize=8)
         if k == 0:
             fig.colorbar(scatter, cax=cax, label="radial Cauchy stress [kPa]")
         return []

@@ -12,10 +12,11 @@ each state (:func:`fields`):
 * ``layer``: the index of the particle's layer (0 media, 1 adventitia: ``Layout.layer_names``);
 * ``origin``: 0 tissue, 1 seeded pool, 2 ruptured tissue that became GAG (section 2.7);
 * ``pool``: the index of the GAG pool a particle belongs to, -1 for tissue;
-* ``concentration_mEq_l``: the fixed-charge concentration c of the GAG particles (eqs. 2.25-2.27), 0 for tissue.
+* ``concentration_mEq_l``: the fixed-charge concentration c of the GAG particles (eqs. 2.25-2.27), 0 for tissue;
+* ``pseudo_time`` (delamination runs): the damage pass of the snapshot (section 2.7), the same at every particle.
 
-The ``.pvd`` file's ``timestep`` is the delamination runs' pseudo-time (the damage passes, section 2.7) or the state's
-index along a swelling run; the concentration of each state is its point data.
+The ``.pvd`` file's ``timestep`` is the state's index along the run (ParaView's time slider needs distinct times:
+the snapshots of the concentration levels before onset share pseudo-time 0).
 """
 
 from __future__ import annotations
@@ -50,7 +51,8 @@ FIELDS = (
 
 @dataclass(frozen=True)
 class Frame:
-    """One state of a series: its time in the ``.pvd`` file, the current positions ``x`` (n, 2) and its point data."""
+    """One state of a series: its index along the run (the ``.pvd`` file's time), the current positions ``x`` (n, 2)
+    and its point data."""
 
     time: float
     x: np.ndarray
@@ -91,11 +93,11 @@ def delamination_frames(wall: Model, snapshots_path, gag: dict, expected_params:
     model = wall
     base = model.props
     frames = []
-    for saved in state_io.load_series(snapshots_path, expected_params):
+    for k, saved in enumerate(state_io.load_series(snapshots_path, expected_params)):
         model.set_props(HistoryMaterial(base, saved.history, gag))
-        frames.append(
-            Frame(float(saved.info["pseudo_time"]), saved.x, fields(model, saved.x, saved.load, saved.history))
-        )
+        data = fields(model, saved.x, saved.load, saved.history)
+        data["pseudo_time"] = np.full(len(saved.x), float(saved.info["pseudo_time"]))
+        frames.append(Frame(float(k), saved.x, data))
     model.set_props(base)
     return frames
 
