@@ -212,7 +212,7 @@ DE_SIGMA = f"{DE['critical_stress_kPa']:g}"
 # the figure scripts zip them with)
 DE_FIGURE_SNAPSHOTS = {
     figure: [
-        f"{DE_RUN}_snapshots.npz".format(law=law, poolset=case, sigma=sigma, criterion=criterion)
+        rules.delaminate.output.snapshots.format(law=law, poolset=case, sigma=sigma, criterion=criterion)
         for law in LAWS
         for case in poolsets
         for criterion in DE["criteria"]
