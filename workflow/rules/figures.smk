@@ -56,8 +56,8 @@ rule fig3:
         mean_states=rules.calibrate_mean.output.states,
         mean_exact=rules.calibrate_mean.output.exact,
         bilayer=rules.bilayer_table.output.table,
-        passive_exact=expand(rules.bilayer_pressure_diameter.output.exact, model="passive"),
-        active_exact=expand(rules.bilayer_pressure_diameter.output.exact, model="active"),
+        passive_exact=rules.bilayer_pressure_diameter.output.exact.format(model="passive"),
+        active_exact=rules.bilayer_pressure_diameter.output.exact.format(model="active"),
         profiles=rules.transmural.output[0],
     output:
         pdf="figures/fig3.pdf",

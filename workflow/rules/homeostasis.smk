@@ -97,8 +97,8 @@ rule transmural:
 rule bilayer_table:
     """Passive and active pressure-diameter in one table, and the outer-diameter reduction by activation."""
     input:
-        passive=expand(rules.bilayer_pressure_diameter.output.table, model="passive"),
-        active=expand(rules.bilayer_pressure_diameter.output.table, model="active"),
+        passive=rules.bilayer_pressure_diameter.output.table.format(model="passive"),
+        active=rules.bilayer_pressure_diameter.output.table.format(model="active"),
     output:
         table="results/calibration/bilayer_pressure_diameter.csv",
         activation="results/calibration/activation_summary.csv",
