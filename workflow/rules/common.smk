@@ -1,6 +1,6 @@
-# The names every rule file shares, included first: the package's modules (the rules' code inputs), the charge laws,
-# the configuration slices that saved states depend on, and the runs of each stage by name. A rule file defines only
-# the names it alone uses.
+# Names shared by the rule files, included first. They are the package's modules (the rules' code inputs), the charge
+# laws, the configuration slices that saved states depend on, and the runs of each stage by name. Every other file
+# defines only the names it alone uses.
 
 from sphgag.physics.materials import law_gag
 from sphgag.studies.onset import CRITERIA
