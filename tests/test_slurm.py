@@ -235,7 +235,7 @@ def runs(slurm, workdir, tmp_path_factory):
         env=slurm,
         capture_output=True,
         text=True,
-        timeout=1800,
+        timeout=2700,  # 195 jobs took 1360 s on two cores (the views added 66 jobs of a few seconds each)
     )
     print(f"\nSlurm run {time.time() - t0:.0f} s")
     assert run_cluster.returncode == 0, run_cluster.stdout[-3000:] + run_cluster.stderr[-5000:]
