@@ -57,10 +57,13 @@ SWELL_PRESSURES = [f"{p:g}" for p in SW["pressures_mmHg"]]
 # what the simulations depend on; probe_length_um only sets where rule pool_stresses measures
 SWELL_SETTINGS = {k: v for k, v in SW.items() if k not in ("cases", "models", "pressures_mmHg", "probe_length_um")}
 # one run per (charge law, model, pool, pressure), each with its own law only
-SWELL_NAMES = expand(
-    "{law}/{model}_{case}_{pressure}mmHg", law=LAWS, model=SW["models"], case=CASES, pressure=SWELL_PRESSURES
+SWELL_RUNS = expand(
+    "results/swelling/runs/{law}/{model}_{case}_{pressure}mmHg.csv",
+    law=LAWS,
+    model=SW["models"],
+    case=CASES,
+    pressure=SWELL_PRESSURES,
 )
-SWELL_RUNS = [f"results/swelling/runs/{name}.csv" for name in SWELL_NAMES]
 
 
 # Delamination (figures 5-7)

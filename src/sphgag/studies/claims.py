@@ -582,11 +582,6 @@ def evaluate(e: Evidence, laws) -> list[Claim]:
     return _found(CALIBRATION, e) + by_law(laws, lambda law: _found(POOL, e.of_law(law)))
 
 
-def calibration_claims(mean, bilayer, activation, homeostasis_layers, transmural) -> list[Claim]:
-    """Claims C1-C5 of figure 3."""
-    return _found(CALIBRATION, Evidence(mean, bilayer, activation, homeostasis_layers, transmural))
-
-
 def swelling_claims(tips: pd.DataFrame, cases: dict, max_concentration: float | None = None) -> list[Claim]:
     """Claims C6-C12 of figure 4 and section 3 from ``tip_stress.csv`` (one charge law); ``cases`` gives each pool's
     angular extent. "The highest concentration" is each run's last converged state (:func:`last_converged`), which

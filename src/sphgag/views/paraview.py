@@ -90,15 +90,14 @@ def delamination_frames(wall: Model, snapshots_path, gag: dict, expected_params:
     """The frames of a delamination run's snapshots (:func:`sphgag.studies.delamination.save_snapshots`), each
     evaluated with its own history on the intact wall's material (as the run grew it): ``wall`` is the run's wall as
     built (:func:`sphgag.studies.artery.bilayer_model`), before any pool."""
-    model = wall
-    base = model.props
+    base = wall.props
     frames = []
     for k, saved in enumerate(state_io.load_series(snapshots_path, expected_params)):
-        model.set_props(HistoryMaterial(base, saved.history, gag))
-        data = fields(model, saved.x, saved.load, saved.history)
+        wall.set_props(HistoryMaterial(base, saved.history, gag))
+        data = fields(wall, saved.x, saved.load, saved.history)
         data["pseudo_time"] = np.full(len(saved.x), float(saved.info["pseudo_time"]))
         frames.append(Frame(float(k), saved.x, data))
-    model.set_props(base)
+    wall.set_props(base)
     return frames
 
 
