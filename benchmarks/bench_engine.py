@@ -21,11 +21,11 @@ import tempfile
 import time
 from pathlib import Path
 
-import numba
 import numpy as np
 import pandas as pd
 import scipy.sparse.linalg as spla
 
+from sphgag import threads
 from sphgag.engine.numerics import Numerics
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -53,7 +53,7 @@ def main():
     ap.add_argument("--config", default=str(ROOT / "config" / "config.yaml"))
     ap.add_argument("--no-rule", action="store_true", help="skip timing the Snakemake rule")
     args = ap.parse_args()
-    numba.set_num_threads(1)
+    threads.use(1)
     cfg = config.validate(config.load_yaml(args.config), ROOT / "config" / "schema.yaml")
     p, numerics = cfg["mean"], cfg["numerics"]
     model = artery.mean_model(p, numerics, name="bench")

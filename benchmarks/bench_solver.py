@@ -32,6 +32,7 @@ from pathlib import Path
 
 import numpy as np
 
+from sphgag import threads
 from sphgag.engine.numerics import Numerics
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -49,7 +50,6 @@ def median_time(fn, repeats):
 
 
 def measure(dx: float, config_path: str) -> dict:
-    import numba
     import scipy.sparse.linalg as spla
 
     from sphgag import config
@@ -60,7 +60,7 @@ def measure(dx: float, config_path: str) -> dict:
     from sphgag.physics import materials
     from sphgag.studies import artery, protocols
 
-    numba.set_num_threads(1)
+    threads.use(1)
     cfg = config.validate(config.load_yaml(config_path), ROOT / "config" / "schema.yaml")
     cfg["gag"] = materials.law_gag(cfg["gag"], "conserved")  # the charge law of the measured states
     p, numerics = dict(cfg["bilayer"], dx_um=dx), cfg["numerics"]

@@ -16,13 +16,12 @@ import sys
 import time
 from pathlib import Path
 
-import numba
 import pandas as pd
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
-from sphgag import config  # noqa: E402
+from sphgag import config, threads  # noqa: E402
 from sphgag.physics import materials  # noqa: E402
 from sphgag.studies import inclusion  # noqa: E402
 
@@ -34,7 +33,7 @@ def main():
     ap.add_argument("--resolutions", type=float, nargs="+", default=[8.0, 16.0])
     ap.add_argument("--alpha", type=float, nargs="+", default=[1.0, 2.0, 5.0, 10.0, 20.0, 50.0])
     args = ap.parse_args()
-    numba.set_num_threads(1)
+    threads.use(1)
     cfg = config.validate(config.load_yaml(args.config), ROOT / "config" / "schema.yaml")
     vp, bil = cfg["verification"]["pool"], cfg["bilayer"]
     mat = inclusion.Materials(

@@ -16,13 +16,12 @@ import sys
 import time
 from pathlib import Path
 
-import numba
 import pandas as pd
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
-from sphgag import config  # noqa: E402
+from sphgag import config, threads  # noqa: E402
 from sphgag.engine import solver  # noqa: E402
 from sphgag.physics import materials  # noqa: E402
 from sphgag.studies import artery, protocols  # noqa: E402
@@ -34,7 +33,7 @@ def main():
     ap.add_argument("--dx", type=float, nargs="+", default=[5.0, 4.0, 3.0])
     ap.add_argument("--cases", nargs="+", default=["I", "IV"])
     args = ap.parse_args()
-    numba.set_num_threads(1)
+    threads.use(1)
     cfg = config.validate(config.load_yaml(args.config), ROOT / "config" / "schema.yaml")
     numerics, sw = cfg["numerics"], cfg["swelling"]
     gag = materials.law_gag(cfg["gag"], "prescribed")

@@ -29,14 +29,13 @@ import json
 import sys
 from pathlib import Path
 
-import numba
 import numpy as np
 import scipy.sparse.linalg as spla
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
-from sphgag import config  # noqa: E402
+from sphgag import config, threads  # noqa: E402
 from sphgag.engine import measure, solver  # noqa: E402
 from sphgag.engine.history import HistoryMaterial  # noqa: E402
 from sphgag.engine.model import Model  # noqa: E402
@@ -84,7 +83,7 @@ def main():
     ap.add_argument("--config", default=str(ROOT / "config" / "config.yaml"))
     ap.add_argument("--dx", type=float, default=4.0)
     args = ap.parse_args()
-    numba.set_num_threads(1)
+    threads.use(1)
     cfg = config.validate(config.load_yaml(args.config), ROOT / "config" / "schema.yaml")
     numerics, de = cfg["numerics"], cfg["delamination"]
     gag = materials.law_gag(cfg["gag"], "prescribed")

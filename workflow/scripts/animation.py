@@ -3,10 +3,12 @@
 
 from pathlib import Path
 
+from sphgag import threads
 from sphgag.records import runlog
 from sphgag.views import animation, paraview
 
 sm = snakemake  # noqa: F821
+threads.use(sm.threads)
 series = Path(sm.input.series)
 run = f"animation_{sm.wildcards.law}_{series.name}"
 with runlog.run(run, sm.log[0]) as log:

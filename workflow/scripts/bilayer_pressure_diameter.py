@@ -2,14 +2,13 @@
 
 import time
 
-import numba
-
+from sphgag import threads
 from sphgag.engine import solver
 from sphgag.records import provenance, runlog, state
 from sphgag.studies import artery, protocols
 
 sm = snakemake  # noqa: F821
-numba.set_num_threads(sm.threads)
+threads.use(sm.threads)
 started = time.time()
 label = sm.wildcards.model
 run = f"bilayer_{label}"

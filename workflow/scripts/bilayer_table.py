@@ -3,9 +3,11 @@
 import numpy as np
 import pandas as pd
 
+from sphgag import threads
 from sphgag.records import runlog
 
 sm = snakemake  # noqa: F821
+threads.use(sm.threads)
 PAPER_REDUCTION = 0.20  # "approximately 20 %" (paper sections 2.5 and 3)
 with runlog.run("bilayer_table", sm.log[0]) as log:
     passive, active = pd.read_csv(sm.input.passive), pd.read_csv(sm.input.active)

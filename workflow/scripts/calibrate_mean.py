@@ -2,13 +2,12 @@
 
 import time
 
-import numba
-
+from sphgag import threads
 from sphgag.records import provenance, runlog
 from sphgag.studies import artery, protocols
 
 sm = snakemake  # noqa: F821 (injected by Snakemake)
-numba.set_num_threads(sm.threads)
+threads.use(sm.threads)
 started = time.time()
 with runlog.run("calibrate_mean", sm.log[0]) as log:
     p, numerics, calibration = dict(sm.params.mean), dict(sm.params.numerics), dict(sm.params.calibration)

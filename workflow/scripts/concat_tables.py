@@ -2,9 +2,11 @@
 
 import pandas as pd
 
+from sphgag import threads
 from sphgag.records import runlog
 
 sm = snakemake  # noqa: F821
+threads.use(sm.threads)
 with runlog.run("concat", sm.log[0]) as log:
     tables = [pd.read_csv(path) for path in sm.input]
     out = pd.concat(tables, ignore_index=True)

@@ -3,13 +3,12 @@ onset criterion."""
 
 import time
 
-import numba
-
+from sphgag import threads
 from sphgag.records import provenance, runlog
 from sphgag.studies import delamination
 
 sm = snakemake  # noqa: F821
-numba.set_num_threads(sm.threads)
+threads.use(sm.threads)
 started = time.time()
 run = f"delamination_convergence_{sm.wildcards.law}_dx{sm.wildcards.dedx}_{sm.wildcards.criterion}"
 with runlog.run(run, sm.log[0]) as log:

@@ -2,10 +2,12 @@
 
 import pandas as pd
 
+from sphgag import threads
 from sphgag.records import runlog
 from sphgag.views import plots
 
 sm = snakemake  # noqa: F821
+threads.use(sm.threads)
 with runlog.run("delamination_map_figure", sm.log[0]):
     table = pd.read_csv(sm.input.map)
     fig = plots.delamination_map(

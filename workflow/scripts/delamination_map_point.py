@@ -3,14 +3,13 @@ by eq. (2.28); what it does at each level (sphgag.studies.delamination.level_cla
 
 import time
 
-import numba
-
+from sphgag import threads
 from sphgag.engine import solver
 from sphgag.records import provenance, runlog, state
 from sphgag.studies import artery, delamination
 
 sm = snakemake  # noqa: F821
-numba.set_num_threads(sm.threads)
+threads.use(sm.threads)
 started = time.time()
 w = sm.wildcards
 run = f"delamination_map_{w.law}_{w.width}deg_{w.sigma}kPa"

@@ -2,10 +2,12 @@
 
 import pandas as pd
 
+from sphgag import threads
 from sphgag.records import runlog
 from sphgag.views import plots
 
 sm = snakemake  # noqa: F821
+threads.use(sm.threads)
 with runlog.run("fig1", sm.log[0]):
     particles = pd.read_csv(sm.input.particles)
     fig = plots.fig1(particles, sm.params.mass_fractions, sm.params.support_factor, sm.params.dx)

@@ -2,10 +2,12 @@
 
 import pandas as pd
 
+from sphgag import threads
 from sphgag.records import runlog
 from sphgag.views import plots
 
 sm = snakemake  # noqa: F821
+threads.use(sm.threads)
 with runlog.run("fig3a_mean", sm.log[0]):
     states = pd.read_csv(sm.input.states)
     exact = pd.read_csv(sm.input.exact)

@@ -2,10 +2,12 @@
 
 import pandas as pd
 
+from sphgag import threads
 from sphgag.records import runlog
 from sphgag.views import plots
 
 sm = snakemake  # noqa: F821
+threads.use(sm.threads)
 with runlog.run("fig3b", sm.log[0]):
     profiles = pd.read_csv(sm.input.profiles)
     plots.finite_or_raise(profiles, ["radius_um", "radial_stress_kPa", "circ_stress_kPa"], "fig3b")

@@ -2,11 +2,13 @@
 
 import pandas as pd
 
+from sphgag import threads
 from sphgag.records import runlog
 from sphgag.studies import delamination
 from sphgag.views import plots
 
 sm = snakemake  # noqa: F821
+threads.use(sm.threads)
 with runlog.run("fig7", sm.log[0]):
     p = sm.params
     # the paper's damage law (eq. 2.28 as printed); the fracture-energy runs are rows of the tables, not of the figure

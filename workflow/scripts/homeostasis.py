@@ -2,16 +2,16 @@
 
 import time
 
-import numba
 import pandas as pd
 
+from sphgag import threads
 from sphgag.engine import measure
 from sphgag.engine.loading import MMHG_TO_KPA
 from sphgag.records import provenance, runlog, state
 from sphgag.studies import artery, protocols
 
 sm = snakemake  # noqa: F821
-numba.set_num_threads(sm.threads)
+threads.use(sm.threads)
 started = time.time()
 with runlog.run("homeostasis", sm.log[0]) as log:
     cfg = sm.params.slice

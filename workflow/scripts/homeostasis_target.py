@@ -2,9 +2,11 @@
 
 import pandas as pd
 
+from sphgag import threads
 from sphgag.records import runlog
 
 sm = snakemake  # noqa: F821
+threads.use(sm.threads)
 with runlog.run("homeostasis_target", sm.log[0]) as log:
     summary = pd.read_csv(sm.input.summary)
     target = float(sm.params.target_pressure)

@@ -4,10 +4,12 @@ state and the .pvd collection named after the run (sphgag.views.paraview)."""
 import time
 from pathlib import Path
 
+from sphgag import threads
 from sphgag.records import provenance, runlog
 from sphgag.views import paraview
 
 sm = snakemake  # noqa: F821
+threads.use(sm.threads)
 started = time.time()
 out = Path(sm.output.series)
 run = f"{sm.rule}_{sm.wildcards.law}_{out.name}"

@@ -3,15 +3,15 @@
 
 import time
 
-import numba
 import pandas as pd
 
+from sphgag import threads
 from sphgag.engine import solver
 from sphgag.records import provenance, runlog
 from sphgag.studies import pool_response
 
 sm = snakemake  # noqa: F821
-numba.set_num_threads(sm.threads)
+threads.use(sm.threads)
 started = time.time()
 w = sm.wildcards
 run = f"sensitivity_{w.method}_{w.law}_batch{w.batch}"

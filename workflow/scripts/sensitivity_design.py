@@ -2,10 +2,12 @@
 
 import pandas as pd
 
+from sphgag import threads
 from sphgag.records import runlog
 from sphgag.studies import sensitivity
 
 sm = snakemake  # noqa: F821
+threads.use(sm.threads)
 method = getattr(sm.wildcards, "method", "sobol")
 with runlog.run(f"sensitivity_{method}_design", sm.log[0]) as log:
     problem = sensitivity.Problem.from_ranges(sm.params.ranges)

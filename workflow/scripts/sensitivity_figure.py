@@ -2,10 +2,12 @@
 
 import pandas as pd
 
+from sphgag import threads
 from sphgag.records import runlog
 from sphgag.views import plots
 
 sm = snakemake  # noqa: F821
+threads.use(sm.threads)
 with runlog.run("sensitivity_figure", sm.log[0]):
     indices = pd.read_csv(sm.input.indices)
     fig = plots.sensitivity(indices, list(dict.fromkeys(indices.charge_law)))

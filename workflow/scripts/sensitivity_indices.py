@@ -4,10 +4,12 @@ its design; every sample with its outputs."""
 import numpy as np
 import pandas as pd
 
+from sphgag import threads
 from sphgag.records import runlog
 from sphgag.studies import pool_response, sensitivity
 
 sm = snakemake  # noqa: F821
+threads.use(sm.threads)
 method = sm.wildcards.method
 with runlog.run(f"sensitivity_{method}_indices", sm.log[0]) as log:
     design = pd.read_csv(sm.input.design)

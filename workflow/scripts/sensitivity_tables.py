@@ -3,10 +3,12 @@ the samples without an output, by their inputs."""
 
 import pandas as pd
 
+from sphgag import threads
 from sphgag.records import runlog
 from sphgag.studies import pool_response
 
 sm = snakemake  # noqa: F821
+threads.use(sm.threads)
 with runlog.run("sensitivity", sm.log[0]) as log:
     indices = pd.concat([pd.read_csv(p) for p in sm.input.indices], ignore_index=True)
     nominal = pd.concat([pd.read_csv(p) for p in sm.input.nominal], ignore_index=True)

@@ -3,14 +3,13 @@ saves the states."""
 
 import time
 
-import numba
-
+from sphgag import threads
 from sphgag.engine import solver
 from sphgag.records import provenance, runlog, state
 from sphgag.studies import artery, protocols
 
 sm = snakemake  # noqa: F821
-numba.set_num_threads(sm.threads)
+threads.use(sm.threads)
 started = time.time()
 w = sm.wildcards
 run = f"swell_{w.law}_{w.model}_{w.case}_{w.pressure}mmHg"

@@ -2,13 +2,12 @@
 
 import time
 
-import numba
-
+from sphgag import threads
 from sphgag.records import provenance, runlog, state
 from sphgag.studies import convergence
 
 sm = snakemake  # noqa: F821
-numba.set_num_threads(sm.threads)
+threads.use(sm.threads)
 started = time.time()
 run = f"swelling_convergence_{sm.wildcards.law}_dx{sm.wildcards.dx}"
 with runlog.run(run, sm.log[0]) as log:

@@ -3,13 +3,12 @@ the states of rule swelling_convergence_dx."""
 
 import time
 
-import numba
-
+from sphgag import threads
 from sphgag.records import provenance, runlog, state
 from sphgag.studies import convergence, protocols
 
 sm = snakemake  # noqa: F821
-numba.set_num_threads(sm.threads)
+threads.use(sm.threads)
 started = time.time()
 run = f"swelling_convergence_stresses_{sm.wildcards.law}_dx{sm.wildcards.dx}"
 with runlog.run(run, sm.log[0]) as log:

@@ -2,10 +2,12 @@
 
 import pandas as pd
 
+from sphgag import threads
 from sphgag.records import runlog
 from sphgag.views import plots
 
 sm = snakemake  # noqa: F821
+threads.use(sm.threads)
 with runlog.run("verification_crack_figure", sm.log[0]):
     table = pd.read_csv(sm.input.table)
     plots.finite_or_raise(table, ["opening_area_um2", "sneddon_um2", "griffith_kPa"], "verification_crack_figure")

@@ -2,13 +2,12 @@
 
 import time
 
-import numba
-
+from sphgag import threads
 from sphgag.records import provenance, runlog
 from sphgag.studies import inclusion
 
 sm = snakemake  # noqa: F821
-numba.set_num_threads(sm.threads)
+threads.use(sm.threads)
 started = time.time()
 run = f"verify_pool_ab{sm.wildcards.ratio}"
 with runlog.run(run, sm.log[0]) as log:

@@ -153,9 +153,12 @@ def read_series(pvd_path) -> list[Frame]:
     return frames
 
 
-if __name__ == "__main__":  # python -m sphgag.views.paraview STATES.npz OUT.pvd
+if __name__ == "__main__":  # python -m sphgag.views.paraview STATES.npz OUT.pvd [THREADS]
     import sys
 
-    if len(sys.argv) != 3:
-        sys.exit("usage: python -m sphgag.views.paraview STATES.npz OUT.pvd")
+    from .. import threads
+
+    if len(sys.argv) not in (3, 4):
+        sys.exit("usage: python -m sphgag.views.paraview STATES.npz OUT.pvd [THREADS (default 1)]")
+    threads.use(int(sys.argv[3]) if len(sys.argv) == 4 else 1)
     print(write_series(sys.argv[2], saved_series(sys.argv[1])))
