@@ -49,6 +49,9 @@ include: "workflow/rules/sensitivity.smk"
 include: "workflow/rules/views.smk"
 
 
+# Targets by purpose. `all` (the default) regenerates the paper: figures 1 and 3-7 and the claims table, for every
+# charge law, at the configured resolution, with the pool verification and every table the report shows of them.
+# The heavier studies are targets of their own; `everything` runs them all. README: jobs, time and core-hours of each.
 rule all:
     default_target: True
     input:
@@ -64,19 +67,58 @@ rule all:
         rules.fig3.output,
         rules.tip_stress.output,
         rules.fig4.output,
-        rules.claims.output,
         rules.verification_pool_figure.output,
-        rules.verify_crack.output,
-        rules.verification_crack_figure.output,
-        rules.swelling_convergence_figure.output,
         rules.delamination_growth.output,
         rules.delamination_summary.output,
-        rules.delamination_convergence.output,
         rules.fig5.output,
         rules.fig6.output,
         rules.fig7.output,
-        rules.sensitivity.output,
+        rules.claims.output,
+
+
+rule resolution:
+    """The resolution studies: the pools' swelling (figure 4) and figure 5's delamination at every spacing."""
+    input:
+        rules.swelling_convergence_figure.output,
+        rules.delamination_convergence.output,
+
+
+rule verification:
+    """The closed-form verifications at every spacing: the swelling pool (Inglis, Lame) and the pressurised crack of
+    the damage law with a fracture energy (Sneddon, Griffith)."""
+    input:
+        rules.verification_pool_figure.output,
+        rules.verification_crack_figure.output,
+
+
+rule fracture_energy:
+    """Figure 5's pool grown by the damage law with a fracture energy (measured toughness), beside Griffith."""
+    input:
+        rules.fracture_energy_growth.output,
+        rules.fracture_energy_summary.output,
+
+
+rule sensitivity:
+    """The sensitivity study: Morris screening, Sobol indices and the delamination map, with their figures."""
+    input:
+        rules.sensitivity_tables.output,
         rules.sensitivity_figure.output,
         rules.delamination_map.output,
         rules.delamination_map_figure.output,
+
+
+rule views:
+    """A ParaView series of every swelling and delamination run, and an animation of every delamination run."""
+    input:
         VIEWS,
+
+
+rule everything:
+    """Every output the configuration defines."""
+    input:
+        rules.all.input,
+        rules.resolution.input,
+        rules.verification.input,
+        rules.fracture_energy.input,
+        rules.sensitivity.input,
+        rules.views.input,

@@ -1,22 +1,19 @@
-"""Measured against declared resources, per rule.
+"""Every rule's declared threads and resources against what its jobs measured, and the README's table of them.
 
-Reads the benchmark files of one or more runs (``results/benchmarks/*.tsv``, written by
-every rule with a ``benchmark:`` directive: ``s`` = wall seconds, ``max_rss`` = peak
-resident memory in MB; a rule without the directive is matched to ``<rule>.tsv``, as
-written by a run with the directive added) and the ``threads:`` and ``resources:`` (``runtime`` in minutes, ``mem_mb``)
-declared in ``workflow/rules/*.smk``, and prints one row per rule: the largest measured
-time and memory over the rule's jobs, the declared values, and their ratio.
+The declared values are Snakemake's own: the jobs of a dry run of a target (``snakemake -n --forceall``), each with
+its benchmark file, threads and evaluated resources (``runtime`` in minutes, ``mem_mb``; expressions, callables and
+the profile's ``default-resources`` included). The measured values are the benchmark files of a finished run of the
+same configuration (``s`` = wall seconds, ``max_rss`` = peak resident memory in MB), matched job by job.
 
-The declared values follow one policy: twice the largest measurement of a full run from a
-fresh clone (cold Numba cache), rounded up (runtime to whole minutes, at least 5;
-memory to 500 MB, at least 1000 MB). ``suggested`` shows what the policy gives for the
-benchmarks read. Rules without a ``resources:`` block get the profile's
-``default-resources``.
+    python benchmarks/rule_resources.py                                   # full configuration, target everything
+    python benchmarks/rule_resources.py --configfile config/ci.yaml --benchmarks DIR --check
+    python benchmarks/rule_resources.py --readme README.md                # rewrite the README's table
 
-    python benchmarks/rule_resources.py [--benchmarks results/benchmarks [other/results/benchmarks ...]] [--check]
-
-With ``--check`` the exit status is 1 if a declared value is below ``--margin`` (1.5)
-times its measurement.
+``--check`` exits with status 1 and names every rule whose measured runtime or memory exceeds its declaration in
+some job (``--margin`` > 1 demands that much headroom). ``--readme`` replaces the table between the README's markers
+``<!-- rule-resources -->`` and ``<!-- /rule-resources -->``. The declared values follow one policy: at least twice
+the largest measurement of a full run from a fresh clone (cold Numba cache, both cores busy), runtime in whole
+minutes (at least 5), memory in steps of 500 MB (at least 1000); ``suggested`` shows what it gives.
 """
 
 from __future__ import annotations
@@ -25,79 +22,114 @@ import argparse
 import csv
 import math
 import re
+import subprocess
 import sys
+from dataclasses import dataclass
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-
-RULE = re.compile(r"^rule (\w+):")
-DIRECTIVE = re.compile(r"^    (\w+):\s*(.*)$")
-ASSIGNMENT = re.compile(r"^\s+(\w+)\s*=\s*([^,#]+?)\s*,?\s*(#.*)?$")
-WILDCARD = re.compile(r"\{(\w+)(?:,[^}]*)?\}")
+BEGIN, END = "<!-- rule-resources -->", "<!-- /rule-resources -->"
+JOB = re.compile(r"^(?:local)?rule (\w+):$")
+FIELD = re.compile(r"^    (\w+): (.*)$")
 
 
-def declared_rules(rules_dir: Path) -> dict[str, dict]:
-    """Per rule (in file order): its benchmark pattern, threads and resources, read from the .smk files."""
-    rules: dict[str, dict] = {}
-    for path in sorted(rules_dir.glob("*.smk")):
-        rule, directive = None, None
-        for line in path.read_text().splitlines():
-            if m := RULE.match(line):
-                rule, directive = rules.setdefault(m.group(1), dict(file=path.name, resources={})), None
-                continue
-            if rule is None:
-                continue
-            if line and not line[0].isspace():  # top-level code ends the rule
-                rule = None
-                continue
-            if m := DIRECTIVE.match(line):
-                directive, value = m.groups()
-                if directive == "threads" and value:
-                    rule["threads"] = int(value)
-                elif directive == "benchmark" and value:
-                    rule["benchmark"] = value.strip("\"'")
-                continue
-            if directive == "benchmark" and line.strip() and "benchmark" not in rule:
-                rule["benchmark"] = line.strip().rstrip(",").strip("\"'")
-            elif directive == "resources" and (m := ASSIGNMENT.match(line)):
-                rule["resources"][m.group(1)] = int(m.group(2))
-    return rules
+@dataclass
+class Job:
+    rule: str
+    benchmark: str | None
+    threads: int
+    runtime_min: float | None
+    mem_mb: float | None
+    seconds: float | None = None  # measured
+    max_rss_mb: float | None = None
 
 
-def pattern_regex(pattern: str) -> re.Pattern:
-    """``results/benchmarks/swell_{model}_{case}.tsv`` -> a regex matching the file names of its jobs."""
-    name = Path(pattern).name
-    parts, last = [], 0
-    for m in WILDCARD.finditer(name):
-        parts += [re.escape(name[last : m.start()]), r"[^/]+?"]
-        last = m.end()
-    parts.append(re.escape(name[last:]))
-    return re.compile("".join(parts) + r"\Z")
+def planned_jobs(target: str, configfile: str | None, project: Path = ROOT) -> list[Job]:
+    """The jobs of ``target`` as Snakemake plans them from scratch, with their declared threads and resources."""
+    cmd = [sys.executable, "-m", "snakemake", "-n", "--forceall", "--cores", "2", target]
+    cmd += ["--configfile", configfile] if configfile else []
+    run = subprocess.run(cmd, cwd=project, capture_output=True, text=True)
+    if run.returncode != 0:
+        raise SystemExit(f"snakemake dry run failed:\n{run.stdout[-2000:]}{run.stderr[-2000:]}")
+    jobs, fields = [], None
+    for line in (run.stdout + "\n" + run.stderr).splitlines():
+        if m := JOB.match(line):
+            fields = {"rule": m.group(1)}
+            jobs.append(fields)
+        elif fields is not None and (m := FIELD.match(line)):
+            fields[m.group(1)] = m.group(2)
+        elif fields is not None and not line.startswith("    "):
+            fields = None
+    defaults = cluster_defaults(project)
+    out = []
+    for f in jobs:
+        resources = dict(kv.split("=", 1) for kv in f.get("resources", "").split(", ") if "=" in kv)
+        resources = {**defaults, **resources}  # what a cluster job of a rule without its own gets
+        out.append(
+            Job(
+                f["rule"],
+                f.get("benchmark"),
+                int(f.get("threads", 1)),
+                float(resources["runtime"]) if "runtime" in resources else None,
+                float(resources["mem_mb"]) if "mem_mb" in resources else None,
+            )
+        )
+    return [j for j in out if j.rule not in TARGETS]
+
+
+def cluster_defaults(project: Path = ROOT) -> dict:
+    """``runtime`` and ``mem_mb`` of the SLURM profile's ``default-resources`` (a rule without its own gets these)."""
+    import yaml
+
+    profile = yaml.safe_load((project / "profiles" / "slurm" / "config.yaml").read_text())
+    found = profile.get("default-resources") or {}
+    if isinstance(found, list):
+        found = dict(item.split("=", 1) for item in found)
+    return {k: str(found[k]) for k in ("runtime", "mem_mb") if k in found}
+
+
+TARGETS = ("all", "everything", "resolution", "verification", "fracture_energy", "sensitivity", "views")
 
 
 def read_benchmark(path: Path) -> tuple[float, float]:
     """Largest wall time (s) and peak memory (MB) in one benchmark file (one row per repeat)."""
     with path.open() as f:
         rows = list(csv.DictReader(f, delimiter="\t"))
-    return max(float(r["s"]) for r in rows), max(float(r["max_rss"]) for r in rows if r["max_rss"] != "NA")
+    rss = [float(r["max_rss"]) for r in rows if r["max_rss"] not in ("NA", "-", "")]
+    return max(float(r["s"]) for r in rows), max(rss) if rss else math.nan
 
 
-def measured(rules: dict[str, dict], bench_dirs: list[Path]) -> dict[str, dict]:
-    """Per rule: number of benchmark files, largest s and max_rss over every directory."""
-    benchmark = {name: r.get("benchmark", f"{name}.tsv") for name, r in rules.items()}
-    patterns = {name: pattern_regex(b) for name, b in benchmark.items()}
-    # a longer literal pattern first, so that a file is given to the most specific rule
-    order = sorted(patterns, key=lambda n: -len(WILDCARD.sub("", benchmark[n])))
-    out: dict[str, dict] = {}
-    for path in sorted(p for d in bench_dirs for p in d.glob("*.tsv")):
-        rule = next((n for n in order if patterns[n].match(path.name)), None)
-        if rule is None:
+def measure(jobs: list[Job], bench_dirs: list[Path]) -> None:
+    """Each job's measurement, from its benchmark file in the first of ``bench_dirs`` that has it."""
+    for job in jobs:
+        if job.benchmark is None:
             continue
-        s, rss = read_benchmark(path)
-        m = out.setdefault(rule, dict(jobs=0, s=0.0, max_rss=0.0))
-        m["jobs"] += 1
-        m["s"], m["max_rss"] = max(m["s"], s), max(m["max_rss"], rss)
-    return out
+        name = Path(job.benchmark).name
+        found = next((d / name for d in bench_dirs if (d / name).exists()), None)
+        if found is not None:
+            job.seconds, job.max_rss_mb = read_benchmark(found)
+
+
+def exceeded(jobs: list[Job], margin: float = 1.0) -> list[str]:
+    """One line per rule whose measurement, times ``margin``, exceeds its declaration in some job."""
+    lines = []
+    for rule in dict.fromkeys(j.rule for j in jobs):
+        mine = [j for j in jobs if j.rule == rule and j.seconds is not None]
+        slow = [j for j in mine if j.runtime_min is not None and margin * j.seconds > 60.0 * j.runtime_min]
+        big = [j for j in mine if j.mem_mb is not None and margin * j.max_rss_mb > j.mem_mb]
+        if slow:
+            worst = max(slow, key=lambda j: j.seconds / j.runtime_min)
+            lines.append(
+                f"{rule}: measured {worst.seconds:.0f} s > declared runtime {worst.runtime_min:g} min"
+                f"{f' / {margin:g}' if margin != 1 else ''} ({len(slow)} of {len(mine)} jobs; {worst.benchmark})"
+            )
+        if big:
+            worst = max(big, key=lambda j: j.max_rss_mb / j.mem_mb)
+            lines.append(
+                f"{rule}: measured {worst.max_rss_mb:.0f} MB > declared mem_mb {worst.mem_mb:g}"
+                f"{f' / {margin:g}' if margin != 1 else ''} ({len(big)} of {len(mine)} jobs; {worst.benchmark})"
+            )
+    return lines
 
 
 def suggested(s: float, rss: float) -> tuple[int, int]:
@@ -105,65 +137,83 @@ def suggested(s: float, rss: float) -> tuple[int, int]:
     return max(5, math.ceil(2 * s / 60)), max(1000, 500 * math.ceil(2 * rss / 500))
 
 
+def _span(values, fmt="{:g}") -> str:
+    values = sorted({v for v in values if v is not None})
+    if not values:
+        return "-"
+    return fmt.format(values[0]) if len(values) == 1 else f"{fmt.format(values[0])}-{fmt.format(values[-1])}"
+
+
+def table(jobs: list[Job]) -> list[list[str]]:
+    """One row per rule: jobs, threads, declared runtime and memory, largest measured time and memory, suggested."""
+    rows = []
+    for rule in dict.fromkeys(j.rule for j in jobs):
+        mine = [j for j in jobs if j.rule == rule]
+        done = [j for j in mine if j.seconds is not None]
+        measured = "not measured"
+        advice = "-"
+        if done:
+            s, rss = max(j.seconds for j in done), max(j.max_rss_mb for j in done)
+            measured = f"{s:.0f} s, {rss:.0f} MB" + (
+                f" ({len(done)} of {len(mine)} jobs)" if len(done) < len(mine) else ""
+            )
+            advice = "runtime={}, mem_mb={}".format(*suggested(s, rss))
+        rows.append(
+            [
+                f"`{rule}`",
+                str(len(mine)),
+                _span(j.threads for j in mine),
+                _span(j.runtime_min for j in mine),
+                _span(j.mem_mb for j in mine),
+                measured,
+                advice,
+            ]
+        )
+    return rows
+
+
+HEADER = ["rule", "jobs", "threads", "runtime (min)", "mem_mb", "largest measured: time, memory", "suggested"]
+
+
+def markdown(jobs: list[Job], note: str) -> str:
+    rows = [HEADER, ["---"] * len(HEADER), *table(jobs)]
+    lines = ["| " + " | ".join(r) + " |" for r in rows]
+    return "\n".join([note, "", *lines])
+
+
+def replace_block(text: str, block: str) -> str:
+    """``text`` with the part between the markers replaced by ``block``."""
+    if BEGIN not in text or END not in text:
+        raise SystemExit(f"the README has no {BEGIN} ... {END} block")
+    head, rest = text.split(BEGIN, 1)
+    _, tail = rest.split(END, 1)
+    return f"{head}{BEGIN}\n{block}\n{END}{tail}"
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--target", default="everything", help="the target whose jobs are listed (default: everything)")
+    ap.add_argument("--configfile", default=None, help="the configuration (default: config/config.yaml)")
+    ap.add_argument("--project", type=Path, default=ROOT, help="the checkout to plan in (default: this one)")
     ap.add_argument("--benchmarks", type=Path, nargs="+", default=[ROOT / "results" / "benchmarks"])
-    ap.add_argument("--rules", type=Path, default=ROOT / "workflow" / "rules")
-    ap.add_argument("--check", action="store_true", help="exit 1 if a declared value is below margin x measured")
-    ap.add_argument("--margin", type=float, default=1.5)
+    ap.add_argument("--check", action="store_true", help="exit 1 if a measurement exceeds its declaration")
+    ap.add_argument("--margin", type=float, default=1.0, help="with --check: demand margin x the measurement")
+    ap.add_argument("--readme", type=Path, help="rewrite the table between the markers of this README")
+    ap.add_argument("--note", default="", help="with --readme: the line above the table (where it was measured)")
     args = ap.parse_args(argv)
 
-    rules = declared_rules(args.rules)
-    meas = measured(rules, args.benchmarks)
-    header = [
-        "rule",
-        "jobs",
-        "max s",
-        "max_rss MB",
-        "threads",
-        "runtime min",
-        "mem_mb",
-        "runtime/s",
-        "mem/rss",
-        "suggested",
-    ]
-    rows, low = [], []
-    for name, r in rules.items():
-        res, m = r["resources"], meas.get(name)
-        if m is None and not res:
-            continue  # no measurement, no declaration: the profile's default-resources
-        runtime, mem = res.get("runtime"), res.get("mem_mb")
-        row = [
-            name,
-            "-",
-            "-",
-            "-",
-            str(r.get("threads", "-")),
-            str(runtime or "default"),
-            str(mem or "default"),
-            "-",
-            "-",
-            "-",
-        ]
-        if m is not None:
-            row[1:4] = [str(m["jobs"]), f"{m['s']:.1f}", f"{m['max_rss']:.0f}"]
-            if runtime:
-                row[7] = f"{runtime * 60 / max(m['s'], 1e-9):.1f}"
-                if runtime * 60 < args.margin * m["s"]:
-                    low.append(f"{name}: runtime {runtime} min < {args.margin} x {m['s']:.0f} s")
-            if mem:
-                row[8] = f"{mem / max(m['max_rss'], 1e-9):.1f}"
-                if mem < args.margin * m["max_rss"]:
-                    low.append(f"{name}: mem_mb {mem} < {args.margin} x {m['max_rss']:.0f} MB")
-            row[9] = "runtime={}, mem_mb={}".format(*suggested(m["s"], m["max_rss"]))
-        rows.append(row)
-    widths = [max(len(x) for x in col) for col in zip(header, *rows)]
-    print(f"benchmarks: {', '.join(map(str, args.benchmarks))} ({sum(m['jobs'] for m in meas.values())} files)")
-    for row in [header, ["-" * w for w in widths], *rows]:
-        print("  ".join(x.ljust(w) for x, w in zip(row, widths)).rstrip())
-    for line in low:
-        print("LOW:", line)
-    return 1 if args.check and low else 0
+    jobs = planned_jobs(args.target, args.configfile, args.project)
+    measure(jobs, args.benchmarks)
+    measured = sum(j.seconds is not None for j in jobs)
+    print(f"{len(jobs)} jobs of {args.target}; {measured} measured in {', '.join(map(str, args.benchmarks))}")
+    text = markdown(jobs, args.note)
+    print(text)
+    if args.readme:
+        args.readme.write_text(replace_block(args.readme.read_text(), text))
+    over = exceeded(jobs, args.margin)
+    for line in over:
+        print("EXCEEDS:", line)
+    return 1 if args.check and over else 0
 
 
 if __name__ == "__main__":

@@ -65,10 +65,11 @@ def numba_cache(tmp_path_factory):
 
 @pytest.fixture(scope="session")
 def workdir(tmp_path_factory, numba_cache):
-    """A copy of the project root in which the CI configuration ran to the end, from a cold Numba cache (one run for
-    the session: tests/test_pipeline.py reads and reruns it, tests/test_slurm.py compares the Slurm run with it)."""
+    """A copy of the project root in which the CI configuration ran to the end (target ``everything``: every job it
+    defines), from a cold Numba cache (one run for the session: tests/test_pipeline.py reads and reruns it,
+    tests/test_slurm.py compares the Slurm run with it)."""
     wd = project_copy(tmp_path_factory.mktemp("pipeline"))
-    run = snakemake(wd, "all", env=dict(NUMBA_CACHE_DIR=str(numba_cache)))
+    run = snakemake(wd, "everything", env=dict(NUMBA_CACHE_DIR=str(numba_cache)))
     assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
     yield wd
     shutil.rmtree(wd, ignore_errors=True)

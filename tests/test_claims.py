@@ -99,7 +99,7 @@ def test_delamination_claims_follow_the_pool_sets_roles():
 
 def test_each_claim_is_one_function_of_the_list_in_the_tables_order():
     ids = [f.__name__.split("_")[0].upper() for f in claims.CALIBRATION + claims.POOL]
-    assert ids == [f"C{k}" for k in range(1, 18)]
+    assert ids == [f"C{k}" for k in range(1, 19)]
 
 
 def test_a_claim_is_evaluated_alone():
@@ -112,3 +112,40 @@ def test_a_claim_is_evaluated_alone():
         claims.c8_tensile_tip(claims.Evidence(tips=both, cases=CASES, max_concentration=150.0).of_law("prescribed"))
         == c8
     )
+
+
+def samples_table(law: str, onsets) -> pd.DataFrame:
+    """A sensitivity samples.csv of one law: one row per onset concentration (NaN: no onset, censored)."""
+    rows = [
+        dict(method="morris", sample=k, charge_law=law, status="ok", onset_concentration_mEq_l=c if c == c else 160.0)
+        | dict(onset_censored=c != c, propagated=float(c == c))
+        for k, c in enumerate(onsets)
+    ]
+    return pd.DataFrame(rows)
+
+
+def test_a_claim_whose_target_has_not_run_is_in_the_table_marked_not_run():
+    """C18 rests on the sensitivity study (target sensitivity): without it, each law's row says so and names the
+    command; with it, the row holds our number."""
+    tips = pd.concat([tips_table("prescribed"), tips_table("conserved")], ignore_index=True)
+    laws = ["prescribed", "conserved"]
+
+    def c18(e):
+        return claims.by_law(laws, lambda law: [claims.c18_onset_across_inputs(e.of_law(law))])
+
+    without = claims.table(c18(claims.Evidence(tips=tips, cases=CASES)))
+    assert list(without.charge_law) == laws and list(without.claim_id) == ["C18", "C18"]
+    assert (without.holds == "not run").all() and (without.our_value == "not run: `snakemake sensitivity`").all()
+    assert without.statement.iloc[0].startswith("Across the model's input ranges")
+    nan = float("nan")
+    samples = pd.concat(
+        [samples_table("prescribed", [90.0, 100.0, nan]), samples_table("conserved", [nan, nan, 150.0])],
+        ignore_index=True,
+    )
+    e = claims.Evidence(tips=tips, cases=CASES, sensitivity=samples)
+    found = {
+        c.charge_law: c
+        for c in claims.by_law(["prescribed", "conserved"], lambda law: [claims.c18_onset_across_inputs(e.of_law(law))])
+    }
+    assert found["prescribed"].holds == "yes" and found["conserved"].holds == "no"
+    assert found["prescribed"].our_value.startswith("onset in 2 of 3 samples (67 %), at 90-100 mEq/l")

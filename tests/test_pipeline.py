@@ -241,14 +241,21 @@ def test_pool_states_that_converged_before_issue_15_are_unchanged(workdir):
 def test_the_papers_damage_law_gives_every_delamination_result_it_gave_before_issue_16(workdir):
     """With ``damage_law: paper`` (eq. 2.28 as printed), the fracture-energy law and the onset energy in the histories
     leave every delamination run of the CI config (both charge laws) as the code before them left it (tests/data,
-    from its CI run), to the printed digits."""
+    from its CI run): the conserved law's to the printed digits, the prescribed law's onset and outcome."""
     runs = ["charge_law", "case", "sigma_cr_kPa", "criterion"]
     was = pd.read_csv(ROOT / "tests/data/ci_delamination_before_issue16.csv").set_index(runs)
+    # under the prescribed law the swollen, damaged pools' paths depend on the machine's BLAS kernels (snaps, and
+    # bridges with more than one equilibrium: docs/physics.md): those runs are compared by what they do, the
+    # conserved law's to the printed digits
+    chaotic = was.index.get_level_values("charge_law") == "prescribed"
     summary = pd.read_csv(workdir / "results/delamination/summary.csv")
-    assert set(summary.damage_law) == {"paper", "fracture_energy"}
-    now = summary[summary.damage_law == "paper"].set_index(runs)
+    assert set(summary.damage_law) == {"paper"}  # the fracture-energy runs have a table of their own
+    now = summary.set_index(runs)
     assert now.index.is_unique and now.index.isin(was.index).all()
     now = now.loc[was.index]
+    assert np.allclose(now.onset_concentration_mEq_l, was.onset_concentration_mEq_l, equal_nan=True)
+    assert now.outcome.equals(was.outcome) and now.merged.equals(was.merged)
+    now, was = now[~chaotic], was[~chaotic]
     for column in was.columns:
         if pd.api.types.is_numeric_dtype(was[column]) and not pd.api.types.is_bool_dtype(was[column]):
             assert np.allclose(now[column], was[column], rtol=5e-4, atol=1e-3, equal_nan=True), column
@@ -256,26 +263,33 @@ def test_the_papers_damage_law_gives_every_delamination_result_it_gave_before_is
             assert now[column].astype(str).tolist() == was[column].astype(str).tolist(), column
 
 
-def test_fracture_energy_runs_are_rows_of_the_delamination_tables_beside_their_closed_form(workdir, ci_config):
+def test_fracture_energy_runs_are_rows_of_their_tables_beside_their_closed_form(workdir, ci_config):
     """Figure 5's pool under every charge law, at every configured G_c and at the one the paper's law dissipates,
-    each with Griffith's closed form for the same pool."""
+    each with Griffith's closed form for the same pool (target fracture_energy)."""
     de = ci_config["delamination"]
-    summary = pd.read_csv(workdir / "results/delamination/summary.csv")
-    growth = pd.read_csv(workdir / "results/delamination/growth.csv")
-    fe = summary[summary.damage_law == "fracture_energy"]
+    fe = pd.read_csv(workdir / "results/delamination/fracture_energy/summary.csv")
+    growth = pd.read_csv(workdir / "results/delamination/fracture_energy/growth.csv")
+    assert set(fe.damage_law) == set(growth.damage_law) == {"fracture_energy"}
     # the paper law's prescribed run of the same pool (it runs for this match alone where figure 5's sigmas lack it)
     paper = f"{de['figures']['fig5']}_{de['critical_stress_kPa']:g}kPa_{de['criteria'][0]}_summary.csv"
-    matched = pd.read_csv(workdir / "results/delamination/runs/prescribed" / paper).dissipated_energy_J_m2
-    wanted = sorted(de["fracture_energy"]["fracture_energies_J_m2"] + [float(matched.iloc[0])])
+    matched = float(pd.read_csv(workdir / "results/delamination/runs/prescribed" / paper).dissipated_energy_J_m2[0])
+    configured = de["fracture_energy"]["fracture_energies_J_m2"]
     for law in ci_config["gag"]["charge_laws"]:
         rows = fe[fe.charge_law == law]
-        assert np.allclose(sorted(rows.fracture_energy_J_m2), wanted), law
         assert (rows.case == de["figures"]["fig5"]).all() and (rows.criterion == de["criteria"][0]).all()
-    assert (fe.griffith_concentration_mEq_l > 0).all() and (fe.griffith_half_length_um > 0).all()
+        unmatched = rows[rows.stop.str.startswith("no G_c to match")]
+        if matched > 0:
+            assert np.allclose(sorted(rows.fracture_energy_J_m2), sorted(configured + [matched])), law
+            assert unmatched.empty
+        else:  # the paper's run grew nothing: its match is a row that says so, seeded and not grown
+            assert np.allclose(sorted(rows.fracture_energy_J_m2.dropna()), sorted(configured)), law
+            assert len(unmatched) == 1 and unmatched.fracture_energy_J_m2.isna().all()
+            assert (unmatched.outcome == "no growth").all() and (unmatched.passes == 0).all()
+    grown = fe[fe.fracture_energy_J_m2.notna()]
+    assert (grown.griffith_concentration_mEq_l > 0).all() and (grown.griffith_half_length_um > 0).all()
     # the tougher the media, the higher the concentration Griffith needs
-    prescribed = fe[fe.charge_law == "prescribed"].sort_values("fracture_energy_J_m2")
+    prescribed = grown[grown.charge_law == "prescribed"].sort_values("fracture_energy_J_m2")
     assert np.all(np.diff(prescribed.griffith_concentration_mEq_l) > 0)
-    assert set(growth.damage_law) == {"paper", "fracture_energy"}
 
 
 def test_outputs_follow_the_data_contracts(workdir, ci_config):
@@ -329,7 +343,8 @@ def test_outputs_follow_the_data_contracts(workdir, ci_config):
         == 1 + sw["concentration_points"]
     ).all()
     claims = pd.read_csv(workdir / "results/claims.csv", keep_default_na=False)
-    assert set(claims.holds) <= {"yes", "no", "n/a"} and len(claims) >= 10
+    assert set(claims.holds) <= {"yes", "no", "n/a"} and len(claims) >= 10  # every target ran: nothing "not run"
+    assert sorted(claims[claims.claim_id == "C18"].charge_law) == sorted(ci_config["gag"]["charge_laws"])
     calibration = claims.claim_id.isin([f"C{k}" for k in range(1, 6)])
     assert set(claims[calibration].charge_law) == {"-"}
     pool = claims[~calibration]  # C6-C17: one row per claim and law
@@ -389,7 +404,7 @@ def report_variable(html: str, name: str):
 
 def test_the_report_holds_every_figure_and_the_claims_table_first(workdir):
     report = workdir / "report.zip"
-    run = snakemake(workdir, "--report", str(report))
+    run = snakemake(workdir, "everything", "--report", str(report))
     assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
     with zipfile.ZipFile(report) as z:
         html = z.read("report/report.html").decode()
@@ -414,14 +429,18 @@ def test_the_report_holds_every_figure_and_the_claims_table_first(workdir):
 
 
 def test_nothing_to_do_after_a_complete_run(workdir):
-    run = snakemake(workdir, "-n", "all")
+    run = snakemake(workdir, "-n", "everything")
     assert run.returncode == 0
     assert "Nothing to be done" in run.stdout + run.stderr
+    # `all` after `everything`: the claims read the sensitivity study as it stands instead of waiting for it (a
+    # parameter where it was an input), so their one job reruns, to the same bytes; nothing else does
+    run = snakemake(workdir, "-n", "all")
+    assert planned_jobs(run.stdout + run.stderr) == {"claims": 1, "all": 1}
 
 
 def test_changing_a_parameter_reruns_only_what_it_affects(workdir, ci_config, tmp_path):
     edited = edited_config(tmp_path, ci_config, "calibration", "pressure_points", 6)
-    run = snakemake(workdir, "-n", "all", configfile=edited)
+    run = snakemake(workdir, "-n", "everything", configfile=edited)
     out = run.stdout + run.stderr
     assert run.returncode == 0, out
     assert "rule calibrate_mean:" in out and "rule fig3a_mean:" in out
@@ -442,16 +461,16 @@ def planned_jobs(out: str) -> dict:
 
 def test_a_reference_value_reruns_only_the_table_that_shows_it(workdir, ci_config, tmp_path):
     edited = edited_config(tmp_path, ci_config, "homeostasis", "target_pressure_mmHg", 110.0)
-    run = snakemake(workdir, "-n", "all", configfile=edited)
+    run = snakemake(workdir, "-n", "everything", configfile=edited)
     out = run.stdout + run.stderr
     assert run.returncode == 0, out
-    assert planned_jobs(out) == {"homeostasis_target": 1, "all": 1}, out[-3000:]
+    assert planned_jobs(out) == {"homeostasis_target": 1, "everything": 1}, out[-3000:]
 
 
 def test_a_measurement_setting_reruns_the_measurement_not_the_simulations(workdir, ci_config, tmp_path):
     """``swelling.probe_length_um`` only sets where the pool stresses are measured: the saved swelling states stay."""
     edited = edited_config(tmp_path, ci_config, "swelling", "probe_length_um", 12.0)
-    run = snakemake(workdir, "-n", "all", configfile=edited)
+    run = snakemake(workdir, "-n", "everything", configfile=edited)
     out = run.stdout + run.stderr
     assert run.returncode == 0, out
     jobs = planned_jobs(out)
@@ -473,27 +492,27 @@ def edited_copy(workdir, tmp_path, module: str) -> Path:
 
 
 def test_a_comment_in_a_module_that_computes_no_number_reruns_nothing(workdir, tmp_path):
-    run = snakemake(edited_copy(workdir, tmp_path, "records/provenance.py"), "-n", "all")
+    run = snakemake(edited_copy(workdir, tmp_path, "records/provenance.py"), "-n", "everything")
     assert run.returncode == 0 and "Nothing to be done" in run.stdout + run.stderr, run.stdout[-3000:]
 
 
 def test_an_edit_of_the_plotting_module_redraws_the_figures_only(workdir, tmp_path):
-    run = snakemake(edited_copy(workdir, tmp_path, "views/plots.py"), "-n", "all")
+    run = snakemake(edited_copy(workdir, tmp_path, "views/plots.py"), "-n", "everything")
     jobs = planned_jobs(run.stdout + run.stderr)
     print("\nplots.py edit reruns:", jobs)
-    assert jobs and all(rule.startswith("fig") or rule.endswith("_figure") or rule == "all" for rule in jobs), jobs
+    assert jobs and all(rule.startswith("fig") or rule.endswith("_figure") or rule == "everything" for rule in jobs)
 
 
 def test_an_edit_of_the_paraview_module_rewrites_the_series_and_animations_only(workdir, tmp_path):
-    run = snakemake(edited_copy(workdir, tmp_path, "views/paraview.py"), "-n", "all")
+    run = snakemake(edited_copy(workdir, tmp_path, "views/paraview.py"), "-n", "everything")
     jobs = planned_jobs(run.stdout + run.stderr)
-    assert set(jobs) == {"paraview_swelling", "paraview_delamination", "animation", "all"}, jobs
+    assert set(jobs) == {"paraview_swelling", "paraview_delamination", "animation", "everything"}, jobs
 
 
 def test_an_edit_of_a_module_in_a_subpackage_reruns_the_simulations_that_import_it(workdir, tmp_path):
     """engine/forces.py is imported by every model: its edit reruns every simulation (and what reads them), and
     the Numba cache is keyed anew (sphgag._source_hash covers the subpackages)."""
-    run = snakemake(edited_copy(workdir, tmp_path, "engine/forces.py"), "-n", "all")
+    run = snakemake(edited_copy(workdir, tmp_path, "engine/forces.py"), "-n", "everything")
     jobs = planned_jobs(run.stdout + run.stderr)
     print("\nengine/forces.py edit reruns:", jobs)
     simulations = {"calibrate_mean", "homeostasis", "bilayer_pressure_diameter", "swell", "delaminate"}
@@ -573,14 +592,14 @@ def fresh_copy(tmp_path_factory):
     return project_copy(tmp_path_factory.mktemp("project"))
 
 
-def plan(project, *args):
-    run = snakemake(project, "-n", "all", *args, configfile=None)
+def plan(project, *args, target="everything"):
+    run = snakemake(project, "-n", target, *args, configfile=None)
     return run, run.stdout + run.stderr
 
 
-# the modules that compute no number (validation, logging, provenance records): inputs of no rule, so that editing
-# them reruns nothing (Snakefile, PRESENTATION)
-NO_NUMBER = {"config.py", "runlog.py", "provenance.py"}
+# the modules that compute no number (validation, threads, logging, provenance records): inputs of no rule, so that
+# editing them reruns nothing (Snakefile, PRESENTATION)
+NO_NUMBER = {"config.py", "threads.py", "runlog.py", "provenance.py"}
 
 
 def test_every_module_of_the_package_is_an_input_of_the_rules_that_run_it(fresh_copy):
@@ -675,7 +694,7 @@ def test_removing_a_charge_law_reruns_no_simulation(workdir, ci_config, tmp_path
     figures and claims that showed both laws are redone."""
     cfg = copy.deepcopy(ci_config)
     cfg["gag"]["charge_laws"] = ["conserved"]
-    run = snakemake(workdir, "-n", "all", configfile=written_config(tmp_path, cfg))
+    run = snakemake(workdir, "-n", "everything", configfile=written_config(tmp_path, cfg))
     out = run.stdout + run.stderr
     assert run.returncode == 0, out[-3000:]
     jobs = planned_jobs(out)
@@ -721,7 +740,7 @@ def test_a_renamed_pool_set_builds_its_dag_and_runs(workdir, ci_config, tmp_path
     config = written_config(tmp_path, cfg)
     copy_dir = tmp_path / "copy"
     shutil.copytree(workdir, copy_dir, symlinks=True)
-    run = snakemake(copy_dir, "-n", "all", configfile=config)
+    run = snakemake(copy_dir, "-n", "everything", configfile=config)
     out = run.stdout + run.stderr
     assert run.returncode == 0, out[-3000:]
     jobs = planned_jobs(out)
@@ -743,7 +762,7 @@ def test_an_extra_pool_set_runs_and_joins_the_tables(workdir, ci_config, tmp_pat
     cfg = copy.deepcopy(ci_config)
     de = cfg["delamination"]
     de["pool_sets"]["extra"] = copy.deepcopy(de["pool_sets"][de["figures"]["fig7"]])
-    run = snakemake(workdir, "-n", "all", configfile=written_config(tmp_path, cfg))
+    run = snakemake(workdir, "-n", "everything", configfile=written_config(tmp_path, cfg))
     out = run.stdout + run.stderr
     assert run.returncode == 0, out[-3000:]
     jobs = planned_jobs(out)
@@ -848,5 +867,147 @@ def test_the_source_of_a_range_is_documentation_and_reruns_nothing(workdir, ci_c
     cfg = copy.deepcopy(ci_config)
     first = next(iter(cfg["sensitivity"]["inputs"]))
     cfg["sensitivity"]["inputs"][first]["source"] = "a better reference"
-    run = snakemake(workdir, "-n", "all", configfile=written_config(tmp_path, cfg))
+    run = snakemake(workdir, "-n", "everything", configfile=written_config(tmp_path, cfg))
     assert run.returncode == 0 and "Nothing to be done" in run.stdout + run.stderr, run.stdout[-3000:]
+
+
+# -- targets by purpose, params that hold what a job reads, claims of targets not run, resources (issue 24) --------
+
+HEAVY = {
+    "swelling_convergence_dx",
+    "delamination_convergence_dx",
+    "verify_crack_length",
+    "delaminate_fracture_energy",
+    "sensitivity_batch",
+    "delamination_map_point",
+    "paraview_swelling",
+    "paraview_delamination",
+    "animation",
+}
+PAPER = {"fig1", "fig3a_mean", "fig3b", "fig3", "fig4", "fig5", "fig6", "fig7", "verification_pool_figure", "claims"}
+TARGET_RULES = ("all", "resolution", "verification", "fracture_energy", "sensitivity", "views", "everything")
+
+
+def planned(out: str) -> set:
+    """``{(rule, wildcards)}`` of every job a dry run printed."""
+    jobs, rule = set(), None
+    for line in out.splitlines():
+        if line.startswith(("rule ", "localrule ")) and line.endswith(":"):
+            rule = line.split()[1].rstrip(":")
+            jobs.add((rule, ""))
+        elif rule and line.startswith("    wildcards: "):
+            jobs.discard((rule, ""))
+            jobs.add((rule, line.split(": ", 1)[1]))
+        elif not line.startswith("    "):
+            rule = None
+    return jobs
+
+
+def test_all_makes_the_papers_figures_and_claims_and_no_heavy_study(fresh_copy):
+    """The full configuration's default target: every figure of the paper, the claims and the pool verification;
+    no sensitivity, resolution, crack-verification, fracture-energy or view job."""
+    run, out = plan(fresh_copy, "--forceall", target="all")
+    assert run.returncode == 0, out[-2000:]
+    jobs = planned_jobs(out)
+    assert PAPER <= set(jobs) and not HEAVY & set(jobs), jobs
+
+
+def test_everything_plans_every_job_the_configuration_defines(fresh_copy):
+    """``everything`` is the union of the targets, and every rule of the workflow has a job in it."""
+    found = {}
+    for target in TARGET_RULES:
+        run, out = plan(fresh_copy, "--forceall", target=target)
+        assert run.returncode == 0, (target, out[-2000:])
+        found[target] = {job for job in planned(out) if job[0] not in TARGET_RULES}
+    union = set().union(*(found[t] for t in TARGET_RULES[:-1]))
+    assert found["everything"] == union
+    listed = subprocess.run(
+        [sys.executable, "-m", "snakemake", "--list-rules"], cwd=fresh_copy, capture_output=True, text=True
+    ).stdout
+    rules = [line.split()[0] for line in listed.splitlines() if line and not line[0].isspace()]
+    assert set(rules) - set(TARGET_RULES) == {rule for rule, _ in found["everything"]}
+
+
+@pytest.mark.parametrize(
+    "edit, rerun",
+    [
+        (  # a delamination key: which onset measures run; the other measure's runs and every study that reads only
+            # the default measure stay
+            lambda cfg: cfg["delamination"].update(criteria=["averaged"]),
+            {"delamination_growth", "delamination_summary", "delamination_convergence", "fig5", "fig6", "fig7"},
+        ),
+        (  # a swelling key: the steps of the pools' conversion; read by the swelling runs (figure 4, the resolution
+            # study, the sensitivity samples) and the measurements that check their states, not by the delamination
+            lambda cfg: cfg["swelling"].update(conversion_steps=3),
+            {"swell", "pool_stresses", "tip_stress", "fig4", "paraview_swelling", "swelling_convergence_dx"}
+            | {"swelling_convergence_stresses", "swelling_convergence", "swelling_convergence_figure"}
+            | {"sensitivity_batch", "sensitivity_method", "sobol_design", "sensitivity_tables", "sensitivity_figure"}
+            | {"delamination_map_figure"},
+        ),
+        (  # a sensitivity key: the bootstrap of the Sobol intervals; read by the Sobol indices alone
+            lambda cfg: cfg["sensitivity"]["sobol"].update(resamples=50),
+            {"sensitivity_method", "sensitivity_tables", "sensitivity_figure"},
+        ),
+        (  # a figure-only key: which pool sets figure 6 shows
+            lambda cfg: cfg["delamination"]["figures"].update(fig6=[cfg["delamination"]["figures"]["fig6"][0]]),
+            {"fig6"},
+        ),
+    ],
+    ids=["delamination.criteria", "swelling.conversion_steps", "sensitivity.sobol.resamples", "figures.fig6"],
+)
+def test_an_edit_plans_only_the_jobs_that_read_the_key_and_what_follows(workdir, ci_config, tmp_path, edit, rerun):
+    cfg = copy.deepcopy(ci_config)
+    edit(cfg)
+    run = snakemake(workdir, "-n", "everything", configfile=written_config(tmp_path, cfg))
+    out = run.stdout + run.stderr
+    assert run.returncode == 0, out[-3000:]
+    jobs = set(planned_jobs(out)) - {"everything", "claims"}  # the claims read nearly every table
+    assert jobs == rerun, (sorted(jobs - rerun), sorted(rerun - jobs))
+
+
+def test_a_claim_whose_target_has_not_run_says_so(workdir, ci_config, tmp_path):
+    """Without the sensitivity study, `snakemake all` redraws the claims table alone, and C18 is in it, once per law,
+    naming the command that makes its evidence."""
+    copy_dir = tmp_path / "copy"
+    shutil.copytree(workdir, copy_dir, symlinks=True)
+    shutil.rmtree(copy_dir / "results/sensitivity")
+    run = snakemake(copy_dir, "all")
+    out = run.stdout + run.stderr
+    assert run.returncode == 0, out[-3000:]
+    assert planned_jobs(out) == {"claims": 1, "all": 1}
+    claims = pd.read_csv(copy_dir / "results/claims.csv", keep_default_na=False)
+    c18 = claims[claims.claim_id == "C18"]
+    assert sorted(c18.charge_law) == sorted(ci_config["gag"]["charge_laws"])
+    assert (c18.holds == "not run").all() and (c18.our_value == "not run: `snakemake sensitivity`").all()
+    assert (claims[claims.claim_id != "C18"].holds != "not run").all()
+    assert "not run: `snakemake sensitivity`" in (copy_dir / "figures/claims.md").read_text()
+
+
+def rule_resources(*args) -> subprocess.CompletedProcess:
+    """``python benchmarks/rule_resources.py *args`` (the resource check), planning in ``ROOT``."""
+    cmd = [sys.executable, str(ROOT / "benchmarks" / "rule_resources.py"), "--configfile", "config/ci.yaml", *args]
+    return subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True)
+
+
+def test_every_job_of_the_ci_run_stays_within_its_declared_resources(workdir):
+    """The resource check on the CI run: every job has a benchmark, and none exceeds its rule's runtime or mem_mb."""
+    run = rule_resources("--project", str(workdir), "--benchmarks", str(workdir / "results/benchmarks"), "--check")
+    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
+    jobs, measured = re.search(r"(\d+) jobs of everything; (\d+) measured", run.stdout).groups()
+    assert jobs == measured, run.stdout[:3000]
+
+
+def test_the_resource_check_names_a_rule_that_exceeds_its_declaration(workdir, tmp_path):
+    benchmarks = tmp_path / "benchmarks"
+    shutil.copytree(workdir / "results/benchmarks", benchmarks)
+    slow = benchmarks / "fig4.tsv"
+    rows = slow.read_text().splitlines()
+    header, values = rows[0].split("\t"), rows[1].split("\t")
+    values[header.index("s")] = "99999.0"
+    values[header.index("max_rss")] = "123456.0"
+    slow.write_text("\t".join(header) + "\n" + "\t".join(values) + "\n")
+    run = rule_resources("--project", str(workdir), "--benchmarks", str(benchmarks), "--check")
+    assert run.returncode == 1, run.stdout[-3000:] + run.stderr[-3000:]
+    assert "EXCEEDS: fig4: measured 99999 s > declared runtime 5 min" in run.stdout
+    assert "EXCEEDS: fig4: measured 123456 MB > declared mem_mb 1000" in run.stdout
+    assert run.stdout.count("EXCEEDS:") == 2

@@ -2,7 +2,10 @@
 # laws, the configuration slices that saved states depend on, and the runs of each stage by name. Every other file
 # defines only the names it alone uses.
 
+import hashlib
+
 from sphgag.physics.materials import law_gag
+from sphgag.studies.delamination import Settings as DelaminationSettings
 from sphgag.studies.onset import CRITERIA
 
 # the Donnan laws run side by side (wildcard {law}); a run's params hold its own law only (gag.charge_law), so that
@@ -23,6 +26,7 @@ PRESENTATION = {
     "studies/claims.py",
     "studies/sensitivity.py",
     "config.py",
+    "threads.py",
     "records/runlog.py",
     "records/provenance.py",
 }
@@ -81,11 +85,9 @@ DE_RUNS = [
     for sigma in (DE["critical_stresses_kPa"] if case == FIG5_SET else [DE["critical_stress_kPa"]])
     for criterion in DE["criteria"]
 ]
-DE_SETTINGS = {
-    k: v
-    for k, v in DE.items()
-    if k not in ("pool_sets", "critical_stresses_kPa", "convergence", "figures", "fracture_energy")
-}
+# what every run reads of the section (its sigma_cr and criterion are its own wildcards), so that adding or removing a
+# sigma_cr or a criterion reruns no other run
+DE_SETTINGS = {k: DE[k] for k in DelaminationSettings.config_keys()}
 DE_DX = [f"{dx:g}" for dx in DE["convergence"]["dx_um"]]
 DE_NAME = "{law}/{poolset}_{sigma}kPa_{criterion}"
 DE_RUN = f"results/delamination/runs/{DE_NAME}"
@@ -98,12 +100,19 @@ DE_TOUGHNESS = [f"{g:g}" for g in DE_FE["fracture_energies_J_m2"]] + (["paper"] 
 DE_FE_RUN = dict(poolset=FIG5_SET, sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"][0])
 DE_FE_PATH = f"{DE_RUN}_Gc{{gc}}"
 # every delamination run by its path under results/delamination/runs/ ("{law}/{poolset}_{sigma}kPa_{criterion}",
-# with "_Gc{gc}" for the fracture-energy runs): its growth and summary tables, snapshots, ParaView series, animation
-DE_RUN_NAMES = [DE_NAME.format(law=law, **r) for law in LAWS for r in DE_RUNS] + [
-    f"{DE_NAME}_Gc{{gc}}".format(law=law, gc=gc, **DE_FE_RUN) for law in LAWS for gc in DE_TOUGHNESS
-]
-DE_GROWTH = [f"results/delamination/runs/{name}_growth.csv" for name in DE_RUN_NAMES]
-DE_SUMMARIES = [f"results/delamination/runs/{name}_summary.csv" for name in DE_RUN_NAMES]
+# with "_Gc{gc}" for the fracture-energy runs): its growth and summary tables, snapshots, ParaView series, animation.
+# The runs of the paper's damage law (figures 5-7, the claims) and those of the law with a fracture energy (target
+# fracture_energy) have tables of their own.
+DE_PAPER_NAMES = [DE_NAME.format(law=law, **r) for law in LAWS for r in DE_RUNS]
+DE_FE_NAMES = [f"{DE_NAME}_Gc{{gc}}".format(law=law, gc=gc, **DE_FE_RUN) for law in LAWS for gc in DE_TOUGHNESS]
+DE_RUN_NAMES = DE_PAPER_NAMES + DE_FE_NAMES
+
+
+def run_tables(names, table):
+    """The ``table`` (growth or summary) of each delamination run of ``names``."""
+    return [f"results/delamination/runs/{name}_{table}.csv" for name in names]
+
+
 # the run whose dissipation is the fracture-energy runs' "paper" G_c (prescribed law), and every run that keeps
 # snapshots: the runs of the tables and that one, where it is not among them (a reduced configuration's sigma_cr)
 DE_MATCHED = DE_NAME.format(law="prescribed", **DE_FE_RUN)
@@ -121,3 +130,34 @@ wildcard_constraints:
     law="|".join(LAWS),
     criterion="|".join(CRITERIA),
     run=r"[^/]+",
+
+
+# Evidence of the claims that a target other than `all` makes (the sensitivity study's samples, say). Where this run
+# makes it (its target or `everything` asked for), it is an input, so that the claims wait for it. Otherwise the claims
+# read it as an earlier run left it, and its digest is a parameter: a new result redraws the claims table, but
+# `snakemake all` never pulls in the study that makes it. Without it, the claim's row says "not run". (Switching
+# between the two ways reruns the claims rule alone, to the same bytes.)
+def requested(target):
+    """Whether this invocation asked for the rule ``target`` (or `everything`)."""
+    asked = workflow.dag_settings.targets if workflow.dag_settings is not None else ()
+    return bool({target, "everything"} & set(asked))
+
+
+def study_input(path, target):
+    """Rule input: ``path`` where this run makes it (see above)."""
+    return lambda wildcards: [path()] if requested(target) else []
+
+
+def study_evidence(path, target):
+    """Rule parameter: how the claims read ``path`` (``made here``, its ``sha256`` where an earlier run made it, or
+    ``not run``)."""
+
+    def param(wildcards):
+        file = Path(path())
+        if requested(target):
+            return dict(path=str(file), state="made here")
+        if file.exists():
+            return dict(path=str(file), state="earlier run", sha256=hashlib.sha256(file.read_bytes()).hexdigest())
+        return dict(path=str(file), state="not run")
+
+    return param

@@ -73,13 +73,15 @@ rule delaminate_fracture_energy:
 
 
 rule delamination_growth:
-    """Every delamination run's growth rows (every charge law) in one tidy table."""
+    """Every delamination run's growth rows under the paper's damage law (every charge law) in one tidy table."""
     input:
-        DE_GROWTH,
+        run_tables(DE_PAPER_NAMES, "growth"),
     output:
         "results/delamination/growth.csv",
     log:
         "logs/delamination_growth.log",
+    benchmark:
+        "results/benchmarks/delamination_growth.tsv"
     conda:
         "../envs/sphgag.yaml"
     script:
@@ -87,9 +89,9 @@ rule delamination_growth:
 
 
 rule delamination_summary:
-    """One row per delamination run (every charge law)."""
+    """One row per delamination run under the paper's damage law (every charge law)."""
     input:
-        DE_SUMMARIES,
+        run_tables(DE_PAPER_NAMES, "summary"),
     output:
         report(
             "results/delamination/summary.csv",
@@ -99,6 +101,45 @@ rule delamination_summary:
         ),
     log:
         "logs/delamination_summary.log",
+    benchmark:
+        "results/benchmarks/delamination_summary.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/concat_tables.py"
+
+
+rule fracture_energy_growth:
+    """Every run of the damage law with a fracture energy: its growth rows (every charge law) in one tidy table."""
+    input:
+        run_tables(DE_FE_NAMES, "growth"),
+    output:
+        "results/delamination/fracture_energy/growth.csv",
+    log:
+        "logs/fracture_energy_growth.log",
+    benchmark:
+        "results/benchmarks/fracture_energy_growth.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/concat_tables.py"
+
+
+rule fracture_energy_summary:
+    """One row per run of the damage law with a fracture energy (every charge law), beside Griffith's closed form."""
+    input:
+        run_tables(DE_FE_NAMES, "summary"),
+    output:
+        report(
+            "results/delamination/fracture_energy/summary.csv",
+            caption="../report/fracture_energy_summary.rst",
+            category="5 Delamination",
+            labels={"result": "Table: the damage law with a fracture energy, beside Griffith"},
+        ),
+    log:
+        "logs/fracture_energy_summary.log",
+    benchmark:
+        "results/benchmarks/fracture_energy_summary.tsv"
     conda:
         "../envs/sphgag.yaml"
     script:
@@ -128,7 +169,11 @@ rule delamination_convergence_dx:
         numerics=config["numerics"],
         homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
         delamination=lambda wildcards: dict(
-            DE_SETTINGS, criteria=[wildcards.criterion], pool_sets={FIG5_SET: DE["pool_sets"][FIG5_SET]}
+            DE_SETTINGS,
+            criteria=[wildcards.criterion],
+            pool_sets={FIG5_SET: DE["pool_sets"][FIG5_SET]},
+            critical_stress_kPa=DE["critical_stress_kPa"],
+            pressure_mmHg=DE["pressure_mmHg"],
         ),
         gag=lambda wildcards: GAG[wildcards.law],
     script:
@@ -148,6 +193,8 @@ rule delamination_convergence:
         ),
     log:
         "logs/delamination_convergence.log",
+    benchmark:
+        "results/benchmarks/delamination_convergence.tsv"
     conda:
         "../envs/sphgag.yaml"
     script:

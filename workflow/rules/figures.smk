@@ -14,6 +14,8 @@ rule fig3a_mean:
         ),
     log:
         "logs/fig3a_mean.log",
+    benchmark:
+        "results/benchmarks/fig3a_mean.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -39,6 +41,8 @@ rule fig3b:
         ),
     log:
         "logs/fig3b.log",
+    benchmark:
+        "results/benchmarks/fig3b.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -69,6 +73,8 @@ rule fig3:
         ),
     log:
         "logs/fig3.log",
+    benchmark:
+        "results/benchmarks/fig3.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -94,6 +100,8 @@ rule fig1:
         ),
     log:
         "logs/fig1.log",
+    benchmark:
+        "results/benchmarks/fig1.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -124,6 +132,8 @@ rule fig4:
         ),
     log:
         "logs/fig4.log",
+    benchmark:
+        "results/benchmarks/fig4.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -151,6 +161,7 @@ rule claims:
         tips=rules.tip_stress.output[0],
         growth=rules.delamination_growth.output[0],
         delamination=rules.delamination_summary.output[0],
+        sensitivity=study_input(lambda: rules.sensitivity_tables.output.samples, "sensitivity"),
     output:
         table=report(
             "results/claims.csv",
@@ -161,6 +172,8 @@ rule claims:
         markdown="figures/claims.md",
     log:
         "logs/claims.log",
+    benchmark:
+        "results/benchmarks/claims.tsv"
     conda:
         "../envs/sphgag.yaml"
     params:
@@ -169,6 +182,7 @@ rule claims:
         criteria=config["delamination"]["criteria"],
         figures=config["delamination"]["figures"],
         laws=LAWS,
+        sensitivity=study_evidence(lambda: rules.sensitivity_tables.output.samples, "sensitivity"),
     script:
         "../scripts/claims.py"
 
@@ -188,6 +202,8 @@ rule swelling_convergence_figure:
         ),
     log:
         "logs/swelling_convergence_figure.log",
+    benchmark:
+        "results/benchmarks/swelling_convergence_figure.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -242,6 +258,8 @@ rule fig5:
         ),
     log:
         "logs/fig5.log",
+    benchmark:
+        "results/benchmarks/fig5.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -276,6 +294,8 @@ rule fig6:
         ),
     log:
         "logs/fig6.log",
+    benchmark:
+        "results/benchmarks/fig6.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -308,6 +328,8 @@ rule fig7:
         ),
     log:
         "logs/fig7.log",
+    benchmark:
+        "results/benchmarks/fig7.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1

@@ -42,6 +42,8 @@ rule homeostasis_target:
         "results/homeostasis/target.csv",
     log:
         "logs/homeostasis_target.log",
+    benchmark:
+        "results/benchmarks/homeostasis_target.tsv"
     conda:
         "../envs/sphgag.yaml"
     params:
@@ -88,6 +90,8 @@ rule transmural:
         "results/calibration/transmural.csv",
     log:
         "logs/transmural.log",
+    benchmark:
+        "results/benchmarks/transmural.tsv"
     conda:
         "../envs/sphgag.yaml"
     script:
@@ -104,6 +108,8 @@ rule bilayer_table:
         activation="results/calibration/activation_summary.csv",
     log:
         "logs/bilayer_table.log",
+    benchmark:
+        "results/benchmarks/bilayer_table.tsv"
     conda:
         "../envs/sphgag.yaml"
     params:

@@ -10,7 +10,7 @@ SE_SCENARIO = dict(
     numerics=config["numerics"],
     homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
     swelling=SWELL_SETTINGS,
-    delamination=DE_SETTINGS,
+    delamination=dict(DE_SETTINGS, critical_stress_kPa=DE["critical_stress_kPa"], pressure_mmHg=DE["pressure_mmHg"]),
     pool=DE["pool_sets"][FIG5_SET][0],
     pool_set=FIG5_SET,
     criterion=DE["criteria"][0],
@@ -28,6 +28,13 @@ SE_SIZES = dict(
     sobol=SE["sobol"]["base_samples"] * (SE["sobol"]["inputs"] + 2),
 )
 SE_BATCHES = {m: range(math.ceil(n / SE["batch_size"])) for m, n in SE_SIZES.items()}
+# what a design reads of its method's settings, and what its indices read (a resampling setting reruns no sample)
+SE_DESIGN_KEYS = dict(morris=("trajectories", "levels", "seed"), sobol=("inputs", "base_samples", "seed"))
+SE_INDEX_KEYS = dict(morris=("levels", "resamples", "confidence", "seed"), sobol=("resamples", "confidence", "seed"))
+SE_SETTINGS = {
+    purpose: {m: {k: SE[m][k] for k in keys[m]} for m in ("morris", "sobol")}
+    for purpose, keys in (("design", SE_DESIGN_KEYS), ("indices", SE_INDEX_KEYS))
+}
 SE_BATCH = "results/sensitivity/{method}/{law}/batch{batch}.csv"
 # a method's design, indices and samples (the Sobol design reads the Morris indices, which are written after it)
 SE_DESIGN = "results/sensitivity/{method}/design.csv"
@@ -57,13 +64,15 @@ rule sensitivity_design:
         SE_DESIGN,
     log:
         "logs/sensitivity/{method}_design.log",
+    benchmark:
+        "results/benchmarks/sensitivity_{method}_design.tsv"
     wildcard_constraints:
         method="nominal|morris",
     conda:
         "../envs/sphgag.yaml"
     params:
         ranges=SE_RANGES,
-        morris=lambda wildcards: SE["morris"] if wildcards.method == "morris" else {},
+        morris=lambda wildcards: SE_SETTINGS["design"]["morris"] if wildcards.method == "morris" else {},
         nominal=lambda wildcards: (
             {n: pool_response.nominal(SE_SCENARIO, n) for n in SE_RANGES} if wildcards.method == "nominal" else {}
         ),
@@ -81,11 +90,13 @@ rule sobol_design:
         SE_DESIGN.format(method="sobol"),
     log:
         "logs/sensitivity/sobol_design.log",
+    benchmark:
+        "results/benchmarks/sensitivity_sobol_design.tsv"
     conda:
         "../envs/sphgag.yaml"
     params:
         ranges=SE_RANGES,
-        sobol=SE["sobol"],
+        sobol=SE_SETTINGS["design"]["sobol"],
     script:
         "../scripts/sensitivity_design.py"
 
@@ -130,18 +141,20 @@ rule sensitivity_method:
         samples=SE_SAMPLES,
     log:
         "logs/sensitivity/{method}_indices.log",
+    benchmark:
+        "results/benchmarks/sensitivity_{method}_indices.tsv"
     wildcard_constraints:
         method="morris|sobol",
     conda:
         "../envs/sphgag.yaml"
     params:
         ranges=SE_RANGES,
-        settings=lambda wildcards: SE[wildcards.method],
+        settings=lambda wildcards: SE_SETTINGS["indices"][wildcards.method],
     script:
         "../scripts/sensitivity_indices.py"
 
 
-rule sensitivity:
+rule sensitivity_tables:
     """The study in three tidy tables: the indices, every sample with its inputs and outputs (the nominal one first),
     and the samples without an output (a failed run, or no equilibrium at the stated concentration), by their inputs."""
     input:
@@ -159,6 +172,8 @@ rule sensitivity:
         failures="results/sensitivity/failures.csv",
     log:
         "logs/sensitivity/aggregate.log",
+    benchmark:
+        "results/benchmarks/sensitivity_aggregate.tsv"
     conda:
         "../envs/sphgag.yaml"
     script:
@@ -169,7 +184,7 @@ rule sensitivity_figure:
     """Morris mu* against sigma, and Sobol S1 and ST with their intervals, for every output and charge law."""
     input:
         code=PLOTS,
-        indices=rules.sensitivity.output.indices,
+        indices=rules.sensitivity_tables.output.indices,
     output:
         pdf="figures/sensitivity.pdf",
         png=report(
@@ -180,6 +195,8 @@ rule sensitivity_figure:
         ),
     log:
         "logs/sensitivity_figure.log",
+    benchmark:
+        "results/benchmarks/sensitivity_figure.tsv"
     conda:
         "../envs/sphgag.yaml"
     script:
@@ -228,6 +245,8 @@ rule delamination_map:
         ),
     log:
         "logs/delamination_map.log",
+    benchmark:
+        "results/benchmarks/delamination_map.tsv"
     conda:
         "../envs/sphgag.yaml"
     script:
@@ -251,6 +270,8 @@ rule delamination_map_figure:
         ),
     log:
         "logs/delamination_map_figure.log",
+    benchmark:
+        "results/benchmarks/delamination_map_figure.tsv"
     conda:
         "../envs/sphgag.yaml"
     params:

@@ -74,6 +74,8 @@ rule tip_stress:
         ),
     log:
         "logs/tip_stress.log",
+    benchmark:
+        "results/benchmarks/tip_stress.tsv"
     conda:
         "../envs/sphgag.yaml"
     script:
@@ -161,6 +163,8 @@ rule swelling_convergence:
         ),
     log:
         "logs/swelling_convergence.log",
+    benchmark:
+        "results/benchmarks/swelling_convergence.tsv"
     conda:
         "../envs/sphgag.yaml"
     script:

@@ -52,6 +52,8 @@ rule verify_pool:
         ),
     log:
         "logs/verify_pool.log",
+    benchmark:
+        "results/benchmarks/verify_pool.tsv"
     conda:
         "../envs/sphgag.yaml"
     script:
@@ -66,6 +68,8 @@ rule verify_pool_profiles:
         "results/verification/elliptic_pool_profiles.csv",
     log:
         "logs/verify_pool_profiles.log",
+    benchmark:
+        "results/benchmarks/verify_pool_profiles.tsv"
     conda:
         "../envs/sphgag.yaml"
     script:
@@ -88,6 +92,8 @@ rule verification_pool_figure:
         ),
     log:
         "logs/verification_pool_figure.log",
+    benchmark:
+        "results/benchmarks/verification_pool_figure.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -147,6 +153,8 @@ rule verify_crack:
         ),
     log:
         "logs/verify_crack.log",
+    benchmark:
+        "results/benchmarks/verify_crack.tsv"
     conda:
         "../envs/sphgag.yaml"
     script:
@@ -169,6 +177,8 @@ rule verification_crack_figure:
         ),
     log:
         "logs/verification_crack_figure.log",
+    benchmark:
+        "results/benchmarks/verification_crack_figure.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1

@@ -13,6 +13,8 @@ rule paraview_delamination:
         provenance="results/provenance/paraview_delamination_{law}_{run}.json",
     log:
         "logs/paraview/delamination/{law}/{run}.log",
+    benchmark:
+        "results/benchmarks/paraview_delamination_{law}_{run}.tsv"
     conda:
         "../envs/sphgag.yaml"
     resources:
@@ -33,6 +35,8 @@ rule paraview_swelling:
         provenance="results/provenance/paraview_swelling_{law}_{model}_{case}_{pressure}mmHg.json",
     log:
         "logs/paraview/swelling/{law}/{model}_{case}_{pressure}mmHg.log",
+    benchmark:
+        "results/benchmarks/paraview_swelling_{law}_{model}_{case}_{pressure}mmHg.tsv"
     conda:
         "../envs/sphgag.yaml"
     resources:
@@ -57,6 +61,8 @@ rule animation:
         ),
     log:
         "logs/animation/{law}/{run}.log",
+    benchmark:
+        "results/benchmarks/animation_{law}_{run}.tsv"
     conda:
         "../envs/sphgag.yaml"
     script:

@@ -5,10 +5,12 @@ claims on the pool sets of their figures (``params.figures``, i.e. ``delaminatio
 
 import pandas as pd
 
+from sphgag import threads
 from sphgag.records import runlog
 from sphgag.studies import claims, delamination
 
 sm = snakemake  # noqa: F821
+threads.use(sm.threads)
 with runlog.run("claims", sm.log[0]) as log:
     p = sm.params
     t = {
@@ -17,8 +19,15 @@ with runlog.run("claims", sm.log[0]) as log:
     }
     # the paper's claims are about its damage law (eq. 2.28 as printed)
     t["growth"], t["delamination"] = delamination.paper_law(t["growth"]), delamination.paper_law(t["delamination"])
+    # the evidence of other targets: read where this run or an earlier one made it, else the claim says "not run"
+    studies = {name: pd.read_csv(p[name]["path"]) if p[name]["state"] != "not run" else None for name in claims.TARGETS}
     evidence = claims.Evidence(
-        **t, cases=p.cases, max_concentration=p.max_concentration, criteria=tuple(p.criteria), figures=p.figures
+        **t,
+        **studies,
+        cases=p.cases,
+        max_concentration=p.max_concentration,
+        criteria=tuple(p.criteria),
+        figures=p.figures,
     )
     found = claims.evaluate(evidence, p.laws)
     df = claims.table(found)

@@ -7,9 +7,13 @@ produce (e.g. a reduced sweep) is reported as ``n/a``, or left out where the pap
 (C4-C5: two profiled pressures; C11-C12: both models).
 
 The claims table is built from the lists :data:`CALIBRATION` (C1-C5, no pool: ``charge_law`` "-") and :data:`POOL`
-(figure 4: C6-C12; delamination: C13-C17), the pool claims evaluated once per charge law with the same criteria
-(:func:`evaluate`; column ``charge_law``): ``prescribed`` is the paper's model, ``conserved`` our deviation. A new
-claim is a function and an entry of its list.
+(figure 4: C6-C12; delamination: C13-C17; the abstract's sensitivity study: C18), the pool claims evaluated once per
+charge law with the same criteria (:func:`evaluate`; column ``charge_law``): ``prescribed`` is the paper's model,
+``conserved`` our deviation. A new claim is a function and an entry of its list.
+
+Most claims rest on the paper's figures, which the pipeline's default target (``all``) makes. A claim whose evidence
+another target makes (C18: ``snakemake sensitivity``) is in the table whether or not that target has run: until it
+has, its row says ``not run`` and names the command (:meth:`Evidence.not_run`).
 """
 
 from __future__ import annotations
@@ -26,7 +30,7 @@ class Claim:
     statement: str
     paper_value: str
     our_value: str
-    holds: str  # yes | no | n/a
+    holds: str  # yes | no | n/a | not run (its evidence is made by a target that has not run)
     criterion: str
     charge_law: str = "-"  # a pool claim's Donnan law (sphgag.physics.materials.CHARGE_LAWS); "-": no pool
 
@@ -40,6 +44,8 @@ class Evidence:
     (swelling/tip_stress.csv), ``growth`` and ``delamination`` (delamination/growth.csv and summary.csv, the paper's
     damage law), with ``cases`` (each swelling pool's angular extent), ``max_concentration`` of the swelling runs,
     the onset ``criteria`` (the first is the default) and the pool sets' roles ``figures`` (``delamination.figures``).
+    Other targets: ``sensitivity`` (sensitivity/samples.csv, target ``sensitivity``); ``targets`` names the target
+    that makes each of these (:data:`TARGETS`), for the rows of a claim whose evidence is missing.
     """
 
     mean: pd.DataFrame | None = None
@@ -54,13 +60,25 @@ class Evidence:
     max_concentration: float | None = None
     criteria: tuple = ()
     figures: dict = field(default_factory=dict)
+    sensitivity: pd.DataFrame | None = None
 
     def of_law(self, law: str) -> Evidence:
         """The evidence of one charge law: its rows of the pool tables (column ``charge_law``)."""
         pools = {
-            k: of_law(getattr(self, k), law) for k in ("tips", "growth", "delamination") if getattr(self, k) is not None
+            k: of_law(getattr(self, k), law)
+            for k in ("tips", "growth", "delamination", "sensitivity")
+            if getattr(self, k) is not None
         }
         return replace(self, **pools)
+
+    def not_run(self, claim: Claim, evidence: str) -> Claim:
+        """``claim`` (its id, statement and criterion) as the row of a claim whose ``evidence`` (a field) is missing:
+        the target that makes it has not run."""
+        return replace(claim, our_value=f"not run: `snakemake {TARGETS[evidence]}`", holds="not run")
+
+
+#: the evidence the default target does not make, by the Evidence field that holds it, and the target that makes it
+TARGETS = {"sensitivity": "sensitivity"}
 
 
 def _yes(flag) -> str:
@@ -545,6 +563,37 @@ def c17_offset_pools_link(e: Evidence) -> Claim:
     )
 
 
+def c18_onset_across_inputs(e: Evidence) -> Claim:
+    """The abstract: the findings, "combined with a sensitivity study on the input parameters of the model", suggest
+    that localised swelling can cause damage. Our reading: delamination starts (eq. 2.28 reaches sigma_cr) in most
+    samples of the sensitivity study, whose inputs span the ranges of its configuration (README)."""
+    claim = Claim(
+        "C18",
+        "Across the model's input ranges (the sensitivity study), swelling pools start delamination",
+        "abstract: a sensitivity study on the input parameters supports the findings",
+        "",
+        "",
+        "damage starts (onset below the end of the ramp) in more than half of the samples that ran",
+    )
+    if e.sensitivity is None:
+        return e.not_run(claim, "sensitivity")
+    ran = e.sensitivity[e.sensitivity.status == "ok"]
+    if not len(ran):
+        return replace(claim, our_value="no sample ran", holds="n/a")
+    onset = ran[~ran.onset_censored.astype(bool)]
+    share = len(onset) / len(ran)
+    where = (
+        f", at {onset.onset_concentration_mEq_l.min():g}-{onset.onset_concentration_mEq_l.max():g} mEq/l"
+        if len(onset)
+        else ""
+    )
+    value = (
+        f"onset in {len(onset)} of {len(ran)} samples ({100 * share:.0f} %){where}; "
+        f"{int(ran.propagated.sum())} propagate; {len(e.sensitivity) - len(ran)} failed"
+    )
+    return replace(claim, our_value=value, holds=_yes(share > 0.5))
+
+
 # the claims in the table's order: the calibration claims once, each pool claim once per charge law
 CALIBRATION = [
     c1_pressure_diameter,
@@ -569,7 +618,8 @@ DELAMINATION = [
     c16_pairs_merge,
     c17_offset_pools_link,
 ]
-POOL = SWELLING + DELAMINATION
+SENSITIVITY = [c18_onset_across_inputs]
+POOL = SWELLING + DELAMINATION + SENSITIVITY
 
 
 def _found(claims, e: Evidence) -> list[Claim]:
@@ -623,7 +673,8 @@ def markdown(df: pd.DataFrame) -> str:
         "Generated by the `claims` rule from the pipeline's CSV tables. `holds` follows the criterion "
         "in the last column; nothing was tuned to make a claim hold. The pool claims (C6-C17) are evaluated once "
         "per charge law, with the same criteria: `prescribed` (Pi(c), eqs. 2.25-2.27 as printed) is the paper's "
-        "model, the one to compare with the paper; `conserved` (Pi at c/J) is our documented deviation.",
+        "model, the one to compare with the paper; `conserved` (Pi at c/J) is our documented deviation. A claim "
+        "whose evidence another target makes says `not run` until that target has run, and names the command.",
         "",
         "| id | charge law | claim | paper | ours | holds | criterion |",
         "|---|---|---|---|---|---|---|",

@@ -136,13 +136,19 @@ class Settings:
             raise ValueError(f"damage_law must be one of {', '.join(damage.LAWS)}, got {self.damage_law!r}")
 
     @classmethod
+    def config_keys(cls) -> tuple[str, ...]:
+        """The keys of the ``delamination`` configuration section that every run reads (:meth:`from_config`); sigma_cr,
+        the onset criterion and the damage law are each run's own."""
+        own = ("critical_stress_kPa", "criterion", "damage_law", "fracture_energy_J_m2")
+        return tuple(f.name for f in fields(cls) if f.name not in own)
+
+    @classmethod
     def from_config(
         cls, de: dict, critical_stress_kPa: float, criterion: str, fracture_energy_J_m2: float | None = None
     ) -> Settings:
-        """The settings of one run from the ``delamination`` configuration section: eq. (2.28) as printed, or the
-        fracture-energy law where ``fracture_energy_J_m2`` (G_c) is given."""
-        fixed = ("critical_stress_kPa", "criterion", "damage_law", "fracture_energy_J_m2")
-        keys = [f.name for f in fields(cls) if f.name not in fixed]
+        """The settings of one run from the ``delamination`` configuration section (its :meth:`config_keys`): eq.
+        (2.28) as printed, or the fracture-energy law where ``fracture_energy_J_m2`` (G_c) is given."""
+        keys = cls.config_keys()
         law = dict(damage_law="paper")
         if fracture_energy_J_m2 is not None:
             law = dict(damage_law="fracture_energy", fracture_energy_J_m2=float(fracture_energy_J_m2))
@@ -706,6 +712,23 @@ def grow(
     """
     args = (model, resume if resume is not None else start, sectors, settings, numerics, gag, base, run, snapshot_steps)
     return (GrowthRun.resume(*args) if resume is not None else GrowthRun.seed(*args)).run()
+
+
+def seeded_only(
+    model: Model,
+    start: solver.State,
+    sectors: list[Sector],
+    settings: Settings,
+    numerics: Numerics,
+    gag: dict,
+    base,
+    stop: str,
+    run: str | None = None,
+) -> Result:
+    """A run that ends where its pools are seeded, before the ramp, for the reason ``stop`` (e.g. a damage law whose
+    G_c is not defined): its one state is the seeded wall at c = 0 (``settings`` seed it; no damage law acts)."""
+    log.warning("[%s] %s: the run ends where its pools are seeded", run or model.name, stop)
+    return GrowthRun.seed(model, start, sectors, settings, numerics, gag, base, run=run).result(stop, 0.0)
 
 
 def save_snapshots(path, model: Model, snapshots, params: dict) -> None:
