@@ -77,3 +77,40 @@ def test_a_series_written_twice_is_the_same_bytes(ci_config, grown, tmp_path):
     b = paraview.write_series(tmp_path / "b" / "run.pvd", frames)
     for fa in sorted(a.parent.iterdir()):
         assert fa.read_bytes() == (b.parent / fa.name).read_bytes(), fa.name
+
+
+def test_an_animation_shows_every_frames_stresses_and_partial_damage(ci_config, grown, tmp_path):
+    """Each frame has its own colour range (a wall at 1/100 of the last frame's stresses is not drawn white), and
+    tissue with 0 < D < 1 has a colour of its own."""
+    from PIL import Image
+
+    from sphgag.views import animation
+
+    gag, path, _ = grown
+    last = paraview.delamination_frames(intact_wall(ci_config), path, gag, {"run": "test"})[-1]
+    quiet = dict(last.data, cauchy_rr_kPa=last.data["cauchy_rr_kPa"] / 100.0, damage=np.zeros_like(last.data["damage"]))
+    tissue = np.flatnonzero(last.data["origin"] == 0)
+    damaged = dict(last.data, damage=last.data["damage"].copy())
+    box = animation.view([last])
+    inside = (last.x[tissue, 0] > box[0]) & (last.x[tissue, 0] < box[1])
+    inside &= (last.x[tissue, 1] > box[2]) & (last.x[tissue, 1] < box[3])
+    damaged["damage"][tissue[inside][:20]] = 0.5
+    frames = [paraview.Frame(0.0, last.x, quiet), paraview.Frame(1.0, last.x, damaged)]
+    assert animation.stress_range(frames[0], box) == pytest.approx(
+        animation.stress_range(dataclasses.replace(frames[1], data=dict(damaged, damage=quiet["damage"])), box) / 100
+    )
+    gif = animation.write(tmp_path / "run.gif", frames, "test")
+    with Image.open(gif) as im:
+        pixels = []
+        for k in range(im.n_frames):
+            im.seek(k)
+            pixels.append(np.asarray(im.convert("RGB"), dtype=int).reshape(-1, 3))
+
+    def saturated(rgb):  # strong reds or blues of the stress map
+        return int(np.sum((np.abs(rgb[:, 0] - rgb[:, 2]) > 120) & (rgb.max(axis=1) - rgb.min(axis=1) > 120)))
+
+    orange = np.array([0xD9, 0x5F, 0x02])
+    for k, rgb in enumerate(pixels):
+        assert saturated(rgb) > 200, k  # the quiet frame's stresses are visible too
+    assert np.sum(np.all(np.abs(pixels[1] - orange) < 12, axis=1)) > 50  # partial damage, in its colour
+    assert np.sum(np.all(np.abs(pixels[0] - orange) < 12, axis=1)) < 5  # and not where there is none
