@@ -154,14 +154,16 @@ def _lu(model: Model, data: np.ndarray):
 # (a chord step costs one force evaluation and one LU solve, a fresh Newton step 20-30 times more).
 CHORD_CONTRACTION = 0.5
 CHORD_STEPS = 12
-# The transition of a damage pass, whose fallback where it finds no equilibrium is a snap (sphgag.engine.snap), is
-# bisected at most FALLBACK_BISECTIONS times (increments down to 1/16 of it), and Newton's method there gives up after
-# STALL_ITERATIONS fresh iterations that do not halve the relative residual: near a state with no equilibrium the
-# residual has a positive local minimum, where deeper bisection and more iterations only delay the snap
-# (:func:`transition_options`; a snap's own Newton handoffs stop the same way). Load steps (concentration, pressure)
-# keep the configuration's full budget, even where they too have a fallback (a snap in a growth run, the pool's volume
-# as the control in a swelling run): a slow but converging iteration (the CI prescribed-law active pools at
-# 150 mEq/l) is not cut short.
+# A step that has a fallback where it finds no equilibrium is bisected at most FALLBACK_BISECTIONS times (increments
+# down to 1/16 of it): deeper bisection only delays the fallback (a concentration step of a swelling run, whose fallback
+# is the pool's volume as the control, sphgag.engine.pool_volume: the full 10 bisections spent up to 160 s of a
+# 220 s run on a step with no equilibrium, and gave the same states). In the transition of a damage pass, whose
+# fallback is a snap (sphgag.engine.snap), Newton's method also gives up after STALL_ITERATIONS fresh iterations that
+# do not halve the relative residual: near a state with no equilibrium the residual has a positive local minimum
+# (:func:`transition_options`; a snap's own Newton handoffs stop the same way). The swelling steps keep Newton's full
+# iteration budget: on the swollen prescribed-law pools a converging step can take 20 damped iterations that each cut
+# the residual by only a few per cent, which the stall test would cut short (losing states the path has). Other load
+# steps (pressure, conversion, the concentration steps of a growth run) keep the configuration's full budget.
 FALLBACK_BISECTIONS = 4
 STALL_ITERATIONS = 8
 
@@ -358,8 +360,8 @@ def _merit(ev: Evaluation, k: float) -> float:
 
 
 def transition_options(options: dict) -> dict:
-    """Path options (:func:`follow_path`) for the transition of a damage pass: at most FALLBACK_BISECTIONS
-    bisections, and Newton's method stops where it stagnates (STALL_ITERATIONS)."""
+    """Path options (:func:`follow_path`) for the transition of a damage pass, whose fallback is a snap: at most
+    FALLBACK_BISECTIONS bisections, and Newton's method stops where it stagnates (STALL_ITERATIONS)."""
     return dict(
         options, max_bisections=min(options.get("max_bisections", 10), FALLBACK_BISECTIONS), stall=STALL_ITERATIONS
     )

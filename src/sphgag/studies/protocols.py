@@ -489,9 +489,10 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
     states = [PoolState.of("intact", 0.0, intact), PoolState.of("converted", 0.0, conv)]
     last = conv
     for k, c in enumerate(cs):
-        try:
+        try:  # a step with a fallback: where it finds no equilibrium on its path, the pool's volume takes over
             target = [swelling_load(base, 1.0, c)]
-            last = solver.follow_path(model, last.x, last.load, target, **opts)[-1]
+            budget = dict(opts, max_bisections=solver.FALLBACK_BISECTIONS)  # Newton keeps its iterations: see solver
+            last = solver.follow_path(model, last.x, last.load, target, **budget)[-1]
         except solver.NotConverged as exc:
             log.info("[%s] c = %g mEq/l: %s; the pool's volume becomes the control", run, c, exc.reason)
             path, reached = pool_volume.continue_path(model, last, model.props.converting, list(cs[k:]), **opts)
