@@ -176,3 +176,18 @@ def test_identical_fibre_families_are_merged_exactly():
     assert merged[0, mt.NFAM] == 3
     F = random_F(0.2)
     assert np.allclose(piola(F, 1.2, merged), piola(F, 1.2, p4), rtol=1e-13)
+
+
+def test_a_converted_particle_stretched_many_fold_has_a_finite_tangent():
+    """A ruptured particle (fibre fractions set to 0) inside a swollen pool reaches J of 30-60: its
+    fibre laws overflow there (exp of a huge I4), and 0 x inf made its tangent NaN, which LU turned
+    into an exactly zero pivot. A family a particle has lost contributes nothing, exactly."""
+    p = mixture_props()
+    mt.convert_to_gag(p, [0], 1.0, 0.1, 89.71, swelling_pressure=91.0)
+    C, A = np.empty((3, 3)), np.empty((4, 4))
+    F = 7.0 * np.eye(2)
+    mt.tangent_modulus(F[0, 0], F[0, 1], F[1, 0], F[1, 1], 1.0, np.cos(THETA), np.sin(THETA), p, 0, C, A)
+    assert np.isfinite(A).all() and np.isfinite(piola(F, 1.0, p)).all() and np.isfinite(energy(F, 1.0, p))
+    g = gag_props()
+    g[0, mt.PI] = 91.0
+    assert np.allclose(piola(F, 1.0, p), piola(F, 1.0, g), rtol=1e-12)

@@ -295,7 +295,7 @@ def _factorise(model: Model, ev: Evaluation, data: np.ndarray, damping: float, r
     try:
         solve = _lu(model, data)
     except RuntimeError as exc:  # exactly singular factor
-        raise NotConverged(run, ev.load, f"singular Jacobian ({exc})") from exc
+        raise NotConverged(run, ev.load, f"singular Jacobian ({exc})", ev) from exc
     return Factorisation(solve, scale, cons.copy(), damping)
 
 

@@ -258,8 +258,8 @@ def pk2(c_rr, c_tt, c_rt, lz, props, i):
     for k in range(int(props[i, NFAM])):
         base = FAM0 + k * FAM_STRIDE
         s2 = props[i, base + SIN2]
-        if s2 == 0.0:
-            continue  # e.g. the axial family: no in-plane stress under plane strain
+        if s2 == 0.0 or props[i, base + PHI] == 0.0:
+            continue  # the axial family (no in-plane stress under plane strain), or a family a particle has lost
         I4 = _fibre_I4(props, i, base, c_tt, lz)
         w1 = _fibre_slope(I4, props[i, base + C1P], props[i, base + C2P], props[i, base + C1M], props[i, base + C2M])
         s_tt += 2.0 * props[i, base + PHI] * w1 * props[i, base + GF] ** 2 * s2
@@ -298,8 +298,8 @@ def material_tangent(c_rr, c_tt, c_rt, lz, props, i, C):
     for k in range(int(props[i, NFAM])):
         base = FAM0 + k * FAM_STRIDE
         s2 = props[i, base + SIN2]
-        if s2 == 0.0:
-            continue
+        if s2 == 0.0 or props[i, base + PHI] == 0.0:
+            continue  # as in pk2: 0 x W'' would be NaN where W'' overflows (a GAG particle stretched many-fold)
         I4 = _fibre_I4(props, i, base, c_tt, lz)
         w2 = _fibre_terms(I4, props[i, base + C1P], props[i, base + C2P], props[i, base + C1M], props[i, base + C2M])[2]
         C[1, 1] += 4.0 * props[i, base + PHI] * w2 * props[i, base + GF] ** 4 * s2 * s2
@@ -326,6 +326,8 @@ def strain_energy(c_rr, c_tt, c_rt, lz, props, i):
     W += donnan(J, props[i, FCD], props[i, CBATH], props[i, RT])[2]
     for k in range(int(props[i, NFAM])):
         base = FAM0 + k * FAM_STRIDE
+        if props[i, base + PHI] == 0.0:
+            continue
         I4 = _fibre_I4(props, i, base, c_tt, lz)
         w0 = _fibre_terms(I4, props[i, base + C1P], props[i, base + C2P], props[i, base + C1M], props[i, base + C2M])[0]
         W += props[i, base + PHI] * w0
