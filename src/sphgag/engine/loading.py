@@ -145,8 +145,20 @@ def pressure_forces(x, inner, pressure_kPa, lz):
     return f
 
 
-def add_pressure_stiffness(data, blocks_of, inner, pressure_kPa, lz):
-    """Add d(P lz dA/dx)/dx to Jacobian blocks; ``blocks_of(p, q)`` gives a block index (no paper equation).
+def pressure_stiffness_blocks(blocks_of, inner) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The Jacobian blocks that the follower pressure's stiffness fills (see :func:`add_pressure_stiffness`):
+    ``(p, next)`` and ``(p, previous)`` for each inner-surface particle ``p``, and the diagonal blocks of the first and
+    last (the mirror closures). ``blocks_of(p, q)`` gives a block index."""
+    if inner.size == 0:  # no lumen (e.g. a free patch)
+        return np.empty(0, np.int64), np.empty(0, np.int64), np.empty(0, np.int64)
+    nxt = np.array([blocks_of(inner[k], inner[k + 1]) for k in range(inner.size - 1)], dtype=np.int64)
+    prev = np.array([blocks_of(inner[k], inner[k - 1]) for k in range(1, inner.size)], dtype=np.int64)
+    ends = np.array([blocks_of(inner[0], inner[0]), blocks_of(inner[-1], inner[-1])], dtype=np.int64)
+    return nxt, prev, ends
+
+
+def add_pressure_stiffness(data, blocks, pressure_kPa, lz):
+    """Add d(P lz dA/dx)/dx to Jacobian blocks ``blocks`` (:func:`pressure_stiffness_blocks`; no paper equation).
 
     d(dA/dx_k)/dy_{k+1} = 1/2, d(dA/dx_k)/dy_{k-1} = -1/2, d(dA/dy_k)/dx_{k-1} = 1/2,
     d(dA/dy_k)/dx_{k+1} = -1/2; the mirror closures add d(dA/dx)/dy = 1/2 at the
@@ -155,23 +167,13 @@ def add_pressure_stiffness(data, blocks_of, inner, pressure_kPa, lz):
     if not pressure_kPa:
         return
     c = 0.5 * pressure_kPa * lz
-    n = inner.size
-    for k in range(n):
-        p = inner[k]
-        if k + 1 < n:
-            b = blocks_of(p, inner[k + 1])
-            data[b, 0, 1] += c
-            data[b, 1, 0] -= c
-        if k > 0:
-            b = blocks_of(p, inner[k - 1])
-            data[b, 0, 1] -= c
-            data[b, 1, 0] += c
-    b = blocks_of(inner[0], inner[0])
-    data[b, 0, 1] += c
-    data[b, 1, 0] += c
-    b = blocks_of(inner[-1], inner[-1])
-    data[b, 0, 1] += c
-    data[b, 1, 0] += c
+    nxt, prev, ends = blocks
+    data[nxt, 0, 1] += c
+    data[nxt, 1, 0] -= c
+    data[prev, 0, 1] -= c
+    data[prev, 1, 0] += c
+    np.add.at(data, (ends, 0, 1), c)
+    np.add.at(data, (ends, 1, 0), c)
 
 
 def prescribed_inner_positions(X_inner, r_in):

@@ -19,7 +19,13 @@ from ..physics import materials
 from . import forces, kernel
 from .geometry import Layout
 from .kernel import Neighbours
-from .loading import Load, add_pressure_stiffness, prescribed_inner_positions, pressure_forces
+from .loading import (
+    Load,
+    add_pressure_stiffness,
+    prescribed_inner_positions,
+    pressure_forces,
+    pressure_stiffness_blocks,
+)
 
 
 @dataclass
@@ -100,6 +106,7 @@ class Model:
         n_ext = self.n + self.nb.ghost_owner.size
         self._xe, self._fe = np.empty((n_ext, 2)), np.empty((n_ext, 2))
         self.block_diagonal = np.array([self.block_index(i, i) for i in range(self.n)], dtype=np.int64)
+        self.pressure_blocks = pressure_stiffness_blocks(self.block_index, self.layout.inner_surface)
 
     @property
     def n(self) -> int:
@@ -115,16 +122,27 @@ class Model:
         key = (load.material if callable(self.props) else None, self.hourglass_alpha)
         if "props" not in self._cache or self._cache["key"] != key:
             props = np.ascontiguousarray(self.props(load) if callable(self.props) else self.props)
-            V = self.layout.volume
-            hgc = np.empty(self.nb.n_entries)
-            forces.hourglass_coefficients(
-                V, self.nb.ptr, self.nb.nbr, self.nb.R, self.nb.w, props, self.hourglass_alpha, hgc
-            )
-            beta, ah, sh = kernel.hourglass_gradients(self.nb, V, props[:, materials.TISSUE])
-            hgc *= beta
-            pairs = forces.PairData.pack(self.nb, V, hgc, ah)
-            self._cache.update(key=key, props=props, hgc=hgc, pairs=pairs, hg=(ah, sh))
+            self._cache.update(key=key, props=props)
+            self._stencil(props)
         return self._cache["props"], self._cache["hgc"], self._cache["pairs"]
+
+    def _stencil(self, props) -> None:
+        """Hourglass coefficients, hourglass stencil and packed pair data of ``props``: rebuilt only where what they
+        read (alpha, each particle's hourglass modulus and tissue fraction) changed, not for a new swelling pressure
+        (the unknown of volume control, a new value every iteration)."""
+        cols = props[:, [materials.HG_E, materials.TISSUE]]
+        old = self._cache.get("stencil_of")
+        if old is not None and old[0] == self.hourglass_alpha and np.array_equal(old[1], cols):
+            return
+        V = self.layout.volume
+        hgc = np.empty(self.nb.n_entries)
+        forces.hourglass_coefficients(
+            V, self.nb.ptr, self.nb.nbr, self.nb.R, self.nb.w, props, self.hourglass_alpha, hgc
+        )
+        beta, ah, sh = kernel.hourglass_gradients(self.nb, V, props[:, materials.TISSUE])
+        hgc *= beta
+        pairs = forces.PairData.pack(self.nb, V, hgc, ah)
+        self._cache.update(stencil_of=(self.hourglass_alpha, cols), hgc=hgc, pairs=pairs, hg=(ah, sh))
 
     def hourglass_stencil(self, load: Load):
         """``(ah, sh)``: the hourglass stencil's corrected gradients for ``load`` (see :meth:`material`)."""
@@ -202,7 +220,7 @@ class Model:
             self.map_ptr,
             data,
         )
-        add_pressure_stiffness(data, self.block_index, lay.inner_surface, load.pressure_kPa or 0.0, load.axial_stretch)
+        add_pressure_stiffness(data, self.pressure_blocks, load.pressure_kPa or 0.0, load.axial_stretch)
         return data
 
     def block_index(self, p: int, q: int) -> int:
