@@ -129,6 +129,19 @@ def test_a_huge_critical_stress_gives_no_growth_and_the_swelling_state(ci_config
         assert ours[key] == pytest.approx(theirs[key], rel=2e-3, abs=0.05), key
 
 
+def test_a_run_that_ends_where_its_pools_are_seeded_is_a_row_and_a_summary(ci_config, wall):
+    """A matched G_c without growth to match (the paper's law dissipated nothing) ends at the seeded wall: one row at
+    c = 0, a summary that says why, no growth."""
+    model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-seeded")
+    pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
+    result = delamination.seeded_only(
+        model, wall, [pool], settings(ci_config), ci_config["numerics"], law_gag(ci_config), model.props, "no G_c"
+    )
+    assert len(result.growth) == 1 and result.growth.concentration_mEq_l.iloc[0] == 0.0
+    assert result.summary["stop"] == "no G_c" and result.summary["final_length_um"] == 0.0
+    assert result.summary["passes"] == 0 and len(result.snapshots) == 1
+
+
 def test_every_state_is_below_tolerance_and_damage_grows_the_pool(ci_config, wall):
     st = settings(ci_config)
     _, result = grow(ci_config, wall, [sector(51.5)], st)

@@ -728,7 +728,9 @@ def seeded_only(
     """A run that ends where its pools are seeded, before the ramp, for the reason ``stop`` (e.g. a damage law whose
     G_c is not defined): its one state is the seeded wall at c = 0 (``settings`` seed it; no damage law acts)."""
     log.warning("[%s] %s: the run ends where its pools are seeded", run or model.name, stop)
-    return GrowthRun.seed(model, start, sectors, settings, numerics, gag, base, run=run).result(stop, 0.0)
+    seeded = GrowthRun.seed(model, start, sectors, settings, numerics, gag, base, run=run)
+    seeded._record(first_of_level=True)  # the seeded wall is the run's one row (and its snapshot)
+    return seeded.result(stop, 0.0)
 
 
 def save_snapshots(path, model: Model, snapshots, params: dict) -> None:
