@@ -43,26 +43,37 @@ from sphgag.physics import materials  # noqa: E402
 from sphgag.studies import artery, delamination, protocols  # noqa: E402
 
 
-def stiffness_modes(model, ev, shifts=(-3000.0, -300.0, 0.0), k=3, hourglass=True):
-    """Eigenvalues of K = -d(f_int + f_ext)/dx nearest each shift: value, participation, hourglass share (with
-    ``hourglass=False``: of the stiffness without the hourglass term, alpha = 0)."""
+def eigenpairs(model, ev, shifts, k, hourglass=True, digits=4):
+    """Eigenpairs of K = -d(f_int + f_ext)/dx nearest each shift, each once (eigenvalues equal to ``digits``
+    decimals are one), by eigenvalue: ``(eigenvalue, real eigenvector, |v|^2 per particle, hourglass share of
+    v.K.v)``. With ``hourglass=False`` the stiffness without the hourglass term (alpha = 0) is the K."""
     no_hg = Model(model.name + "_no_hg", model.layout, model.nb, model.props, 0.0)
     K0 = -no_hg.block_matrix(no_hg.jacobian(no_hg.evaluate(ev.x, ev.load))).tocsc()
     K = -model.block_matrix(model.jacobian(ev)).tocsc() if hourglass else K0
-    modes = {}
+    found = {}
     for shift in shifts:
         vals, vecs = spla.eigs(K, k=k, sigma=shift - 1e-3, which="LM")
         for lam, v in zip(vals, vecs.T):
-            v = np.real(v)
-            a = np.linalg.norm(v.reshape(-1, 2), axis=1)
-            key = round(float(lam.real), 4)
-            modes[key] = dict(
-                eigenvalue=float(lam.real),
-                imag=float(lam.imag),
-                participation=float((a * a).sum() ** 2 / (a**4).sum()),
-                hourglass_share=float(v @ (K - K0) @ v / (v @ K @ v)),
-            )
-    return sorted(modes.values(), key=lambda m: m["eigenvalue"])
+            found[round(float(lam.real), digits)] = (lam, v)
+    out = []
+    for lam, v in sorted(found.values(), key=lambda p: p[0].real):
+        v = np.real(v)
+        out.append((lam, v, (v.reshape(-1, 2) ** 2).sum(axis=1), float(v @ (K - K0) @ v / (v @ K @ v))))
+    return out
+
+
+def stiffness_modes(model, ev, shifts=(-3000.0, -300.0, 0.0), k=3, hourglass=True):
+    """Eigenvalues of K = -d(f_int + f_ext)/dx nearest each shift: value, participation, hourglass share (with
+    ``hourglass=False``: of the stiffness without the hourglass term, alpha = 0)."""
+    return [
+        dict(
+            eigenvalue=float(lam.real),
+            imag=float(lam.imag),
+            participation=float(a.sum() ** 2 / (a * a).sum()),
+            hourglass_share=share,
+        )
+        for lam, _, a, share in eigenpairs(model, ev, shifts, k, hourglass)
+    ]
 
 
 def fibre_I4(model, ev):

@@ -30,10 +30,12 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-import scipy.sparse.linalg as spla
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
+sys.path.insert(0, str(ROOT / "benchmarks"))
+
+from loss_of_equilibrium import eigenpairs  # noqa: E402
 
 from sphgag import config, threads  # noqa: E402
 from sphgag.engine import geometry, measure, solver  # noqa: E402
@@ -163,28 +165,16 @@ def modes(model: Model, ev, masks: dict, shifts=(-1000.0, -100.0, -10.0, 0.0), k
     """The eigenvalues of K = -d(f_int + f_ext)/dx nearest each of ``shifts`` (the most negative ones, and the
     smallest), each with its participation, its share of |v|^2 per particle class and the hourglass share of
     v.K.v."""
-    no_hg = Model(model.name + "_no_hg", model.layout, model.nb, model.props, 0.0)
-    K0 = -no_hg.block_matrix(no_hg.jacobian(no_hg.evaluate(ev.x, ev.load))).tocsc()
-    K = -model.block_matrix(model.jacobian(ev)).tocsc()
-    found = {}
-    for shift in shifts:
-        vals, vecs = spla.eigs(K, k=k, sigma=shift - 1e-3, which="LM")
-        for lam, v in zip(vals, vecs.T):
-            found[round(float(lam.real), 6)] = (lam, v)
-    out = []
-    for lam, v in sorted(found.values(), key=lambda p: p[0].real):
-        v = np.real(v)
-        a = (v.reshape(-1, 2) ** 2).sum(axis=1)
-        out.append(
-            dict(
-                eigenvalue=float(lam.real),
-                participation=float(a.sum() ** 2 / (a * a).sum()),
-                share={name: float(a[m].sum() / a.sum()) for name, m in masks.items()},
-                hourglass_share=float(v @ (K - K0) @ v / (v @ K @ v)),
-                largest_particle=int(np.argmax(a)),
-            )
+    return [
+        dict(
+            eigenvalue=float(lam.real),
+            participation=float(a.sum() ** 2 / (a * a).sum()),
+            share={name: float(a[m].sum() / a.sum()) for name, m in masks.items()},
+            hourglass_share=share,
+            largest_particle=int(np.argmax(a)),
         )
-    return out
+        for lam, _, a, share in eigenpairs(model, ev, shifts, k, digits=6)
+    ]
 
 
 def extremes(J: np.ndarray, masks: dict) -> dict:
