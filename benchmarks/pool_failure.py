@@ -9,7 +9,8 @@ exact solution:
   outlines of the same radial extent and the same area, centred on the sector);
 * ``--gag-hourglass``: the hourglass modulus of the GAG particles (eq. 2.14's E; default the configuration's), e.g.
   0 for no hourglass control inside the pool;
-* ``--no-fibres``: the wall without its fibre families (elastin alone).
+* ``--no-fibres``: the wall without its fibre families (elastin alone);
+* ``--hourglass``: the form of the hourglass control (``numerics.hourglass``: eq. 2.14 as printed or its energy form).
 
 For each spacing: the highest concentration with an equilibrium (steps of ``--step`` mEq/l, each bisected
 ``--bisections`` times), the pool's volume ratio there, and, at the stall (the last Newton iterate of the step that
@@ -38,7 +39,7 @@ sys.path.insert(0, str(ROOT / "benchmarks"))
 from loss_of_equilibrium import eigenpairs  # noqa: E402
 
 from sphgag import config, threads  # noqa: E402
-from sphgag.engine import geometry, measure, solver  # noqa: E402
+from sphgag.engine import geometry, hourglass, measure, solver  # noqa: E402
 from sphgag.engine.model import Model  # noqa: E402
 from sphgag.physics import materials  # noqa: E402
 from sphgag.studies import artery, protocols  # noqa: E402
@@ -74,66 +75,6 @@ class SmoothPool:
         if layer is not None:
             mask &= layout.layer_mask(layer)
         return np.flatnonzero(mask)
-
-
-class EnergyHourglass(Model):
-    """A prototype: the wall with the hourglass energy ``sum_e c_e/2 |F~_i R_e - r_e|^2`` (constant, positive
-    semi-definite stiffness) in place of eq. (2.14), assembled as a sparse matrix (small models only)."""
-
-    def __init__(self, model: Model, alpha: float):
-        super().__init__(model.name + "_energy_hg", model.layout, model.nb, model.props, 0.0)
-        self.alpha = alpha
-        self._K = {}
-
-    def stiffness(self, load):
-        import scipy.sparse as sp
-
-        from sphgag.engine import forces, kernel
-
-        props = self.material(load)[0]
-        key = load.material if callable(self.props) else None
-        if key not in self._K:
-            nb, V, n = self.nb, self.layout.volume, self.n
-            hgc = np.empty(nb.n_entries)
-            forces.hourglass_coefficients(V, nb.ptr, nb.nbr, nb.R, nb.w, props, self.alpha, hgc)
-            beta, ah, sh = kernel.hourglass_gradients(nb, V, props[:, materials.TISSUE])
-            hgc *= beta
-            rows, cols, vals = [], [], []
-            for i in range(n):
-                e0, e1 = nb.ptr[i], nb.ptr[i + 1]
-                E = np.arange(e0, e1)
-                g = ah[E] @ nb.R[E].T  # g[m, e] = ah_m . R_e
-                node = np.concatenate([[i], nb.nbr[E]])
-                mir = np.vstack([[1.0, 1.0], nb.mirror[E]])
-                coef = np.vstack([-(sh[i] @ nb.R[E].T) + 1.0, g])  # node p, entry e
-                coef[1 + np.arange(E.size), np.arange(E.size)] -= 1.0  # - r_e: its neighbour node
-                for k in range(2):
-                    r = np.repeat(2 * E + k, node.size)
-                    c = np.tile(2 * node + k, E.size)
-                    v = (coef.T * mir[:, k][None, :]).ravel()
-                    rows.append(r), cols.append(c), vals.append(v)
-            B = sp.csr_matrix(
-                (np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=(2 * nb.n_entries, 2 * n)
-            )
-            C = sp.diags(np.repeat(hgc, 2))
-            K = (B.T @ C @ B).tocoo()
-            brow, bcol = K.row // 2, K.col // 2
-            rowsb = np.repeat(np.arange(n), np.diff(self.block_indptr))
-            keys = rowsb * n + self.block_indices
-            blk = np.searchsorted(keys, brow * n + bcol)
-            data = np.zeros((self.block_indices.size, 2, 2))
-            np.add.at(data, (blk, K.row % 2, K.col % 2), K.data)
-            self._K[key] = (K.tocsr(), data)
-        return self._K[key]
-
-    def evaluate(self, x, load, extra_stress=None):
-        ev = super().evaluate(x, load, extra_stress)
-        K = self.stiffness(load)[0]
-        ev.f_int = ev.f_int - (K @ (x - self.layout.X).ravel()).reshape(-1, 2)
-        return ev
-
-    def jacobian(self, ev):
-        return super().jacobian(ev) - self.stiffness(ev.load)[1]
 
 
 def classes(model: Model, members: np.ndarray, sector: geometry.Sector) -> dict:
@@ -183,7 +124,7 @@ def extremes(J: np.ndarray, masks: dict) -> dict:
 
 
 def run(cfg, dx, args) -> dict:
-    numerics = cfg["numerics"]
+    numerics = dict(cfg["numerics"], hourglass=args.hourglass)
     p = dict(cfg["bilayer"], dx_um=dx)
     if args.no_fibres:
         p["mass_fractions"] = {layer: {"elastin": f["elastin"]} for layer, f in p["mass_fractions"].items()}
@@ -196,8 +137,6 @@ def run(cfg, dx, args) -> dict:
     if args.gag_hourglass is not None:
         gag = dict(gag, hourglass_modulus_kPa=args.gag_hourglass)
     model = artery.bilayer_model(p, numerics, name=f"pool_dx{dx:g}", pool=pool, gag=gag)
-    if args.hourglass == "energy":
-        model = EnergyHourglass(model, numerics["hourglass_alpha"])
     members = model.props.converting
     masks = classes(model, members, sector)
     sw = dict(cfg["swelling"], concentration_points=int(round(150.0 / args.step)) + 1)
@@ -262,7 +201,7 @@ def main():
     ap.add_argument("--shape", choices=("sector", "ellipse", "stadium"), default="sector")
     ap.add_argument("--gag-hourglass", type=float, default=None)
     ap.add_argument("--no-fibres", action="store_true")
-    ap.add_argument("--hourglass", choices=("paper", "energy"), default="paper")
+    ap.add_argument("--hourglass", choices=hourglass.FORMS, default="paper")
     ap.add_argument("--step", type=float, default=12.5)
     ap.add_argument("--bisections", type=int, default=4)
     ap.add_argument("--tag", default="sector")

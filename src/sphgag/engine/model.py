@@ -16,7 +16,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from ..physics import materials
-from . import forces, kernel
+from . import forces, hourglass, kernel
 from .geometry import Layout
 from .kernel import Neighbours
 from .loading import (
@@ -83,6 +83,8 @@ class Model:
     props : (N, NPROP) property table (:mod:`sphgag.physics.materials`), or a callable
         ``props(load) -> table`` for materials that change along a path.
     hourglass_alpha : alpha of eq. (2.14); E comes from the property table.
+    hourglass : the hourglass control's form (:data:`sphgag.engine.hourglass.FORMS`): ``paper`` (eq. 2.14 as
+        printed) or ``energy`` (its energy form, :mod:`sphgag.engine.hourglass`).
     boundary : optional ``boundary(load) -> (indices, positions)`` of particles with
         prescribed positions; by default the inner surface is held at
         ``load.inner_radius`` when the load prescribes one.
@@ -94,10 +96,13 @@ class Model:
     props: np.ndarray | Callable[[Load], np.ndarray]
     hourglass_alpha: float
     boundary: Callable[[Load], tuple] | None = None
+    hourglass: str = "paper"
     _cache: dict = field(default_factory=dict, repr=False)
     factorisation: object = field(default=None, repr=False)  # the solver's last LU, for reuse (solver.newton)
 
     def __post_init__(self):
+        if self.hourglass not in hourglass.FORMS:
+            raise ValueError(f"hourglass form {self.hourglass!r}: one of {', '.join(hourglass.FORMS)}")
         self.cth = np.cos(self.layout.theta)
         self.sth = np.sin(self.layout.theta)
         indptr, indices, blockmap, map_ptr = forces.block_pattern(self.nb.ptr, self.nb.nbr)
@@ -117,7 +122,8 @@ class Model:
         """Property table, hourglass coefficients (eq. 2.14) and packed pair data for ``load``, cached.
 
         The hourglass coefficient of a pair is scaled by its stencil weight
-        (zero across a GAG/tissue interface, :func:`kernel.hourglass_gradients`).
+        (zero across a GAG/tissue interface, :func:`kernel.hourglass_gradients`). Under the ``energy`` form the
+        coefficients returned (those of eq. 2.14's pair forces) are zero: its forces are :meth:`hourglass_forces`.
         """
         key = (load.material if callable(self.props) else None, self.hourglass_alpha)
         if "props" not in self._cache or self._cache["key"] != key:
@@ -132,7 +138,7 @@ class Model:
         (the unknown of volume control, a new value every iteration)."""
         cols = props[:, [materials.HG_E, materials.TISSUE]]
         old = self._cache.get("stencil_of")
-        if old is not None and old[0] == self.hourglass_alpha and np.array_equal(old[1], cols):
+        if old is not None and old[0] == (self.hourglass, self.hourglass_alpha) and np.array_equal(old[1], cols):
             return
         V = self.layout.volume
         hgc = np.empty(self.nb.n_entries)
@@ -141,8 +147,32 @@ class Model:
         )
         beta, ah, sh = kernel.hourglass_gradients(self.nb, V, props[:, materials.TISSUE])
         hgc *= beta
+        stiffness = None
+        if self.hourglass == "energy":
+            nb = self.nb
+            stiffness = np.zeros((self.block_indices.size, 2, 2))
+            hourglass.energy_stiffness_blocks(
+                nb.ptr, nb.nbr, nb.mirror, nb.R, ah, sh, hgc, self.blockmap, self.map_ptr, stiffness
+            )
+            hgc = np.zeros_like(hgc)
         pairs = forces.PairData.pack(self.nb, V, hgc, ah)
-        self._cache.update(stencil_of=(self.hourglass_alpha, cols), hgc=hgc, pairs=pairs, hg=(ah, sh))
+        self._cache.update(
+            stencil_of=((self.hourglass, self.hourglass_alpha), cols),
+            hgc=hgc,
+            pairs=pairs,
+            hg=(ah, sh),
+            hg_stiffness=stiffness,
+            hg_matrix=None if stiffness is None else self.block_matrix(stiffness).tocsr(),
+        )
+
+    def hourglass_forces(self, x: np.ndarray, load: Load) -> np.ndarray | None:
+        """``-K (x - X)``: the forces of the ``energy`` hourglass form (:mod:`sphgag.engine.hourglass`); None under
+        eq. (2.14), whose forces are part of the elastic kernel's."""
+        self.material(load)
+        K = self._cache["hg_matrix"]
+        if K is None:
+            return None
+        return -(K @ (x - self.layout.X).ravel()).reshape(-1, 2)
 
     def hourglass_stencil(self, load: Load):
         """``(ah, sh)``: the hourglass stencil's corrected gradients for ``load`` (see :meth:`material`)."""
@@ -174,6 +204,9 @@ class Model:
         min_det = forces.evaluate_forces(
             x, pairs, load.axial_stretch, self.cth, self.sth, props, self._xe, self._fe, FP, f, extra
         )
+        hg = self.hourglass_forces(x, load)
+        if hg is not None:
+            f += hg
         F, P = FP[:, :4].reshape(n, 2, 2), FP[:, 4:8].reshape(n, 2, 2)
         Fh = FP[:, 8:].reshape(n, 2, 2)
         p = load.pressure_kPa or 0.0
@@ -220,6 +253,8 @@ class Model:
             self.map_ptr,
             data,
         )
+        if self._cache["hg_stiffness"] is not None:
+            data -= self._cache["hg_stiffness"]
         add_pressure_stiffness(data, self.pressure_blocks, load.pressure_kPa or 0.0, load.axial_stretch)
         return data
 

@@ -10,7 +10,9 @@ from ..options import Options
 @dataclass(frozen=True)
 class Numerics(Options):
     """``kernel_support_factor``: the kernel's support radius over the particle spacing (eq. 2.5);
-    ``hourglass_alpha``: the hourglass penalty's alpha (eq. 2.14); ``tolerance``: the relative residual of a
+    ``hourglass_alpha``: the hourglass penalty's alpha (eq. 2.14); ``hourglass``: its form
+    (:data:`sphgag.engine.hourglass.FORMS`: ``paper``, eq. 2.14 as printed, or ``energy``, its energy form);
+    ``tolerance``: the relative residual of a
     converged state; ``max_newton_iterations`` and ``max_bisections``: Newton's method per load step and the halvings
     of a step; ``reuse_factorisation``: chord steps with the last factorisation before refactorising."""
 
@@ -18,10 +20,15 @@ class Numerics(Options):
 
     kernel_support_factor: float
     hourglass_alpha: float
+    hourglass: str
     tolerance: float
     max_newton_iterations: int
     max_bisections: int
     reuse_factorisation: bool
+
+    def hourglass_control(self) -> dict:
+        """The hourglass keywords of a :class:`sphgag.engine.model.Model` (``hourglass_alpha``, ``hourglass``)."""
+        return dict(hourglass_alpha=self.hourglass_alpha, hourglass=self.hourglass)
 
     def solver_options(self) -> dict:
         """The options of the quasi-static solver (:func:`sphgag.engine.solver.follow_path`)."""

@@ -40,7 +40,7 @@ def mean_model(p: dict, numerics: Numerics, name: str = "mean") -> Model:
     props = materials.mean_behaviour(
         layout.n, p["shear_modulus_kPa"], p["lame_lambda_kPa"], mean_fibre_families(p), p["hourglass_modulus_kPa"]
     )
-    return Model(name, layout, nb, props, numerics.hourglass_alpha)
+    return Model(name, layout, nb, props, **numerics.hourglass_control())
 
 
 def mean_thick_wall(p: dict) -> analytic.ThickWallTube:
@@ -266,7 +266,7 @@ def bilayer_model(
     material = BilayerMaterial(p, layout)
     if pool is not None:
         material = seeding(material, layout, [pool] if isinstance(pool, geometry.Sector) else list(pool), gag)
-    return Model(name, layout, nb, material, numerics.hourglass_alpha)
+    return Model(name, layout, nb, material, **numerics.hourglass_control())
 
 
 def seeding(base, layout: geometry.Layout, sectors, gag: dict) -> history.HistoryMaterial:

@@ -165,14 +165,15 @@ class Materials:
     gag_hourglass_modulus: float
 
     @classmethod
-    def of(cls, matrix: dict, gag: dict) -> Materials:
+    def of(cls, matrix: dict, gag: dict, bulk: bool = False) -> Materials:
         """The elastin matrix (``matrix``: shear modulus, Lame parameter, hourglass modulus) around GAG of ``gag``'s
-        shear and hourglass moduli, without the bulk term (eq. 2.27 as printed)."""
+        shear and hourglass moduli, without the bulk term (eq. 2.27 as printed) or, with ``bulk``, with ``gag``'s
+        (as in the artery's pools)."""
         return cls(
             mu=matrix["shear_modulus_kPa"],
             lam=matrix["lame_lambda_kPa"],
             mu_gag=gag["shear_modulus_kPa"],
-            lam_gag=0.0,
+            lam_gag=gag["lame_lambda_kPa"] if bulk else 0.0,
             hourglass_modulus=matrix["hourglass_modulus_kPa"],
             gag_hourglass_modulus=gag["hourglass_modulus_kPa"],
         )
@@ -216,8 +217,11 @@ class ExactBoundary:
         return self.idx, self.X + load.material_value(self.pressure, 0.0) * self.u
 
 
-def inclusion_model(a, b, dx, extent, mat: Materials, numerics: Numerics, name: str = "inclusion") -> Model:
-    """The block with its inclusion, mirror planes on both axes and the exact far field on the outer ring."""
+def inclusion_model(
+    a, b, dx, extent, mat: Materials, numerics: Numerics, name: str = "inclusion", free: bool = False
+) -> Model:
+    """The block with its inclusion, mirror planes on both axes and the exact far field (Inglis) on the outer ring,
+    or, ``free``, the outer ring traction free."""
     numerics = Numerics.of(numerics)
     lay = ellipse_layout(a, b, dx, extent)
     nb = kernel.build_neighbours(lay.X, lay.volume, numerics.kernel_support_factor * dx, mirrors=(1, 2))
@@ -226,8 +230,8 @@ def inclusion_model(a, b, dx, extent, mat: Materials, numerics: Numerics, name: 
         lay,
         nb,
         InclusionMaterial(lay, mat),
-        numerics.hourglass_alpha,
-        boundary=ExactBoundary(lay, mat),
+        boundary=None if free else ExactBoundary(lay, mat),
+        **numerics.hourglass_control(),
     )
 
 
