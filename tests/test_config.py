@@ -211,10 +211,30 @@ def test_a_bad_sensitivity_range_is_rejected_naming_the_input_and_its_allowed_ra
 
 
 def test_the_schemas_enumerations_are_the_registries():
-    """A new charge law or onset criterion is an entry of its registry: the schema accepts it with no edit."""
+    """A new charge law, onset criterion or candidate rule is an entry of its registry: the schema accepts it with no
+    edit."""
     from sphgag.physics.materials import CHARGE_LAWS
+    from sphgag.studies.candidates import RULES
     from sphgag.studies.onset import CRITERIA
 
     s = config.schema(SCHEMA)
     assert s["properties"]["delamination"]["properties"]["criteria"]["items"]["enum"] == list(CRITERIA)
     assert s["properties"]["gag"]["properties"]["charge_laws"]["items"]["enum"] == list(CHARGE_LAWS)
+    assert s["properties"]["delamination"]["properties"]["candidates"]["enum"] == list(RULES)
+
+
+@pytest.mark.parametrize("value", ["foo", ["contact"], 1, KeyError])
+def test_a_bad_candidate_rule_is_rejected_naming_the_key_and_the_rules(ci_config, value):
+    """``delamination.candidates`` (issue 25) is one name of :data:`sphgag.studies.candidates.RULES`."""
+    msg = bad(ci_config, ["delamination", "candidates"], value)
+    if value is KeyError:
+        assert "missing key 'delamination.candidates'" in msg
+    else:
+        assert f"delamination.candidates = {value!r} is invalid" in msg and "one of ['contact', 'window']" in msg
+
+
+@pytest.mark.parametrize("rule", ["contact", "window"])
+def test_every_candidate_rule_is_valid(ci_config, rule):
+    cfg = copy.deepcopy(ci_config)
+    cfg["delamination"]["candidates"] = rule
+    config.validate(cfg, SCHEMA)

@@ -1,6 +1,7 @@
 """Delamination (section 2.7): particle history, the staggered growth protocol, symmetry, restarts."""
 
 import dataclasses
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -22,10 +23,12 @@ def wall(ci_wall):
 
 
 def settings(ci_config, **changes):
-    """CI settings with a low sigma_cr, the particle measure and the authors' early rupture increment (0.5 %), so
-    that the pools grow within a few passes."""
-    base = delamination.Settings.from_config(ci_config["delamination"], 1.0, "particle")
-    quick = dict(max_passes=3, concentration_step_mEq_l=50.0, rupture_stretch_increment=0.005)
+    """CI settings (the particles touching a pool are the candidates, the particle measure) in which every candidate
+    starts damage at once (sigma_cr = -100 kPa: at the CI spacing, 6 um, the particles touching a case I pool are in
+    radial compression up to 300 mEq/l under the conserved law) and ruptures after the authors' early increment of
+    radial stretch (0.5 %), so that the pools grow a column at each end per level of the ramp (50, 100, 150 mEq/l)."""
+    base = delamination.Settings.from_config(ci_config["delamination"], -100.0, "particle")
+    quick = dict(max_passes=3, concentration_step_mEq_l=50.0, rupture_stretch_increment=0.005, candidates="contact")
     return dataclasses.replace(base, **dict(quick, **changes))
 
 
@@ -192,3 +195,145 @@ def test_a_run_restarted_from_a_snapshot_reaches_the_same_end_state(ci_config, w
     assert np.array_equal(again.final[0].x, full.final[0].x)
     last = ["pseudo_time", "converted_particles", "delaminated_length_um", "tip_radial_stress_kPa"]
     assert again.growth[last].iloc[-1].equals(full.growth[last].iloc[-1])
+
+
+# -- damage candidates and islands (issue 25) ---------------------------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def layout(ci_config):
+    """The CI bi-layered wall's particles (dx = 6 um)."""
+    return artery.bilayer_layout(ci_config["bilayer"])
+
+
+def front(layout, sectors, rule, window_deg=5.0):
+    return delamination.Front(SimpleNamespace(layout=layout), sectors, window_deg, rule)
+
+
+def seeded(layout, sectors):
+    return ParticleHistory.intact(layout.n).seed([s.members(layout, layer="media") for s in sectors])
+
+
+def ahead(layout, band, hist, pool, lo, hi):
+    """The particles of ``band`` whose arc beyond the upper angular edge of ``pool`` lies in (lo, hi] spacings."""
+    arc = (layout.theta - layout.theta[hist.members(pool)].max()) * layout.radius / layout.dx
+    return np.flatnonzero(band & (arc > lo) & (arc <= hi))
+
+
+def distance(layout, a, b):
+    """The smallest reference distance between the particles ``a`` and ``b`` (every pair)."""
+    return float(np.linalg.norm(layout.X[a][:, None] - layout.X[b][None], axis=-1).min())
+
+
+def window_candidates(layout, sectors, hist, window_deg):
+    """Front.candidates before issue 25 (the authors' script's candidates), copied: the reference of ``window``."""
+    surface = np.zeros(layout.n, dtype=bool)
+    surface[layout.inner_surface] = surface[layout.outer_surface] = True
+    interior = layout.layer_mask("media") & ~surface
+    bands = [(layout.radius >= s.r_range[0]) & (layout.radius <= s.r_range[1]) for s in sectors]
+    th, w = layout.theta, np.deg2rad(window_deg)
+    best, pool = np.full(hist.n, np.inf), np.full(hist.n, -1)
+    for k, band in enumerate(bands):
+        members = hist.members(k)
+        lo, hi = th[members].min(), th[members].max()
+        dist = np.maximum(lo - th, th - hi)
+        ok = band & interior & ~hist.gag & (dist <= w) & (dist < best)
+        best[ok], pool[ok] = dist[ok], k
+    idx = np.flatnonzero(pool >= 0)
+    return idx, pool[idx]
+
+
+@pytest.fixture(scope="module")
+def island_history(layout):
+    """A case I pool at 51.5 deg, the column of its band touching its upper end converted (connected), and two
+    columns 3.5-5.5 spacings beyond its end converted (an island): ``(sector, history, connected, island)``."""
+    pool = sector(51.5)
+    hist = seeded(layout, [pool])
+    band = front(layout, [pool], "window").bands[0] & layout.layer_mask("media")
+    connected = ahead(layout, band, hist, 0, 0.0, 1.2)
+    island = ahead(layout, band, hist, 0, 3.5, 5.5)
+    assert connected.size and island.size
+    converted = np.concatenate([connected, island])
+    return pool, hist.rupture(converted, np.zeros(converted.size), 1), (connected, island)
+
+
+def test_the_delaminated_length_counts_the_damage_connected_to_its_pool_and_islands_apart(layout, island_history):
+    pool, hist, (connected, island) = island_history
+    f = front(layout, [pool], "window")
+    V = layout.volume
+    assert f.converted(hist)[0] == connected.size + island.size  # converted_particles counts both
+    assert f.delaminated_length(hist) == pytest.approx(V[connected].sum() / 15.0, rel=1e-12)
+    found = f.islands(hist)
+    pool_now = np.concatenate([hist.members(0)[hist.origin[hist.members(0)] == SEEDED], connected])
+    assert (found.count, found.particles) == (1, island.size)
+    assert found.distance_um == pytest.approx(distance(layout, island, pool_now), rel=1e-12)
+    assert found.distance_um > 1.5 * layout.dx
+    # the particles between them converted: one pool, every converted particle counts
+    band = f.bands[0] & layout.layer_mask("media")
+    bridge = ahead(layout, band, seeded(layout, [pool]), 0, 1.2, 3.5)
+    joined = hist.rupture(bridge, np.zeros(bridge.size), 2)
+    none = f.islands(joined)
+    assert none.count == 0 and none.particles == 0 and np.isnan(none.distance_um)
+    damaged = joined.origin == DAMAGED
+    assert f.delaminated_length(joined) == pytest.approx(V[damaged].sum() / 15.0, rel=1e-12)
+    assert f.delaminated_length(joined) > f.delaminated_length(hist) + V[island].sum() / 15.0
+
+
+@pytest.mark.parametrize("pools", [[51.5], [42.1, 47.9]])
+def test_contact_candidates_touch_their_pool_and_window_candidates_are_the_authors(layout, island_history, pools):
+    """``contact``: every candidate has a GAG particle of its pool within 1.5 dx (reference positions), and lies in
+    the window; ``window``: the candidates of the code before issue 25 (the authors' script), unchanged."""
+    sectors = [sector(a) for a in pools]
+    histories = [seeded(layout, sectors)]
+    if len(pools) == 1:
+        histories.append(island_history[1])  # the window follows the island; contact touches it, too
+    for hist in histories:
+        old = window_candidates(layout, sectors, hist, 5.0)
+        idx, owner = front(layout, sectors, "window").candidates(hist)
+        assert np.array_equal(idx, old[0]) and np.array_equal(owner, old[1])
+        near, near_owner = front(layout, sectors, "contact").candidates(hist)
+        assert 0 < near.size < idx.size and set(near) <= set(idx)
+        for i, k in zip(near, near_owner):
+            assert distance(layout, [i], hist.members(k)) <= 1.5 * layout.dx * (1 + 1e-12)
+        far = np.setdiff1d(idx, near)
+        assert all(
+            distance(layout, [i], hist.members(k)) > 1.5 * layout.dx for i, k in zip(far, owner[np.isin(idx, far)])
+        )
+    # the window bounds contact: a window of about one spacing (0.5 deg) keeps the touching particles within it
+    hist = histories[0]
+    near = front(layout, sectors, "contact").candidates(hist)[0]
+    narrow, narrow_owner = front(layout, sectors, "contact", window_deg=0.5).candidates(hist)
+    assert 0 < narrow.size < near.size and set(narrow) <= set(near)
+    for i, k in zip(narrow, narrow_owner):
+        th = layout.theta[hist.members(k)]
+        assert max(th.min() - layout.theta[i], layout.theta[i] - th.max()) <= np.deg2rad(0.5)
+
+
+def test_a_settings_candidate_rule_must_be_a_registered_one(ci_config):
+    assert "candidates" in delamination.Settings.config_keys()  # a run-level setting in the rules' params
+    with pytest.raises(ValueError, match="candidates must be one of contact, window, got 'foo'"):
+        settings(ci_config, candidates="foo")
+
+
+def test_growth_by_contact_leaves_no_island_and_the_window_does(ci_config, wall):
+    """A real growth run at the CI spacing: with the paper's candidates (contact) the pool grows a column at each
+    end per level and never leaves an island; with the authors' window (the same settings: its pass limit comes at
+    150 mEq/l) the damage converts particles ahead of the pool that are not connected to it, and those are not
+    delaminated length."""
+    st = settings(ci_config, critical_stress_kPa=1.0, max_concentration_mEq_l=500.0)
+    model, result = grow(ci_config, wall, [sector(51.5)], st)
+    g = result.growth
+    assert (g.islands == 0).all() and (g.island_particles == 0).all() and g.island_distance_um.isna().all()
+    assert g.converted_particles.iloc[-1] >= 8 and result.summary["islands"] == 0
+    damaged = result.final[1].origin == DAMAGED
+    assert g.delaminated_length_um.iloc[-1] == pytest.approx(model.layout.volume[damaged].sum() / 15.0)
+    growth, summary = delamination.labelled(result, "single", st, model.layout.dx)
+    assert list(growth.columns) == delamination.GROWTH_COLUMNS and (growth.candidates == "contact").all()
+    assert {"islands", "island_particles", "island_distance_um", "candidates"} <= set(summary.columns)
+
+    _, window = grow(ci_config, wall, [sector(51.5)], dataclasses.replace(st, candidates="window"))
+    w, hist = window.growth, window.final[1]
+    assert (w.islands > 0).any() and (w.island_distance_um[w.islands > 0] > 1.5 * model.layout.dx).all()
+    assert window.summary["islands"] > 0 and window.summary["island_particles"] > 0
+    damaged = hist.origin == DAMAGED
+    assert window.summary["final_length_um"] < model.layout.volume[damaged].sum() / 15.0

@@ -12,14 +12,14 @@ from sphgag.studies import artery, delamination
 from sphgag.views import paraview
 
 from .conftest import law_gag
+from .test_delamination import settings
 
 
 @pytest.fixture(scope="module")
 def grown(ci_config, ci_wall, tmp_path_factory):
-    """A short delamination run of the CI wall (low sigma_cr, so that the pool grows in a few passes), its snapshots
-    saved as the pipeline saves them."""
-    st = delamination.Settings.from_config(ci_config["delamination"], 1.0, "particle")
-    st = dataclasses.replace(st, max_passes=3, concentration_step_mEq_l=50.0, rupture_stretch_increment=0.005)
+    """A short delamination run of the CI wall (damage at once, so that the pool grows in a few passes:
+    :func:`tests.test_delamination.settings`), its snapshots saved as the pipeline saves them."""
+    st = settings(ci_config)
     model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-views")
     gag = law_gag(ci_config)
     result = delamination.grow(

@@ -167,19 +167,26 @@ def _literal_problems(node, path=()) -> list[str]:
 
 
 def _registries() -> dict:
-    """The schema's enumerations that sphgag's registries define, by the path of their array: a new charge law or
-    onset criterion is an entry of its registry, and the configuration accepts it with no edit of the schema."""
+    """The schema's enumerations that sphgag's registries define, by the path of their key (a list of names or one
+    name): a new charge law, onset criterion or candidate rule is an entry of its registry, and the configuration
+    accepts it with no edit of the schema."""
     from .physics.materials import CHARGE_LAWS
+    from .studies.candidates import RULES
     from .studies.onset import CRITERIA
 
-    return {("gag", "charge_laws"): list(CHARGE_LAWS), ("delamination", "criteria"): list(CRITERIA)}
+    return {
+        ("gag", "charge_laws"): list(CHARGE_LAWS),
+        ("delamination", "criteria"): list(CRITERIA),
+        ("delamination", "candidates"): list(RULES),
+    }
 
 
 def schema(schema_path) -> dict:
     """The schema at ``schema_path`` with the enumerations of sphgag's registries (:func:`_registries`)."""
     out = load_yaml(schema_path)
     for (section, key), names in _registries().items():
-        out["properties"][section]["properties"][key]["items"]["enum"] = names
+        node = out["properties"][section]["properties"][key]
+        (node["items"] if "items" in node else node)["enum"] = names
     return out
 
 

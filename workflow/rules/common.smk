@@ -86,7 +86,8 @@ DE_RUNS = [
     for criterion in DE["criteria"]
 ]
 # what every run reads of the section (its sigma_cr and criterion are its own wildcards), so that adding or removing a
-# sigma_cr or a criterion reruns no other run
+# sigma_cr or a criterion reruns no other run; the candidate rule (delamination.candidates) is one of these run-level
+# settings, not a wildcard: changing it reruns every delamination run
 DE_SETTINGS = {k: DE[k] for k in DelaminationSettings.config_keys()}
 DE_DX = [f"{dx:g}" for dx in DE["convergence"]["dx_um"]]
 DE_NAME = "{law}/{poolset}_{sigma}kPa_{criterion}"

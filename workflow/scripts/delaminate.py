@@ -64,13 +64,15 @@ with runlog.run(run, sm.log[0]) as log:
     )
     s = summary.iloc[0]
     log.info(
-        "[%s] stopped (%s) after %d passes: onset at %s mEq/l, delaminated %.1f um, merged %s, dissipated "
-        "%.3g J/m^2, max residual %.2e",
+        "[%s] stopped (%s) after %d passes: onset at %s mEq/l, delaminated %.1f um (%d islands apart, %s candidates), "
+        "merged %s, dissipated %.3g J/m^2, max residual %.2e",
         run,
         s.stop,
         s.passes,
         s.onset_concentration_mEq_l,
         s.final_length_um,
+        s.islands,
+        s.candidates,
         s.merged,
         s.dissipated_energy_J_m2,
         s.max_residual,

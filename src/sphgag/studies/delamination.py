@@ -32,9 +32,16 @@ is that of its explicit dynamics, in which every time step is one damage update 
 at most one step of relaxation; a pass here is one damage update with complete
 relaxation, so pseudo-time counts the same updates, each taken to equilibrium.
 
-**Candidates** (the authors' script): tissue particles of the media in a pool's
-radial band (the reference radii of its seeded sector), not on a wall surface, within
-``candidate_window_deg`` of the pool's current angular extent.
+**Candidates** (``candidates``, :data:`sphgag.studies.candidates.RULES`): tissue particles of the media in a
+pool's radial band (the reference radii of its seeded sector), not on a wall surface, within
+``candidate_window_deg`` of the pool's current angular extent (the authors' script, ``window``), and by default
+(``contact``, the paper's "radial stress at the tip of the pool") only those with a GAG particle of the pool within
+1.5 dx in the reference configuration.
+
+**Delaminated length**: the reference area converted by damage and connected to its pool (through the reference
+neighbours within 1.5 dx among the pool's GAG particles, from its seeded ones) over the band's thickness. Converted
+particles not connected to their pool are *islands*, counted apart (``islands``, ``island_particles``,
+``island_distance_um``); ``converted_particles`` counts both.
 
 **Onset measure** (``criterion``): ``particle``, the particle's own radial Cauchy stress
 (current polar frame), as in the paper; or ``averaged``, the volume-weighted mean of the
@@ -56,25 +63,33 @@ from dataclasses import dataclass, field, fields
 
 import numpy as np
 import pandas as pd
+from scipy.sparse import csr_matrix
+from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
 from ..engine import forces, measure, snap, solver
 from ..engine.geometry import Sector
-from ..engine.history import DAMAGED, HistoryMaterial, ParticleHistory
+from ..engine.history import DAMAGED, SEEDED, HistoryMaterial, ParticleHistory
 from ..engine.loading import MMHG_TO_KPA, Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
 from ..physics import damage, fracture, materials
 from ..records import state as state_io
 from . import artery, protocols
+from .candidates import RULES
 from .onset import CRITERIA
 
 log = logging.getLogger("sphgag")
+
+#: the contact distance in the reference configuration, in particle spacings: two particles within it touch (pools
+#: merge, a candidate touches its pool, a converted particle is connected to its neighbour)
+CONTACT_DX = 1.5
 
 GROWTH_COLUMNS = [
     "case",
     "sigma_cr_kPa",
     "criterion",
+    "candidates",
     "dx_um",
     "damage_law",
     "fracture_energy_J_m2",
@@ -85,6 +100,9 @@ GROWTH_COLUMNS = [
     "converted_interior",
     "converted_exterior",
     "delaminated_length_um",
+    "islands",
+    "island_particles",
+    "island_distance_um",
     "tip_radial_stress_kPa",
     "residual",
     "snap",
@@ -93,11 +111,15 @@ SUMMARY_COLUMNS = [
     "case",
     "sigma_cr_kPa",
     "criterion",
+    "candidates",
     "dx_um",
     "damage_law",
     "fracture_energy_J_m2",
     "onset_concentration_mEq_l",
     "final_length_um",
+    "islands",
+    "island_particles",
+    "island_distance_um",
     "outcome",
     "stop",
     "snaps",
@@ -128,10 +150,13 @@ class Settings:
     conversion_steps: int
     damage_law: str = "paper"  # damage.LAWS: eq. (2.28) as printed, or with a fracture energy
     fracture_energy_J_m2: float = np.nan  # G_c of the fracture_energy law
+    candidates: str = "contact"  # candidates.RULES: the particles touching the pool (the paper), or the window
 
     def __post_init__(self):
         if self.criterion not in CRITERIA:
             raise ValueError(f"criterion must be one of {', '.join(CRITERIA)}, got {self.criterion!r}")
+        if self.candidates not in RULES:
+            raise ValueError(f"candidates must be one of {', '.join(RULES)}, got {self.candidates!r}")
         if self.damage_law not in damage.LAWS:
             raise ValueError(f"damage_law must be one of {', '.join(damage.LAWS)}, got {self.damage_law!r}")
 
@@ -168,13 +193,29 @@ class Settings:
         return np.linspace(0.0, self.max_concentration_mEq_l, n + 1)[1:]
 
 
+@dataclass(frozen=True)
+class Islands:
+    """Particles converted by damage (eq. 2.28, D = 1; section 2.7) that are not connected to their pool
+    (:meth:`Front.islands`): ``count`` connected components of them, ``particles`` in all, and the reference distance
+    [um] from the nearest of them to the nearest particle of its connected pool (NaN without islands)."""
+
+    count: int = 0
+    particles: int = 0
+    distance_um: float = np.nan
+
+
 @dataclass
 class Front:
-    """The pools' geometry: seeded sectors, candidates and the measures of growth."""
+    """The pools' geometry: seeded sectors, candidates and the measures of growth.
+
+    ``rule``: the candidate rule (:data:`sphgag.studies.candidates.RULES`). ``adjacent``: the reference-neighbour
+    graph, particles within :data:`CONTACT_DX` spacings in the reference configuration (a symmetric sparse matrix).
+    """
 
     model: Model
     sectors: list[Sector]
     window_deg: float
+    rule: str = "contact"
 
     def __post_init__(self):
         lay = self.model.layout
@@ -185,23 +226,37 @@ class Front:
         self.bands = [(lay.radius >= s.r_range[0]) & (lay.radius <= s.r_range[1]) for s in self.sectors]
         self.centres = np.deg2rad([s.centre_angle_deg for s in self.sectors])
         self.thickness = np.array([s.radial_extent for s in self.sectors])
-        self._tree = cKDTree(lay.X)
+        pairs = cKDTree(lay.X).query_pairs(CONTACT_DX * lay.dx, output_type="ndarray")
+        i, j = np.concatenate([pairs[:, 0], pairs[:, 1]]), np.concatenate([pairs[:, 1], pairs[:, 0]])
+        self.adjacent = csr_matrix((np.ones(i.size, dtype=np.int8), (i, j)), shape=(lay.n, lay.n))
+
+    @classmethod
+    def of(cls, model: Model, sectors: list[Sector], settings: Settings) -> Front:
+        """The front of a run with ``settings`` (its candidate window and rule)."""
+        return cls(model, sectors, settings.candidate_window_deg, settings.candidates)
 
     def candidates(self, hist: ParticleHistory):
-        """``(indices, pool)``: tissue particles of the media, off the surfaces, in a pool's radial band and within
-        the window of its current angular extent; ``pool`` is the nearest such pool (in angle)."""
+        """``(indices, pool)``: tissue particles of the media, off the surfaces, in a pool's radial band, within the
+        window of its current angular extent and admitted by the candidate rule for that pool; ``pool`` is the
+        nearest such pool (in angle)."""
         th = self.model.layout.theta
         w = np.deg2rad(self.window_deg)
+        admits = RULES[self.rule].admits
         best = np.full(hist.n, np.inf)
         pool = np.full(hist.n, -1)
         for k, band in enumerate(self.bands):
             members = hist.members(k)
             lo, hi = th[members].min(), th[members].max()
             dist = np.maximum(lo - th, th - hi)
-            ok = band & self.interior & ~hist.gag & (dist <= w) & (dist < best)
+            ok = band & self.interior & ~hist.gag & (dist <= w) & (dist < best) & admits(self, hist, k)
             best[ok], pool[ok] = dist[ok], k
         idx = np.flatnonzero(pool >= 0)
         return idx, pool[idx]
+
+    def touching(self, hist: ParticleHistory, pool: int) -> np.ndarray:
+        """The particles (a mask) with a GAG particle of ``pool`` (seeded or converted) within the contact distance
+        in the reference configuration."""
+        return self.adjacent @ (hist.pool == pool).astype(np.int64) > 0
 
     def extent_deg(self, hist: ParticleHistory) -> np.ndarray:
         th = self.model.layout.theta
@@ -212,8 +267,8 @@ class Front:
         return bool(th.min() <= self.window_deg or th.max() >= 90.0 - self.window_deg)
 
     def converted(self, hist: ParticleHistory):
-        """``(total, interior, exterior)`` particles converted by damage; interior: on the side of its pool's
-        seeded centre that faces the other pools (two or more pools; NaN for one)."""
+        """``(total, interior, exterior)`` particles converted by damage (islands included); interior: on the side
+        of its pool's seeded centre that faces the other pools (two or more pools; NaN for one)."""
         damaged = hist.origin == DAMAGED
         total = int(damaged.sum())
         if len(self.sectors) < 2:
@@ -226,24 +281,43 @@ class Front:
             inner += int(np.sum(np.sign(th[mine] - self.centres[k]) == towards))
         return total, inner, total - inner
 
+    def parts(self, hist: ParticleHistory, pool: int) -> tuple[np.ndarray, np.ndarray, int]:
+        """``(connected, islands, count)`` of ``pool``: its GAG particles connected to its seeded ones through the
+        reference-neighbour graph (:attr:`adjacent`) among its GAG particles, those that are not (indices), and the
+        number of connected components of the latter."""
+        mine = hist.members(pool)
+        _, label = connected_components(self.adjacent[mine][:, mine], directed=False)
+        attached = np.isin(label, label[hist.origin[mine] == SEEDED])
+        return mine[attached], mine[~attached], np.unique(label[~attached]).size
+
     def delaminated_length(self, hist: ParticleHistory) -> float:
-        """Length [um] of the delaminated arc: the reference area converted by damage over its band's thickness."""
-        V = self.model.layout.volume
-        damaged = hist.origin == DAMAGED
-        return float(sum(V[damaged & (hist.pool == k)].sum() / t for k, t in enumerate(self.thickness)))
+        """Length [um] of the delaminated arc: the reference area converted by damage and connected to its pool
+        (:meth:`parts`) over its band's thickness; islands do not count."""
+        V, damaged = self.model.layout.volume, hist.origin == DAMAGED
+        length = 0.0
+        for k, t in enumerate(self.thickness):
+            connected = self.parts(hist, k)[0]
+            length += V[connected[damaged[connected]]].sum() / t
+        return float(length)
+
+    def islands(self, hist: ParticleHistory) -> Islands:
+        """The converted particles not connected to their pool (:meth:`parts`), over all pools."""
+        X = self.model.layout.X
+        count = particles = 0
+        distance = np.inf
+        for k in range(len(self.sectors)):
+            connected, apart, n = self.parts(hist, k)
+            if apart.size:
+                count, particles = count + n, particles + apart.size
+                distance = min(distance, float(cKDTree(X[connected]).query(X[apart])[0].min()))
+        return Islands(count, particles, distance if count else np.nan)
 
     def merged(self, hist: ParticleHistory) -> bool:
-        """Two pools touch: a particle of one has a particle of another within 1.5 dx (reference positions)."""
-        if len(self.sectors) < 2:
-            return False
-        lay = self.model.layout
-        gag = np.flatnonzero(hist.gag)
-        for i, near in zip(gag, self._tree.query_ball_point(lay.X[gag], 1.5 * lay.dx)):
-            near = np.asarray(near, dtype=np.int64)
-            others = hist.pool[near]
-            if np.any((others >= 0) & (others != hist.pool[i])):
-                return True
-        return False
+        """Two pools touch: a particle of one has a particle of another within the contact distance (reference
+        positions)."""
+        return any(
+            np.any(self.touching(hist, k) & (hist.pool >= 0) & (hist.pool != k)) for k in range(len(self.sectors))
+        )
 
 
 @dataclass
@@ -254,6 +328,7 @@ class Pass:
     concentration: float
     converted: tuple
     length: float
+    islands: Islands
     tip_stress: float
     residual: float
     snap: bool = False  # reached through a snap (sphgag.engine.snap)
@@ -417,7 +492,7 @@ class GrowthRun:
         state = solver.follow_path(
             model, start.x, base_load, [protocols.swelling_load(base_load, f, 0.0) for f in fractions], **opts
         )[-1]
-        run = cls(model, Front(model, sectors, settings.candidate_window_deg), settings, opts, material, state)
+        run = cls(model, Front.of(model, sectors, settings), settings, opts, material, state)
         run.wanted = frozenset(int(s) for s in snapshot_steps)
         run._settle(material.settled())
         run._accept(state)
@@ -442,7 +517,7 @@ class GrowthRun:
             ev = model.evaluate(state.x, state.load)
             conv = state.convergence or solver.Convergence(solver.relative_residual(model, ev), 0, 1, 0, 0.0)
             state = solver.State(state.load, state.x, ev, conv)
-        run = cls(model, Front(model, sectors, settings.candidate_window_deg), settings, opts, material, state, step)
+        run = cls(model, Front.of(model, sectors, settings), settings, opts, material, state, step)
         run.wanted = frozenset(int(s) for s in snapshot_steps)
         run._accept(state)
         return run
@@ -524,13 +599,14 @@ class GrowthRun:
         if ruptured.size:
             log.info(
                 "[%s] pass %d, c = %g mEq/l: %d ruptured (%d converted in all), delaminated %.1f um, "
-                "max onset stress %.1f kPa%s",
+                "%d islands apart, max onset stress %.1f kPa%s",
                 self.run_name,
                 self.step,
                 self.concentration,
                 ruptured.size,
                 self.rows[-1].converted[0],
                 self.rows[-1].length,
+                self.rows[-1].islands.count,
                 self.tip,
                 " (through a snap)" if snapped else "",
             )
@@ -625,6 +701,7 @@ class GrowthRun:
                 self.concentration,
                 self.front.converted(self.hist),
                 self.front.delaminated_length(self.hist),
+                self.front.islands(self.hist),
                 self.tip,
                 st.convergence.residual,
                 snapped,
@@ -652,6 +729,9 @@ class GrowthRun:
                     converted_interior=r.converted[1],
                     converted_exterior=r.converted[2],
                     delaminated_length_um=r.length,
+                    islands=r.islands.count,
+                    island_particles=r.islands.particles,
+                    island_distance_um=r.islands.distance_um,
                     tip_radial_stress_kPa=r.tip_stress,
                     residual=r.residual,
                     snap=r.snap,
@@ -665,6 +745,9 @@ class GrowthRun:
         summary = dict(
             onset_concentration_mEq_l=self.onset_c,
             final_length_um=length,
+            islands=rows[-1].islands.count,
+            island_particles=rows[-1].islands.particles,
+            island_distance_um=rows[-1].islands.distance_um,
             outcome=outcome(stop, length, self.merge_step is not None),
             first_growth_concentration_mEq_l=first_c,
             first_level_length_um=first_length,
@@ -764,6 +847,7 @@ def labelled(result: Result, case: str, settings: Settings, dx: float) -> tuple[
         case=case,
         sigma_cr_kPa=settings.critical_stress_kPa,
         criterion=settings.criterion,
+        candidates=settings.candidates,
         dx_um=float(dx),
         damage_law=settings.damage_law,
         fracture_energy_J_m2=settings.fracture_energy_J_m2,
