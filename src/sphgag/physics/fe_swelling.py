@@ -71,9 +71,10 @@ def _curved(vx, vpar, tri, fan, phi):
 
 def _mapped_mesh(q, t, phi, inside):
     """Isoparametric meshes of the grid ``q x t`` mapped by ``phi(q, t) -> (x, y)`` (grid points that map together
-    are merged: a fan; each cell is split along its shorter diagonal). Returns the mesh of the displacement, the mesh
-    of the pressure (the same triangles, the vertices on the pool boundary doubled: the pressure jumps there), the
-    pool's elements (``inside(q, t)`` true at their parameter centroid) and the parameter centroids (2, elements)."""
+    are merged: a fan; each cell is split along its shorter diagonal, alternating where they are equal). Returns the
+    mesh of the displacement, the mesh of the pressure (the same triangles, the vertices on the pool boundary doubled:
+    the pressure jumps there), the pool's elements (``inside(q, t)`` true at their parameter centroid) and the
+    parameter centroids (2, elements)."""
     Q, T = np.meshgrid(q, t, indexing="ij")
     par = np.vstack([Q.ravel(), T.ravel()])
     X = np.vstack(phi(*par))
@@ -82,7 +83,9 @@ def _mapped_mesh(q, t, phi, inside):
     i = merged.ravel()[np.arange(Q.size).reshape(Q.shape)]
     a, b, c, d = i[:-1, :-1].ravel(), i[1:, :-1].ravel(), i[1:, 1:].ravel(), i[:-1, 1:].ravel()
     vpar, vx, fan = par[:, first], X[:, first], count > 1
-    short = np.linalg.norm(vx[:, a] - vx[:, c], axis=0) <= np.linalg.norm(vx[:, b] - vx[:, d], axis=0)
+    ac, bd = np.linalg.norm(vx[:, a] - vx[:, c], axis=0), np.linalg.norm(vx[:, b] - vx[:, d], axis=0)
+    parity = (np.add.outer(np.arange(len(q) - 1), np.arange(len(t) - 1)) % 2 == 0).ravel()
+    short = np.where(np.abs(ac - bd) < 1e-6 * bd, parity, ac < bd)  # equal diagonals (polar cells): alternating
     tri = np.hstack([np.where(short, [a, b, c], [a, b, d]), np.where(short, [a, c, d], [b, c, d])])
     tri = tri[:, (tri[0] != tri[1]) & (tri[1] != tri[2]) & (tri[0] != tri[2])]  # a cell with a merged side: one
     centre = vpar[:, tri].mean(1)
@@ -151,7 +154,7 @@ class _Model:
     """Displacement (P2) and, in the matrix, pressure (P1) of one problem. Matrix: the stationary points of
     ``int mu/2 (I1 - 3) - mu ln J + p ln J - p^2 / (2 lam)`` (eliminating ``p = lam ln J`` gives back ``W``). Pool
     (``pool``: its elements): displacement only (a mixed form is unstable where ``p`` exceeds ~2 mu_g). The GAG law
-    loses ellipticity where ``mu_g (J + 1) + lam_g < lam_g ln J`` (equi-biaxial; J > 2.9 for the configuration's
+    loses ellipticity where ``mu_g (J + 1) + lam_g < lam_g ln J`` (equi-biaxial; J > 2.82 for the configuration's
     GAG): with ``uniform_bulk`` its ``lam_g/2 (ln J)^2`` is taken at the pool's mean dilatation ``Jm`` (current /
     reference area), exact for a homogeneous pool and the one well-posed continuation beyond: forces of a uniform
     pressure ``-U'(Jm)``, tangent plus the rank one ``U''(Jm) / A f f^T`` (Sherman-Morrison)."""
@@ -243,9 +246,9 @@ class _Model:
 
 
 def _ramp(model, pressures, measure, max_halvings=10):
-    """Converged states at every pressure (in order), one row each of ``measure(u, pi)``, plus ``pressure_kPa``,
-    ``n_dofs``, ``residual`` and ``newton_steps`` (the load increments to get there); stops at a failed pressure
-    (``attrs['failed_at']``)."""
+    """The converged state at every pressure (in order): one row each of ``measure(x, pi)`` with ``pressure_kPa``,
+    ``n_dofs``, ``residual`` (relative, :meth:`_Model.residual`) and ``increments`` (the load steps it took). Stops at
+    a pressure not reached in ``max_halvings`` halvings of the step (``attrs['failed_at']``)."""
     u, pi, history, rows = np.zeros(model.n_dofs), 0.0, [], []
     failed = None
     for target in pressures:
@@ -388,6 +391,7 @@ def mesh_study(problem, sizes):
             f = [v[(k, h)] for h in sizes[::-1]]  # finest first
             row[k] = f[0]
             row[f"{k}_change"] = abs(f[0] - f[1]) / abs(f[0])
-            row[f"{k}_order"] = np.log(abs(f[1] - f[2]) / abs(f[0] - f[1])) / np.log(sizes[-2] / sizes[-1])
+            with np.errstate(divide="ignore"):
+                row[f"{k}_order"] = np.log(abs(f[1] - f[2]) / abs(f[0] - f[1])) / np.log(sizes[-2] / sizes[-1])
         rows.append(row)
     return runs, pd.DataFrame(rows)
