@@ -10,6 +10,7 @@ exact solution:
 * ``--gag-hourglass``: the hourglass modulus of the GAG particles (eq. 2.14's E; default the configuration's), e.g.
   0 for no hourglass control inside the pool;
 * ``--no-fibres``: the wall without its fibre families (elastin alone);
+* ``--pool cavity``: the pool as a pressurised cavity (:mod:`sphgag.engine.pool_cavity`) after its conversion;
 * ``--hourglass``: the form of the hourglass control (``numerics.hourglass``: eq. 2.14 as printed or its energy form).
 
 For each spacing: the highest concentration with an equilibrium (steps of ``--step`` mEq/l, each bisected
@@ -24,6 +25,7 @@ share in each class: pool interior, pool boundary, pool corner, lining tissue, o
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import json
 import sys
 import time
@@ -39,7 +41,7 @@ sys.path.insert(0, str(ROOT / "benchmarks"))
 from loss_of_equilibrium import eigenpairs  # noqa: E402
 
 from sphgag import config, threads  # noqa: E402
-from sphgag.engine import geometry, hourglass, measure, solver  # noqa: E402
+from sphgag.engine import geometry, hourglass, measure, pool_cavity, solver  # noqa: E402
 from sphgag.engine.model import Model  # noqa: E402
 from sphgag.physics import materials  # noqa: E402
 from sphgag.studies import artery, protocols  # noqa: E402
@@ -125,6 +127,8 @@ def extremes(J: np.ndarray, masks: dict) -> dict:
 
 def run(cfg, dx, args) -> dict:
     numerics = dict(cfg["numerics"], hourglass=args.hourglass)
+    if args.alpha is not None:
+        numerics["hourglass_alpha"] = args.alpha
     p = dict(cfg["bilayer"], dx_um=dx)
     if args.no_fibres:
         p["mass_fractions"] = {layer: {"elastin": f["elastin"]} for layer, f in p["mass_fractions"].items()}
@@ -157,13 +161,18 @@ def run(cfg, dx, args) -> dict:
         **opts,
     )[-1]
     V = model.layout.volume[members]
+    if args.pool == "cavity":
+        cav = pool_cavity.Cavity.around(model.layout, members, state.x)
+        model = dataclasses.replace(model, cavities=(cav,), _cache={}, factorisation=None)
     reached, stall, path = 0.0, None, []
     for c in protocols.concentration_steps(sw):
         try:
             state = solver.follow_path(model, state.x, state.load, [protocols.swelling_load(base, 1.0, c)], **opts)[-1]
             reached = float(c)
             Jc = measure.cauchy_polar(state.evaluation)[3]
-            path.append([reached, float(np.sum(V * Jc[members]) / V.sum())])
+            cavity_ratio = cav.volume_ratio(state.x) if args.pool == "cavity" else None
+            ratio = cavity_ratio or float(np.sum(V * Jc[members]) / V.sum())
+            path.append([reached, ratio])
         except solver.SimulationError as exc:
             stall = exc
             break
@@ -176,7 +185,7 @@ def run(cfg, dx, args) -> dict:
         pool_area_um2=float(V.sum()),
         shape_area_um2=float(pool.area) if args.shape != "sector" else float(SmoothPool(sector, "ellipse").area),
         reached_mEq_l=reached,
-        volume_ratio=float(np.sum(V * J[members]) / V.sum()),
+        volume_ratio=path[-1][1] if path else float("nan"),
         path=path,
         class_sizes={name: int(m.sum()) for name, m in masks.items()},
         seconds=time.time() - t0,
@@ -202,6 +211,8 @@ def main():
     ap.add_argument("--gag-hourglass", type=float, default=None)
     ap.add_argument("--no-fibres", action="store_true")
     ap.add_argument("--hourglass", choices=hourglass.FORMS, default="paper")
+    ap.add_argument("--alpha", type=float, default=None, help="alpha of eq. (2.14) (default the configuration's)")
+    ap.add_argument("--pool", choices=("particles", "cavity"), default="particles")
     ap.add_argument("--step", type=float, default=12.5)
     ap.add_argument("--bisections", type=int, default=4)
     ap.add_argument("--tag", default="sector")

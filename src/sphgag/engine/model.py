@@ -9,14 +9,14 @@ measurements need (:class:`Evaluation`).
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 import numpy as np
 import scipy.sparse as sp
 
 from ..physics import materials
-from . import forces, hourglass, kernel
+from . import forces, hourglass, kernel, pool_cavity
 from .geometry import Layout
 from .kernel import Neighbours
 from .loading import (
@@ -85,6 +85,9 @@ class Model:
     hourglass_alpha : alpha of eq. (2.14); E comes from the property table.
     hourglass : the hourglass control's form (:data:`sphgag.engine.hourglass.FORMS`): ``paper`` (eq. 2.14 as
         printed) or ``energy`` (its energy form, :mod:`sphgag.engine.hourglass`).
+    cavities : pools modelled as pressurised cavities (:class:`sphgag.engine.pool_cavity.Cavity`): the swelling pressure
+        their particles' rows carry acts on their linings, their particles are held and carry nothing, and every
+        deformation gradient sees its own material only.
     boundary : optional ``boundary(load) -> (indices, positions)`` of particles with
         prescribed positions; by default the inner surface is held at
         ``load.inner_radius`` when the load prescribes one.
@@ -97,6 +100,7 @@ class Model:
     hourglass_alpha: float
     boundary: Callable[[Load], tuple] | None = None
     hourglass: str = "paper"
+    cavities: tuple = ()
     _cache: dict = field(default_factory=dict, repr=False)
     factorisation: object = field(default=None, repr=False)  # the solver's last LU, for reuse (solver.newton)
 
@@ -112,6 +116,7 @@ class Model:
         self._xe, self._fe = np.empty((n_ext, 2)), np.empty((n_ext, 2))
         self.block_diagonal = np.array([self.block_index(i, i) for i in range(self.n)], dtype=np.int64)
         self.pressure_blocks = pressure_stiffness_blocks(self.block_index, self.layout.inner_surface)
+        self.cavity_blocks = [c.stiffness_blocks(self.block_index) for c in self.cavities]
 
     @property
     def n(self) -> int:
@@ -128,9 +133,27 @@ class Model:
         key = (load.material if callable(self.props) else None, self.hourglass_alpha)
         if "props" not in self._cache or self._cache["key"] != key:
             props = np.ascontiguousarray(self.props(load) if callable(self.props) else self.props)
-            self._cache.update(key=key, props=props)
+            pressures = self._cavity_pressures(props)
+            if self.cavities:
+                props = props.copy()
+                for c in self.cavities:
+                    props[c.members, materials.PI] = 0.0
+                    props[c.members, materials.MU] = props[c.members, materials.LAM] = 0.0
+                    props[c.members, materials.HG_E] = 0.0
+            self._cache.update(key=key, props=props, cavity_pressures=pressures)
             self._stencil(props)
         return self._cache["props"], self._cache["hgc"], self._cache["pairs"]
+
+    def _cavity_pressures(self, props) -> list[tuple]:
+        """The prescribed swelling pressure (eqs. 2.25-2.27) of each cavity's particles, its lining's load, and
+        their shear modulus and bulk term (``(Pi, (mu_g, lam_g))``)."""
+        out = []
+        for c in self.cavities:
+            rows = props[c.members]
+            if np.any(rows[:, materials.FCD] > 0.0) or np.ptp(rows[:, materials.PI]) > 0.0:
+                raise ValueError(f"{self.name}: a cavity carries one prescribed pressure (the law 'prescribed')")
+            out.append((float(rows[0, materials.PI]), (float(rows[0, materials.MU]), float(rows[0, materials.LAM]))))
+        return out
 
     def _stencil(self, props) -> None:
         """Hourglass coefficients, hourglass stencil and packed pair data of ``props``: rebuilt only where what they
@@ -147,6 +170,9 @@ class Model:
         )
         beta, ah, sh = kernel.hourglass_gradients(self.nb, V, props[:, materials.TISSUE])
         hgc *= beta
+        nb_elastic = self.nb
+        if self.cavities:  # a free surface at every cavity: each material's own stencil for F too
+            nb_elastic = replace(self.nb, a=ah, s=sh)
         stiffness = None
         if self.hourglass == "energy":
             nb = self.nb
@@ -155,8 +181,9 @@ class Model:
                 nb.ptr, nb.nbr, nb.mirror, nb.R, ah, sh, hgc, self.blockmap, self.map_ptr, stiffness
             )
             hgc = np.zeros_like(hgc)
-        pairs = forces.PairData.pack(self.nb, V, hgc, ah)
+        pairs = forces.PairData.pack(nb_elastic, V, hgc, ah)
         self._cache.update(
+            nb_elastic=nb_elastic,
             stencil_of=((self.hourglass, self.hourglass_alpha), cols),
             hgc=hgc,
             pairs=pairs,
@@ -186,12 +213,19 @@ class Model:
 
     # -- boundary conditions --------------------------------------------------
     def constraints(self, load: Load):
+        """``(indices, positions)`` of the prescribed particles: the boundary's (by default the inner surface under
+        a prescribed radius) and the particles of every cavity, held."""
         if self.boundary is not None:
-            return self.boundary(load)
-        inner = self.layout.inner_surface
-        if load.inner_radius is None:
-            return np.empty(0, dtype=np.int64), np.empty((0, 2))
-        return inner, prescribed_inner_positions(self.layout.X[inner], load.inner_radius)
+            idx, pos = self.boundary(load)
+        elif load.inner_radius is None:
+            idx, pos = np.empty(0, dtype=np.int64), np.empty((0, 2))
+        else:
+            idx = self.layout.inner_surface
+            pos = prescribed_inner_positions(self.layout.X[idx], load.inner_radius)
+        if not self.cavities:
+            return idx, pos
+        idx = np.concatenate([idx] + [c.members for c in self.cavities])
+        return idx, np.vstack([pos] + [c.held for c in self.cavities])
 
     # -- evaluation -----------------------------------------------------------
     def evaluate(self, x: np.ndarray, load: Load, extra_stress: np.ndarray | None = None) -> Evaluation:
@@ -211,6 +245,8 @@ class Model:
         Fh = FP[:, 8:].reshape(n, 2, 2)
         p = load.pressure_kPa or 0.0
         f_ext = pressure_forces(x, lay.inner_surface, p, load.axial_stretch)
+        for c, (pc, contents) in zip(self.cavities, self._cache["cavity_pressures"]):
+            c.add_forces(f_ext, x, pc, load.axial_stretch, contents)
         cons, target = self.constraints(load)
         return Evaluation(
             x=x,
@@ -230,6 +266,7 @@ class Model:
         nb, lay, load = self.nb, self.layout, ev.load
         props, hgc, _ = self.material(load)
         ah, sh = self.hourglass_stencil(load)
+        elastic = self._cache["nb_elastic"]
         data = np.zeros((self.block_indices.size, 2, 2))
         forces.jacobian_blocks(
             ev.x,
@@ -237,8 +274,8 @@ class Model:
             nb.ptr,
             nb.nbr,
             nb.mirror,
-            nb.a,
-            nb.s,
+            elastic.a,
+            elastic.s,
             ah,
             sh,
             nb.R,
@@ -255,6 +292,9 @@ class Model:
         )
         if self._cache["hg_stiffness"] is not None:
             data -= self._cache["hg_stiffness"]
+        for c, blocks, (pc, contents) in zip(self.cavities, self.cavity_blocks, self._cache["cavity_pressures"]):
+            net = pool_cavity.pool_pressure(c.volume_ratio(ev.x), pc, load.axial_stretch, *contents)
+            c.add_stiffness(data, blocks, net, 1.0)
         add_pressure_stiffness(data, self.pressure_blocks, load.pressure_kPa or 0.0, load.axial_stretch)
         return data
 

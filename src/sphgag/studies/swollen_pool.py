@@ -1,0 +1,151 @@
+"""Large-strain swelling of a pool: the engine against the exact circular pool (and the finite-element references).
+
+The pools of figure 4 swell many-fold under the paper's prescribed Donnan pressure (eqs. 2.25-2.27), far beyond
+the linear regime of the Inglis/Lamé verification (:mod:`sphgag.studies.inclusion`). This verifies the engine where
+the exact answer is known at any strain: a circular GAG pool of radius ``A`` bonded in a matrix annulus
+``A < R < B`` (the elastin law of eq. 2.21 without pre-stretch or fibres), plane strain, the outer surface free,
+swollen by a prescribed ``Pi`` to pool volume ratios ``J`` of 4 to 25 and more
+(:func:`sphgag.physics.cavity.circular_pool`: the exact radially symmetric solution of the same laws).
+
+**Layout**: the particles of :func:`sphgag.studies.inclusion.ellipse_layout` with ``a = b = A`` (rings of width
+about ``dx``; the interface is a cell boundary) and ``extent = B - A``; mirror planes on both axes, no prescribed
+particle. **Measures** (each at a converged state with its residual):
+
+* ``volume_ratio``: the pool's area over its reference area, ``sum_pool V_i J_i / sum_pool V_i``, as the figure-4
+  runs measure it (:func:`sphgag.studies.protocols.swell_pool`);
+* ``lining_radius_um``: the mean current radius of the first matrix ring (the pool's lining) against the exact
+  ``r(R)`` at its reference radius;
+* ``hoop_error``: the largest error of the matrix particles' hoop stress (eq. 2.10, current polar frame) against
+  the exact field at their reference radius, over the particles one kernel support or more from the interface (the
+  stencils that straddle it average across the kink of the exact field), relative to the exact interface hoop stress;
+* ``outer_radius_um``: the mean current radius of the outer ring against the exact ``r`` there.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+import pandas as pd
+
+from ..engine import measure, pool_cavity, solver
+from ..engine.loading import Load
+from ..engine.numerics import Numerics
+from ..physics import cavity
+from . import inclusion
+
+
+def pool_load(pressure_kPa: float) -> Load:
+    """The load of a pool at swelling pressure ``pressure_kPa`` [kPa] (no lumen, plane strain at ``lz = 1``)."""
+    return Load(1.0, 0.0, material=(("swelling_pressure", float(pressure_kPa)),))
+
+
+def circle_model(A: float, B: float, dx: float, mat: inclusion.Materials, numerics: Numerics, pool_model: str):
+    """The quarter annulus with its pool on offset-circle rings, mirror planes on both axes, the outer ring free;
+    ``pool_model``: ``particles`` (the paper's GAG particles) or ``cavity`` (:mod:`sphgag.engine.pool_cavity`)."""
+    model = inclusion.inclusion_model(A, A, dx, B - A, mat, numerics, name=f"circular_pool_dx{dx:g}", free=True)
+    if pool_model == "particles":
+        return model
+    lay = model.layout
+    pool = pool_cavity.Cavity.around(lay, np.flatnonzero(lay.inclusion), lay.X, mirrored=True)
+    return replace(model, name=f"circular_cavity_dx{dx:g}", cavities=(pool,), _cache={})
+
+
+def volume_ratio(model, ev) -> float:
+    """The pool's area over its reference area: ``sum_pool V_i J_i / sum_pool V_i`` (the paper's particles) or
+    the area its lining encloses (a cavity, :meth:`sphgag.engine.pool_cavity.Cavity.volume_ratio`)."""
+    if model.cavities:
+        return model.cavities[0].volume_ratio(ev.x)
+    lay = model.layout
+    J = measure.cauchy(ev)[1]
+    return float(np.sum(lay.volume[lay.inclusion] * J[lay.inclusion]) / lay.volume[lay.inclusion].sum())
+
+
+def measure_circle(model, state: solver.State, exact: cavity.CircularPool, h: float) -> dict:
+    """The measures of the module docstring at one converged state (``h``: the kernel support)."""
+    lay = model.layout
+    ev = state.evaluation
+    pool = lay.inclusion
+    volume = volume_ratio(model, ev)
+    R0 = np.hypot(*lay.X.T)
+    r = np.hypot(*state.x.T)
+    lining = lay.ring_members(lay.first_matrix_ring)
+    lining_exact = float(exact.field(np.array([R0[lining].mean()]))["r"][0])
+    far = ~pool & (R0 >= lay.a + h)
+    _, s_tt, _, _ = measure.cauchy_polar(ev)
+    ref = exact.field(R0[far])["sigma_tt"]
+    edge = lay.ring_members(lay.ring_offset.size - 1)
+    return dict(
+        volume_ratio=volume,
+        volume_ratio_exact=exact.volume_ratio,
+        volume_error=volume / exact.volume_ratio - 1.0,
+        lining_radius_um=float(r[lining].mean()),
+        lining_radius_exact_um=lining_exact,
+        lining_error=float(r[lining].mean()) / lining_exact - 1.0,
+        hoop_error=float(np.abs(s_tt[far] - ref).max() / abs(exact.interface_hoop_kPa)),
+        interface_hoop_exact_kPa=exact.interface_hoop_kPa,
+        outer_radius_um=float(r[edge].mean()),
+        outer_radius_exact_um=float(exact.field(np.array([R0[edge].mean()]))["r"][0]),
+        residual=state.convergence.residual,
+        particles=model.n,
+    )
+
+
+def circle_study(
+    vc: dict, matrix: dict, gag: dict, numerics: Numerics, pool_model: str = "particles", log=None
+) -> pd.DataFrame:
+    """The circular pool at every spacing of ``vc['dx_um']`` and volume ratio of ``vc['volume_ratios']``.
+
+    ``vc``: ``radius_um`` (A), ``outer_radius_um`` (B), ``dx_um``, ``volume_ratios``, ``steps`` (pressure
+    increments from rest to the largest); ``matrix``, ``gag``: as the pool verification's
+    (:meth:`sphgag.studies.inclusion.Materials.of`; the GAG's bulk term of ``gag`` is kept, as in the artery).
+    One row per (spacing, volume ratio): the prescribed pressure that gives that exact volume ratio, the engine's
+    measures and the exact ones.
+    """
+    numerics = Numerics.of(numerics)
+    A, B = float(vc["radius_um"]), float(vc["outer_radius_um"])
+    mat = inclusion.Materials.of(matrix, gag, bulk=True)
+    m_solid = cavity.Solid(mat.mu, mat.lam)
+    g_solid = cavity.Solid(mat.mu_gag, mat.lam_gag)
+    targets = sorted(float(j) for j in vc["volume_ratios"])
+    pressures = [cavity.pressure_for_volume_ratio(j, A, B, m_solid, g_solid) for j in targets]
+    ramp = np.linspace(0.0, pressures[-1], int(vc["steps"]) + 1)[1:]
+    loads = sorted(set(ramp.tolist()) | set(pressures))
+    rows = []
+    for dx in vc["dx_um"]:
+        model = circle_model(A, B, float(dx), mat, numerics, pool_model)
+        h = numerics.kernel_support_factor * float(dx)
+        states = solver.follow_path(
+            model,
+            model.layout.X,
+            pool_load(0.0),
+            [pool_load(p) for p in loads],
+            run=model.name,
+            **numerics.solver_options(),
+        )
+        at = dict(zip(loads, states))
+        for j, p in zip(targets, pressures):
+            row = dict(
+                pool_model=pool_model,
+                dx_um=float(dx),
+                radius_um=A,
+                outer_radius_um=B,
+                target_volume_ratio=j,
+                pressure_kPa=p,
+            )
+            row.update(measure_circle(model, at[p], cavity.circular_pool(A, B, m_solid, g_solid, p), h))
+            rows.append(row)
+            if log is not None:
+                log.info(
+                    "[%s] Pi %.3f kPa: pool volume ratio %.3f (exact %.3f, %+.2f %%), lining radius %+.2f %%, "
+                    "hoop error %.2f %% of the interface hoop stress, residual %.1e",
+                    model.name,
+                    p,
+                    row["volume_ratio"],
+                    j,
+                    100 * row["volume_error"],
+                    100 * row["lining_error"],
+                    100 * row["hoop_error"],
+                    row["residual"],
+                )
+    return pd.DataFrame(rows)
