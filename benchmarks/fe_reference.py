@@ -1,4 +1,4 @@
-"""Mesh studies of the finite-element reference of a swelling pool (:mod:`sphgag.physics.fe_swelling`).
+"""Mesh studies of the finite-element reference of a swelling pool (:mod:`sphgag.studies.fe_swelling`).
 
 The elliptical pool (a/b = 3, b = 15 um, extent = a) up to a pool volume ratio of 10, and figure 4's case I pool in
 the all-elastin quarter annulus of the artery's wall (media + adventitia; probes in the media) up to 4.4, each at
@@ -22,8 +22,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
 from sphgag import config, threads  # noqa: E402
-from sphgag.physics import fe_swelling  # noqa: E402
-from sphgag.studies import artery  # noqa: E402
+from sphgag.studies import artery, fe_swelling  # noqa: E402
 
 ELLIPSE_PRESSURES = [10, 20, 30, 40, 50, 60, 65, 70, 72, 74]  # kPa; the last: pool volume ratio 10.1
 SECTOR_PRESSURES = [10, 20, 30, 40, 42, 44]  # kPa; the last: 4.4

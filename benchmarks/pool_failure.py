@@ -140,7 +140,7 @@ def run(cfg, dx, args) -> dict:
     gag = materials.law_gag(cfg["gag"], "prescribed")
     if args.gag_hourglass is not None:
         gag = dict(gag, hourglass_modulus_kPa=args.gag_hourglass)
-    model = artery.bilayer_model(p, numerics, name=f"pool_dx{dx:g}", pool=pool, gag=gag)
+    model = artery.bilayer_model(p, numerics, name=f"pool_dx{dx:g}", pool=[pool], gag=gag)
     members = model.props.converting
     masks = classes(model, members, sector)
     sw = dict(cfg["swelling"], concentration_points=int(round(150.0 / args.step)) + 1)

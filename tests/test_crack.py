@@ -9,6 +9,7 @@ from sphgag.studies import crack, inclusion
 NUMERICS = dict(
     kernel_support_factor=2.5,
     hourglass_alpha=5.0,
+    hourglass="paper",
     tolerance=1e-4,
     max_newton_iterations=30,
     max_bisections=10,

@@ -1,4 +1,4 @@
-"""The finite-element reference of a swelling pool (sphgag.physics.fe_swelling) against closed forms and itself.
+"""The finite-element reference of a swelling pool (sphgag.studies.fe_swelling) against closed forms and itself.
 
 Mesh sizes (``h``: the element size at the pool tip; measured on 2 shared cores, one thread):
 Inglis h = 0.5 um (15 k dofs, 2 s); circle h = 1 um (3 k dofs, 5 s); ellipse study h = 1, 0.5, 0.25 um
@@ -10,7 +10,8 @@ import pytest
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
-from sphgag.physics import fe_swelling, inglis
+from sphgag.physics import inglis
+from sphgag.studies import fe_swelling
 
 
 @pytest.fixture(scope="module")

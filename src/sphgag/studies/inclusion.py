@@ -185,11 +185,12 @@ class Materials:
 
 
 class InclusionMaterial:
-    """Property table as a function of the load's ``swelling_pressure`` [kPa] (eqs. 2.21, 2.27)."""
+    """Property table as a function of the load's ``swelling_pressure`` [kPa] (eqs. 2.21, 2.27): the matrix, and GAG
+    at ``members`` (default the layout's inclusion)."""
 
-    def __init__(self, layout: EllipseLayout, mat: Materials):
+    def __init__(self, layout: EllipseLayout, mat: Materials, members: np.ndarray | None = None):
         self.table = materials.empty_props(layout.n)
-        self.gag = np.flatnonzero(layout.inclusion)
+        self.gag = np.flatnonzero(layout.inclusion) if members is None else np.asarray(members, dtype=np.int64)
         self.table[:, materials.MU], self.table[:, materials.LAM] = mat.mu, mat.lam
         self.table[:, materials.HG_E] = mat.hourglass_modulus
         g = self.gag

@@ -2,9 +2,10 @@
 
 The pools of figure 4 swell many-fold under the paper's prescribed Donnan pressure (eqs. 2.25-2.27), far beyond
 the linear regime of the Inglis/Lamé verification (:mod:`sphgag.studies.inclusion`). This verifies the engine where
-the exact answer is known at any strain: a circular GAG pool of radius ``A`` bonded in a matrix annulus
-``A < R < B`` (the elastin law of eq. 2.21 without pre-stretch or fibres), plane strain, the outer surface free,
-swollen by a prescribed ``Pi`` to pool volume ratios ``J`` of 4 to 25 and more
+the exact answer is known at any strain (and, in :func:`sector_study`, where a finite-element solution of the
+same problem is the reference, :mod:`sphgag.studies.fe_swelling`): a circular GAG pool of radius ``A`` bonded in a
+matrix annulus ``A < R < B`` (the elastin law of eq. 2.21 without pre-stretch or fibres), plane strain, the outer
+surface free, swollen by a prescribed ``Pi`` to pool volume ratios ``J`` of 4 to 25 and more
 (:func:`sphgag.physics.cavity.circular_pool`: the exact radially symmetric solution of the same laws).
 
 **Layout**: the particles of :func:`sphgag.studies.inclusion.ellipse_layout` with ``a = b = A`` (rings of width
@@ -28,8 +29,9 @@ from dataclasses import replace
 import numpy as np
 import pandas as pd
 
-from ..engine import measure, pool_cavity, solver
+from ..engine import geometry, kernel, measure, pool_cavity, solver
 from ..engine.loading import Load
+from ..engine.model import Model
 from ..engine.numerics import Numerics
 from ..physics import cavity
 from . import inclusion
@@ -38,6 +40,18 @@ from . import inclusion
 def pool_load(pressure_kPa: float) -> Load:
     """The load of a pool at swelling pressure ``pressure_kPa`` [kPa] (no lumen, plane strain at ``lz = 1``)."""
     return Load(1.0, 0.0, material=(("swelling_pressure", float(pressure_kPa)),))
+
+
+def swell_from_rest(model, pressures, steps: int, numerics: Numerics) -> dict:
+    """``{Pi: converged state}`` at every pressure of ``pressures`` [kPa], on one path from rest in ``steps`` equal
+    increments up to the largest (with the requested pressures among them)."""
+    ramp = np.linspace(0.0, max(pressures), int(steps) + 1)[1:]
+    loads = sorted(set(ramp.tolist()) | {float(p) for p in pressures})
+    targets = [pool_load(p) for p in loads]
+    states = solver.follow_path(
+        model, model.layout.X, pool_load(0.0), targets, run=model.name, **numerics.solver_options()
+    )
+    return dict(zip(loads, states))
 
 
 def circle_model(A: float, B: float, dx: float, mat: inclusion.Materials, numerics: Numerics, pool_model: str):
@@ -51,14 +65,13 @@ def circle_model(A: float, B: float, dx: float, mat: inclusion.Materials, numeri
     return replace(model, name=f"circular_cavity_dx{dx:g}", cavities=(pool,), _cache={})
 
 
-def volume_ratio(model, ev) -> float:
+def volume_ratio_of(model, ev, members: np.ndarray) -> float:
     """The pool's area over its reference area: ``sum_pool V_i J_i / sum_pool V_i`` (the paper's particles) or
     the area its lining encloses (a cavity, :meth:`sphgag.engine.pool_cavity.Cavity.volume_ratio`)."""
     if model.cavities:
         return model.cavities[0].volume_ratio(ev.x)
-    lay = model.layout
-    J = measure.cauchy(ev)[1]
-    return float(np.sum(lay.volume[lay.inclusion] * J[lay.inclusion]) / lay.volume[lay.inclusion].sum())
+    V = model.layout.volume[members]
+    return float(np.sum(V * measure.cauchy(ev)[1][members]) / V.sum())
 
 
 def measure_circle(model, state: solver.State, exact: cavity.CircularPool, h: float) -> dict:
@@ -66,7 +79,7 @@ def measure_circle(model, state: solver.State, exact: cavity.CircularPool, h: fl
     lay = model.layout
     ev = state.evaluation
     pool = lay.inclusion
-    volume = volume_ratio(model, ev)
+    volume = volume_ratio_of(model, ev, np.flatnonzero(pool))
     R0 = np.hypot(*lay.X.T)
     r = np.hypot(*state.x.T)
     lining = lay.ring_members(lay.first_matrix_ring)
@@ -109,21 +122,11 @@ def circle_study(
     g_solid = cavity.Solid(mat.mu_gag, mat.lam_gag)
     targets = sorted(float(j) for j in vc["volume_ratios"])
     pressures = [cavity.pressure_for_volume_ratio(j, A, B, m_solid, g_solid) for j in targets]
-    ramp = np.linspace(0.0, pressures[-1], int(vc["steps"]) + 1)[1:]
-    loads = sorted(set(ramp.tolist()) | set(pressures))
     rows = []
     for dx in vc["dx_um"]:
         model = circle_model(A, B, float(dx), mat, numerics, pool_model)
         h = numerics.kernel_support_factor * float(dx)
-        states = solver.follow_path(
-            model,
-            model.layout.X,
-            pool_load(0.0),
-            [pool_load(p) for p in loads],
-            run=model.name,
-            **numerics.solver_options(),
-        )
-        at = dict(zip(loads, states))
+        at = swell_from_rest(model, pressures, vc["steps"], numerics)
         for j, p in zip(targets, pressures):
             row = dict(
                 pool_model=pool_model,
@@ -147,5 +150,62 @@ def circle_study(
                     100 * row["lining_error"],
                     100 * row["hoop_error"],
                     row["residual"],
+                )
+    return pd.DataFrame(rows)
+
+
+def sector_model(walls, pool: geometry.Sector, dx: float, mat: inclusion.Materials, numerics: Numerics, pool_model):
+    """The paper's sector pool (figure 4) in a quarter annulus of the matrix law alone: ``walls`` = (inner radius,
+    media/adventitia border, outer radius) [um], the pool's radial edges cell boundaries, mirror planes at 0 and 90
+    deg, inner and outer surfaces free; ``pool_model`` as :func:`circle_model`."""
+    r_in, r_media, r_out = (float(r) for r in walls)
+    edges = (pool.centre_radius - 0.5 * pool.radial_extent, pool.centre_radius + 0.5 * pool.radial_extent)
+    lay = geometry.quarter_annulus(
+        (r_in, *edges, r_media, r_out), dx, layer_names=("media", "media", "media", "adventitia")
+    )
+    members = pool.members(lay, layer="media")
+    numerics = Numerics.of(numerics)
+    nb = kernel.for_layout(lay, numerics.kernel_support_factor)
+    material = inclusion.InclusionMaterial(lay, mat, members)
+    model = Model(f"sector_pool_{pool_model}_dx{dx:g}", lay, nb, material, **numerics.hourglass_control())
+    if pool_model == "cavity":
+        model = replace(model, cavities=(pool_cavity.Cavity.around(lay, members, lay.X),), _cache={})
+    return model, members
+
+
+def sector_study(vs: dict, matrix: dict, gag: dict, numerics: Numerics, pool_model: str, log=None) -> pd.DataFrame:
+    """The sector pool in the matrix at every spacing of ``vs['dx_um']`` and pressure of ``vs['pressures_kPa']``
+    (``vs``: ``walls_um``, ``pool`` (a figure-4 case), ``probe_length_um``, ``steps``): figure 4's measures
+    (:func:`sphgag.studies.protocols.pool_measurements`) and the pool's volume ratio, to compare with
+    :func:`sphgag.studies.fe_swelling.sector_pool` on the same geometry and laws."""
+    from . import artery, protocols
+
+    numerics = Numerics.of(numerics)
+    mat = inclusion.Materials.of(matrix, gag, bulk=True)
+    pool = artery.pool_sector(vs["pool"])
+    pressures = sorted(float(p) for p in vs["pressures_kPa"])
+    rows = []
+    for dx in vs["dx_um"]:
+        model, members = sector_model(vs["walls_um"], pool, float(dx), mat, numerics, pool_model)
+        try:
+            at = swell_from_rest(model, pressures, vs["steps"], numerics)
+        except solver.SimulationError as exc:
+            if log is not None:
+                log.warning("[%s] %s", model.name, exc)
+            continue
+        for p in pressures:
+            ev = at[p].evaluation
+            row = dict(pool_model=pool_model, dx_um=float(dx), pressure_kPa=p, particles=model.n)
+            row.update(protocols.pool_measurements(model, ev, pool, members, float(vs["probe_length_um"])))
+            row.update(pool_volume_ratio=volume_ratio_of(model, ev, members), residual=at[p].convergence.residual)
+            rows.append(row)
+            if log is not None:
+                log.info(
+                    "[%s] Pi %.1f kPa: pool volume ratio %.3f, tip radial %.2f kPa, top hoop %.2f kPa",
+                    model.name,
+                    p,
+                    row["pool_volume_ratio"],
+                    row["tip_radial_stress_kPa"],
+                    row["top_circ_stress_kPa"],
                 )
     return pd.DataFrame(rows)
