@@ -89,6 +89,17 @@ def test_all_problems_are_reported_at_once(full_config):
         (("numerics", "tolerance"), float("nan"), "numerics.tolerance = nan is not a finite number"),
         (("numerics", "max_newton_iterations"), 30.0, "numerics.max_newton_iterations = 30.0 is invalid"),
         (("numerics", "reuse_factorisation"), 1, "numerics.reuse_factorisation = 1 is invalid"),
+        (("numerics", "hourglass"), "pairs", "numerics.hourglass = 'pairs' is invalid"),
+        (
+            ("verification", "circular_pool", "outer_radius_um"),
+            20.0,
+            "verification.circular_pool.outer_radius_um = 20 must be at least twice",
+        ),
+        (
+            ("verification", "circular_pool", "pool_models"),
+            ["particles", "bubble"],
+            "verification.circular_pool.pool_models[1] = 'bubble' is invalid",
+        ),
         (("numerics", "tolerance"), "1e-4", "write 1.0e-4"),
         (("swelling", "pressures_mmHg"), [103.0, 103.0], "swelling.pressures_mmHg = [103.0, 103.0] is invalid"),
         (("swelling", "cases", "I", "angular_extent_deg"), 0, "swelling.cases.I.angular_extent_deg = 0 is invalid"),

@@ -79,6 +79,17 @@ CONTRACT = {
         "dissipated_J_m2",
         "residual",
     ],
+    "results/verification/circular_pool.csv": [
+        "pool_model",
+        "dx_um",
+        "target_volume_ratio",
+        "pressure_kPa",
+        "volume_ratio",
+        "volume_error",
+        "lining_error",
+        "hoop_error",
+        "residual",
+    ],
     "results/verification/elliptic_pool.csv": [
         "dx_um",
         "semi_axis_a_um",

@@ -403,6 +403,7 @@ def _consistency(config: dict) -> list[str]:
             if first <= 0 or last >= 90:
                 problems.append(f"{name}: angles {first:g}-{last:g} deg reach a symmetry edge (0 or 90 deg)")
     problems += _thin_layers(config)
+    problems += _circular_pool(config.get("verification", {}).get("circular_pool", {}))
     if not problems and bil:
         problems += _empty_pools(config)
     act = bil.get("active", {})
@@ -436,6 +437,20 @@ def _bounds_text(node: dict) -> tuple[list, str]:
             tests.append((ok, node[word]))
             words.append(f"{sym} {node[word]}")
     return tests, " and ".join(words)
+
+
+def _circular_pool(vc: dict) -> list[str]:
+    """The large-strain verification's annulus: at least twice the pool's radius, and particles small enough to
+    put two rings in the pool."""
+    problems = []
+    where = "verification.circular_pool"
+    A, B = vc.get("radius_um", 0.0), vc.get("outer_radius_um", 0.0)
+    if B < 2.0 * A:
+        problems.append(f"{where}.outer_radius_um = {B:g} must be at least twice {where}.radius_um = {A:g}")
+    for k, dx in enumerate(vc.get("dx_um", [])):
+        if dx > 0.5 * A:
+            problems.append(f"{where}.dx_um[{k}] = {dx:g} must be at most half of {where}.radius_um = {A:g}")
+    return problems
 
 
 def _sensitivity(config: dict, schema: dict) -> list[str]:

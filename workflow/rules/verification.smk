@@ -187,3 +187,83 @@ rule verification_crack_figure:
         mem_mb=1000,
     script:
         "../scripts/verification_crack_figure.py"
+
+
+VCP = config["verification"]["circular_pool"]
+
+
+rule verify_circular_pool_model:
+    """A circular pool swollen to large strain ({model}: the paper's GAG particles, or the pool as a pressurised
+    cavity) at every spacing, against the exact radially symmetric solution of the same laws."""
+    input:
+        code=SPHGAG,
+    output:
+        table="results/verification/runs/circular_pool_{model}.csv",
+        provenance="results/provenance/verify_circular_pool_{model}.json",
+    log:
+        "logs/verify_circular_pool/{model}.log",
+    benchmark:
+        "results/benchmarks/verify_circular_pool_{model}.tsv"
+    wildcard_constraints:
+        model="|".join(VCP["pool_models"]),
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=30,
+        mem_mb=2000,
+    params:
+        pool={k: v for k, v in VCP.items() if k != "pool_models"},
+        matrix=POOL_MATRIX,
+        gag={k: config["gag"][k] for k in ("shear_modulus_kPa", "lame_lambda_kPa", "hourglass_modulus_kPa")},
+        numerics=config["numerics"],
+    script:
+        "../scripts/verify_circular_pool.py"
+
+
+rule verify_circular_pool:
+    """The large-strain verification of every pool model in one table."""
+    input:
+        expand(rules.verify_circular_pool_model.output.table, model=VCP["pool_models"]),
+    output:
+        report(
+            "results/verification/circular_pool.csv",
+            caption="../report/circular_pool.rst",
+            category="4 Verification",
+            labels={"result": "Table: a circular pool at large strain"},
+        ),
+    log:
+        "logs/verify_circular_pool.log",
+    benchmark:
+        "results/benchmarks/verify_circular_pool.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/concat_tables.py"
+
+
+rule verification_circular_pool_figure:
+    """The circular pool at large strain: errors of the pool's volume and of its lining's radius against dx."""
+    input:
+        code=PLOTS,
+        table=rules.verify_circular_pool.output[0],
+    output:
+        pdf="figures/verification_circular_pool.pdf",
+        png=report(
+            "figures/verification_circular_pool.png",
+            caption="../report/verification_circular_pool.rst",
+            category="4 Verification",
+            labels={"result": "Figure: a circular pool at large strain against its exact solution"},
+        ),
+    log:
+        "logs/verification_circular_pool_figure.log",
+    benchmark:
+        "results/benchmarks/verification_circular_pool_figure.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
+    script:
+        "../scripts/verification_circular_pool_figure.py"

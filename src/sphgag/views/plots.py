@@ -570,6 +570,42 @@ def resolution_panel(ax, errors: pd.DataFrame, measures: dict, ratios: dict):
     style_legend(ax, "upper left", fontsize=6.5, bbox_to_anchor=(1.0, 1.0))
 
 
+def verification_circular_pool(table: pd.DataFrame):
+    """The circular pool at large strain (circular_pool.csv): |relative error| of (a) the pool's volume ratio and
+    (b) its lining's radius against dx, log-log; a colour per volume ratio, a line style per pool model, the
+    observed order of each line in the legend."""
+    from ..studies.inclusion import observed_order
+
+    _style()
+    fig, axes = plt.subplots(1, 2, figsize=(11.0, 3.2))
+    ratios = sorted(table.target_volume_ratio.unique())
+    colours = dict(zip(ratios, sns.color_palette("Dark2", len(ratios)).as_hex()))
+    styles = dict(zip(sorted(table.pool_model.unique()), ["-", "--", ":", "-."]))
+    for ax, column, title in (
+        (axes[0], "volume_error", "(a) pool volume ratio"),
+        (axes[1], "lining_error", "(b) radius of the lining"),
+    ):
+        for (model, ratio), g in table.groupby(["pool_model", "target_volume_ratio"]):
+            g = g.sort_values("dx_um")
+            order = observed_order(g.dx_um, g[column])
+            ax.loglog(
+                g.dx_um,
+                np.maximum(g[column].abs(), 1e-5),
+                styles[model],
+                marker="o",
+                ms=3.5,
+                color=colours[ratio],
+                label=f"{model}, J = {ratio:g}: order {order:.2f}",
+            )
+        ax.axhline(0.02, color="0.6", lw=0.6, ls="--")
+        ax.set(xlabel="dx (um)", ylabel="|relative error|", title=title)
+        ax.set_xticks(sorted(table.dx_um.unique()), [f"{d:g}" for d in sorted(table.dx_um.unique())])
+        ax.minorticks_off()
+    axes[1].legend(frameon=False, fontsize=6.5, loc="upper left", bbox_to_anchor=(1.02, 1.0))
+    fig.tight_layout()
+    return fig
+
+
 def verification_crack(table: pd.DataFrame, modulus: float, fracture_energy_J_m2: float, critical_stress: float):
     """The pressurised crack (pressurised_crack.csv): (a) the pressure at which it grows against Griffith's (and
     Dugdale's, for the cohesive length), a marker per spacing; (b) the opening area before growth against Sneddon's;

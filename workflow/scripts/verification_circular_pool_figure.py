@@ -1,0 +1,15 @@
+"""Rule verification_circular_pool_figure: the circular pool at large strain against its exact solution."""
+
+import pandas as pd
+
+from sphgag import threads
+from sphgag.records import runlog
+from sphgag.views import plots
+
+sm = snakemake  # noqa: F821
+threads.use(sm.threads)
+with runlog.run("verification_circular_pool_figure", sm.log[0]):
+    table = pd.read_csv(sm.input.table)
+    plots.finite_or_raise(table, ["volume_error", "lining_error"], "verification_circular_pool")
+    fig = plots.verification_circular_pool(table)
+    plots.save(fig, [sm.output.pdf, sm.output.png], "Verification of a circular pool at large strain, sphgag")
