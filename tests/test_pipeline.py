@@ -83,6 +83,7 @@ CONTRACT = {
         "pool_model",
         "dx_um",
         "target_volume_ratio",
+        "path_end",
         "pressure_kPa",
         "volume_ratio",
         "volume_error",

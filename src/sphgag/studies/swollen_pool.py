@@ -42,16 +42,26 @@ def pool_load(pressure_kPa: float) -> Load:
     return Load(1.0, 0.0, material=(("swelling_pressure", float(pressure_kPa)),))
 
 
-def swell_from_rest(model, pressures, steps: int, numerics: Numerics) -> dict:
-    """``{Pi: converged state}`` at every pressure of ``pressures`` [kPa], on one path from rest in ``steps`` equal
-    increments up to the largest (with the requested pressures among them)."""
+def swell_from_rest(model, pressures, steps: int, numerics: Numerics) -> tuple[dict, str]:
+    """``({Pi: converged state}, end)`` on one path from rest in ``steps`` equal increments up to the largest of
+    ``pressures`` [kPa] (with the requested pressures among them): the states reached, and ``complete`` or why the
+    path ended (no state beyond its last equilibrium is returned)."""
     ramp = np.linspace(0.0, max(pressures), int(steps) + 1)[1:]
     loads = sorted(set(ramp.tolist()) | {float(p) for p in pressures})
-    targets = [pool_load(p) for p in loads]
-    states = solver.follow_path(
-        model, model.layout.X, pool_load(0.0), targets, run=model.name, **numerics.solver_options()
-    )
-    return dict(zip(loads, states))
+    reached = {}
+    try:
+        solver.follow_path(
+            model,
+            model.layout.X,
+            pool_load(0.0),
+            [pool_load(p) for p in loads],
+            run=model.name,
+            on_state=lambda st: reached.update({st.load.material_value("swelling_pressure"): st}),
+            **numerics.solver_options(),
+        )
+    except solver.SimulationError as exc:
+        return reached, str(exc)
+    return reached, "complete"
 
 
 def circle_model(A: float, B: float, dx: float, mat: inclusion.Materials, numerics: Numerics, pool_model: str):
@@ -113,7 +123,8 @@ def circle_study(
     increments from rest to the largest); ``matrix``, ``gag``: as the pool verification's
     (:meth:`sphgag.studies.inclusion.Materials.of`; the GAG's bulk term of ``gag`` is kept, as in the artery).
     One row per (spacing, volume ratio): the prescribed pressure that gives that exact volume ratio, the engine's
-    measures and the exact ones.
+    measures and the exact ones, and ``path_end`` (``complete``, or why the spacing's path ended: its rows beyond
+    the last equilibrium carry no measures).
     """
     numerics = Numerics.of(numerics)
     A, B = float(vc["radius_um"]), float(vc["outer_radius_um"])
@@ -126,7 +137,9 @@ def circle_study(
     for dx in vc["dx_um"]:
         model = circle_model(A, B, float(dx), mat, numerics, pool_model)
         h = numerics.kernel_support_factor * float(dx)
-        at = swell_from_rest(model, pressures, vc["steps"], numerics)
+        at, end = swell_from_rest(model, pressures, vc["steps"], numerics)
+        if end != "complete" and log is not None:
+            log.warning("[%s] the path ends before the last pressure: %s", model.name, end)
         for j, p in zip(targets, pressures):
             row = dict(
                 pool_model=pool_model,
@@ -135,7 +148,11 @@ def circle_study(
                 outer_radius_um=B,
                 target_volume_ratio=j,
                 pressure_kPa=p,
+                path_end=end,
             )
+            if p not in at:  # beyond the path's last equilibrium: no state, no numbers
+                rows.append(row)
+                continue
             row.update(measure_circle(model, at[p], cavity.circular_pool(A, B, m_solid, g_solid, p), h))
             rows.append(row)
             if log is not None:
@@ -187,13 +204,10 @@ def sector_study(vs: dict, matrix: dict, gag: dict, numerics: Numerics, pool_mod
     rows = []
     for dx in vs["dx_um"]:
         model, members = sector_model(vs["walls_um"], pool, float(dx), mat, numerics, pool_model)
-        try:
-            at = swell_from_rest(model, pressures, vs["steps"], numerics)
-        except solver.SimulationError as exc:
-            if log is not None:
-                log.warning("[%s] %s", model.name, exc)
-            continue
-        for p in pressures:
+        at, end = swell_from_rest(model, pressures, vs["steps"], numerics)
+        if end != "complete" and log is not None:
+            log.warning("[%s] the path ends before the last pressure: %s", model.name, end)
+        for p in filter(at.__contains__, pressures):
             ev = at[p].evaluation
             row = dict(pool_model=pool_model, dx_um=float(dx), pressure_kPa=p, particles=model.n)
             row.update(protocols.pool_measurements(model, ev, pool, members, float(vs["probe_length_um"])))

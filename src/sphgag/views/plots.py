@@ -602,7 +602,12 @@ def verification_circular_pool(table: pd.DataFrame):
         ax.set_xticks(sorted(table.dx_um.unique()), [f"{d:g}" for d in sorted(table.dx_um.unique())])
         ax.minorticks_off()
     axes[1].legend(frameon=False, fontsize=6.5, loc="upper left", bbox_to_anchor=(1.02, 1.0))
-    fig.tight_layout()
+    ended = table[table.volume_error.isna()].groupby(["pool_model", "dx_um"]).target_volume_ratio.min()
+    if len(ended):
+        paths = "; ".join(f"{m}, dx = {d:g} um, from J = {j:g}" for (m, d), j in ended.items())
+        text = f"no equilibrium (the path ended): {paths}"
+        fig.text(0.01, 0.01, text, fontsize=6.5, va="bottom")
+    fig.tight_layout(rect=(0, 0.05 if len(ended) else 0, 1, 1))
     return fig
 
 
