@@ -22,13 +22,7 @@ with runlog.run(run, sm.log[0]) as log:
     provenance.write_record(
         sm.output.provenance,
         rule="verify_circular_pool",
-        params=dict(
-            model=sm.wildcards.model,
-            pool=sm.params.pool,
-            matrix=sm.params.matrix,
-            gag=sm.params.gag,
-            numerics=sm.params.numerics,
-        ),
+        params=dict(model=sm.wildcards.model, **dict(sm.params.items())),
         outputs=list(sm.output),
         summary=dict(
             finest_max_volume_error=float(finest.volume_error.abs().max()),

@@ -30,7 +30,7 @@ the Donnan pressure as a follower load:
 * the tissue sees a free surface at the pool: its deformation gradients come from tissue neighbours only (the
   material-split stencil of :func:`sphgag.engine.kernel.hourglass_gradients`, used for the elastic forces too);
 * the pool's particles (the filler) no longer touch the tissue and are held where the pool's conversion left them
-  (their positions carry no meaning; :meth:`Cavity.filler_positions` places them for output).
+  (their positions carry no meaning).
 """
 
 from __future__ import annotations
@@ -123,13 +123,6 @@ class Cavity:
         np.add.at(data, (nxt, 1, 0), -c)
         np.add.at(data, (prv, 0, 1), -c)
         np.add.at(data, (prv, 1, 0), c)
-
-    def filler_positions(self, x: np.ndarray, X: np.ndarray) -> np.ndarray:
-        """Positions of the pool's particles for output: the lining's mean displacement added to the reference
-        scaled about the lining's centroid by the pool's stretch (the filler carries no meaning in the mechanics)."""
-        ref, cur = X[self.loop].mean(axis=0), x[self.loop].mean(axis=0)
-        stretch = np.sqrt(max(self.volume_ratio(x), 0.0))
-        return cur + stretch * (X[self.members] - ref)
 
 
 def pool_pressure(J: float, pressure_kPa: float, lz: float, mu: float, lam: float) -> float:

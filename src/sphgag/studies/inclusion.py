@@ -236,11 +236,15 @@ def inclusion_model(
     )
 
 
+def pressure_load(pressure_kPa: float) -> Load:
+    """The load of an inclusion at swelling pressure ``pressure_kPa`` [kPa] (no lumen, plane strain at ``lz = 1``)."""
+    return Load(1.0, 0.0, material=(("swelling_pressure", float(pressure_kPa)),))
+
+
 def swell(model: Model, pressure_kPa: float, numerics: Numerics) -> solver.State:
     """The converged state with the inclusion at swelling pressure ``pressure_kPa`` (one load step from rest)."""
     numerics = Numerics.of(numerics)
-    load = Load(1.0, 0.0, material=(("swelling_pressure", float(pressure_kPa)),))
-    rest = Load(1.0, 0.0, material=(("swelling_pressure", 0.0),))
+    load, rest = pressure_load(pressure_kPa), pressure_load(0.0)
     return solver.follow_path(model, model.layout.X, rest, [load], run=model.name, **numerics.solver_options())[-1]
 
 

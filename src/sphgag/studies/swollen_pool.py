@@ -30,16 +30,10 @@ import numpy as np
 import pandas as pd
 
 from ..engine import geometry, kernel, measure, pool_cavity, solver
-from ..engine.loading import Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
 from ..physics import cavity
 from . import inclusion
-
-
-def pool_load(pressure_kPa: float) -> Load:
-    """The load of a pool at swelling pressure ``pressure_kPa`` [kPa] (no lumen, plane strain at ``lz = 1``)."""
-    return Load(1.0, 0.0, material=(("swelling_pressure", float(pressure_kPa)),))
 
 
 def swell_from_rest(model, pressures, steps: int, numerics: Numerics) -> tuple[dict, str]:
@@ -53,8 +47,8 @@ def swell_from_rest(model, pressures, steps: int, numerics: Numerics) -> tuple[d
         solver.follow_path(
             model,
             model.layout.X,
-            pool_load(0.0),
-            [pool_load(p) for p in loads],
+            inclusion.pressure_load(0.0),
+            [inclusion.pressure_load(p) for p in loads],
             run=model.name,
             on_state=lambda st: reached.update({st.load.material_value("swelling_pressure"): st}),
             **numerics.solver_options(),
