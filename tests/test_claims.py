@@ -51,20 +51,38 @@ def test_a_run_that_ended_early_is_read_at_its_last_converged_state():
     assert found["C10"].holds in ("yes", "no") and np.isfinite(float(found["C10"].our_value.split()[4]))
 
 
-def test_pool_claims_are_one_row_per_claim_and_law():
-    tips = pd.concat([tips_table("prescribed"), tips_table("conserved")], ignore_index=True)
-    found = claims.by_law(
-        ["prescribed", "conserved"], lambda law: claims.swelling_claims(claims.of_law(tips, law), CASES, 150.0)
+def test_pool_claims_are_one_row_per_claim_law_and_pool_model():
+    tips = pd.concat(
+        [tips_table("prescribed"), tips_table("conserved"), tips_table("prescribed").assign(pool_model="cavity")],
+        ignore_index=True,
     )
+    tips["pool_model"] = tips.pool_model.fillna("particles")
+    pairs = [("prescribed", "particles"), ("conserved", "particles"), ("prescribed", "cavity")]
+    found = claims.by_law(pairs, lambda law, pool: claims.swelling_claims(claims.of_law(tips, law, pool), CASES, 150.0))
     table = claims.table(found)
-    assert list(table.columns[:2]) == ["claim_id", "charge_law"]
-    assert list(table.claim_id[:4]) == ["C6", "C6", "C7", "C7"]
-    assert list(table.charge_law[:4]) == ["prescribed", "conserved"] * 2
-    c8 = table[table.claim_id == "C8"].set_index("charge_law")
+    assert list(table.columns[:3]) == ["claim_id", "charge_law", "pool_model"]
+    assert list(table.claim_id[:6]) == ["C6"] * 3 + ["C7"] * 3
+    assert list(zip(table.charge_law[:3], table.pool_model[:3])) == pairs
+    c8 = table[(table.claim_id == "C8") & (table.pool_model == "particles")].set_index("charge_law")
     assert c8.loc["prescribed", "our_value"] != c8.loc["conserved", "our_value"]  # each law its own numbers
     assert set(c8.criterion) == {c8.criterion.iloc[0]}  # one criterion for both
     md = claims.markdown(table)
-    assert "| C8 | prescribed |" in md and "| C8 | conserved |" in md
+    assert "| C8 | prescribed | particles |" in md and "| C8 | conserved | particles |" in md
+    assert "| C8 | prescribed | cavity |" in md
+
+
+def test_claims_evaluate_every_law_with_the_papers_pool_model_and_the_other_pool_models_where_they_ran():
+    tips = pd.concat(
+        [tips_table("prescribed"), tips_table("conserved"), tips_table("prescribed").assign(pool_model="cavity")],
+        ignore_index=True,
+    )
+    tips["pool_model"] = tips.pool_model.fillna("particles")
+    assert claims.variants(tips, ["prescribed", "conserved"]) == [
+        ("prescribed", "particles"),
+        ("conserved", "particles"),
+        ("prescribed", "cavity"),
+    ]
+    assert claims.variants(None, ["prescribed"]) == [("prescribed", "particles")]
 
 
 def delamination_tables(names: dict):
@@ -131,7 +149,9 @@ def test_a_claim_whose_target_has_not_run_is_in_the_table_marked_not_run():
     laws = ["prescribed", "conserved"]
 
     def c18(e):
-        return claims.by_law(laws, lambda law: [claims.c18_onset_across_inputs(e.of_law(law))])
+        return claims.by_law(
+            [(law, "particles") for law in laws], lambda law, _: [claims.c18_onset_across_inputs(e.of_law(law))]
+        )
 
     without = claims.table(c18(claims.Evidence(tips=tips, cases=CASES)))
     assert list(without.charge_law) == laws and list(without.claim_id) == ["C18", "C18"]
@@ -145,7 +165,10 @@ def test_a_claim_whose_target_has_not_run_is_in_the_table_marked_not_run():
     e = claims.Evidence(tips=tips, cases=CASES, sensitivity=samples)
     found = {
         c.charge_law: c
-        for c in claims.by_law(["prescribed", "conserved"], lambda law: [claims.c18_onset_across_inputs(e.of_law(law))])
+        for c in claims.by_law(
+            [("prescribed", "particles"), ("conserved", "particles")],
+            lambda law, _: [claims.c18_onset_across_inputs(e.of_law(law))],
+        )
     }
     assert found["prescribed"].holds == "yes" and found["conserved"].holds == "no"
     assert found["prescribed"].our_value.startswith("onset in 2 of 3 samples (67 %), at 90-100 mEq/l")

@@ -146,6 +146,25 @@ def test_a_bad_charge_law_list_is_rejected_by_name(ci_config, value, expected):
     assert expected in bad(ci_config, ["gag", "charge_laws"], value)
 
 
+@pytest.mark.parametrize(
+    "value, expected",
+    [
+        (["particles", "bubble"], "swelling.pool_models[1] = 'bubble' is invalid"),
+        ([], "swelling.pool_models = [] is invalid"),
+    ],
+)
+def test_a_bad_pool_model_list_is_rejected_by_name(ci_config, value, expected):
+    assert expected in bad(ci_config, ["swelling", "pool_models"], value)
+
+
+def test_a_pool_model_without_any_of_its_charge_laws_is_rejected(ci_config):
+    """The cavity carries the prescribed law only: with the conserved law alone it would run nothing."""
+    cfg = copy.deepcopy(ci_config)
+    cfg["gag"]["charge_laws"] = ["conserved"]
+    expected = "swelling.pool_models[1] = 'cavity' carries the charge laws prescribed, none of gag.charge_laws"
+    assert expected in bad(cfg, ["swelling", "pool_models"], ["particles", "cavity"])
+
+
 def test_the_old_charge_switch_is_an_unknown_key(ci_config):
     cfg = copy.deepcopy(ci_config)
     cfg["gag"]["fixed_charge_dilution"] = True
@@ -227,8 +246,10 @@ def test_the_schemas_enumerations_are_the_registries():
     from sphgag.physics.materials import CHARGE_LAWS
     from sphgag.studies.candidates import RULES
     from sphgag.studies.onset import CRITERIA
+    from sphgag.studies.protocols import POOL_MODELS
 
     s = config.schema(SCHEMA)
+    assert s["properties"]["swelling"]["properties"]["pool_models"]["items"]["enum"] == list(POOL_MODELS)
     assert s["properties"]["delamination"]["properties"]["criteria"]["items"]["enum"] == list(CRITERIA)
     assert s["properties"]["gag"]["properties"]["charge_laws"]["items"]["enum"] == list(CHARGE_LAWS)
     assert s["properties"]["delamination"]["properties"]["candidates"]["enum"] == list(RULES)

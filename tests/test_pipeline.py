@@ -54,6 +54,7 @@ CONTRACT = {
     ],
     "results/swelling/tip_stress.csv": [
         "charge_law",
+        "pool_model",
         "model",
         "case",
         "pressure_mmHg",
@@ -64,7 +65,7 @@ CONTRACT = {
         "top_circ_stress_kPa",
         "residual",
     ],
-    "results/claims.csv": ["claim_id", "charge_law", "statement", "paper_value", "our_value", "holds"],
+    "results/claims.csv": ["claim_id", "charge_law", "pool_model", "statement", "paper_value", "our_value", "holds"],
     "results/verification/pressurised_crack.csv": [
         "dx_um",
         "half_length_um",
@@ -104,6 +105,7 @@ CONTRACT = {
     ],
     "results/swelling/convergence.csv": [
         "charge_law",
+        "pool_model",
         "dx_um",
         "particles",
         "case",
@@ -383,12 +385,13 @@ def test_every_run_has_its_paraview_series_and_every_delamination_run_its_animat
     from sphgag.views import paraview
 
     runs = sorted((workdir / "results/delamination/runs").glob("*/*_snapshots.npz"))
-    runs += sorted((workdir / "results/swelling/states").glob("*/*.npz"))
+    runs += sorted((workdir / "results/swelling/states").glob("*/*/*.npz"))
     assert len(runs) > 10
     for path in runs:
         kind = "delamination" if path.name.endswith("_snapshots.npz") else "swelling"
-        law, run = path.parent.name, path.name.removesuffix("_snapshots.npz").removesuffix(".npz")
-        series = paraview.read_series(workdir / f"results/paraview/{kind}/{law}/{run}/{run}.pvd")
+        run = path.name.removesuffix("_snapshots.npz").removesuffix(".npz")
+        folder = path.parent.relative_to(workdir / f"results/{kind}/{'runs' if kind == 'delamination' else 'states'}")
+        series = paraview.read_series(workdir / f"results/paraview/{kind}/{folder.as_posix()}/{run}/{run}.pvd")
         saved = state.load_series(path)
         assert len(series) == len(saved), path
         for frame, s in zip(series, saved):
@@ -396,7 +399,7 @@ def test_every_run_has_its_paraview_series_and_every_delamination_run_its_animat
             if s.history is not None:
                 np.testing.assert_array_equal(frame.data["damage"], s.history.D)
         if kind == "delamination":
-            with Image.open(workdir / f"figures/animations/{law}/{run}.gif") as gif:
+            with Image.open(workdir / f"figures/animations/{folder.as_posix()}/{run}.gif") as gif:
                 assert gif.n_frames == len(series), run
 
 
@@ -548,7 +551,7 @@ def test_a_warm_numba_cache_gives_the_bytes_of_a_cold_one(workdir, numba_cache, 
     targets = [
         "results/calibration/mean_pressure_diameter.csv",
         "results/homeostasis/summary.csv",
-        "results/swelling/runs/conserved/passive_I_103mmHg.csv",
+        "results/swelling/runs/conserved/particles/passive_I_103mmHg.csv",
         f"results/delamination/runs/conserved/{ci_config['delamination']['figures']['fig5']}_30kPa_particle_growth.csv",
     ]
     run = snakemake(
@@ -819,7 +822,7 @@ def test_the_nominal_sample_reruns_the_pipelines_runs_of_figure_5s_pool_to_the_b
     for law, path in runs.items():
         nominal = pd.read_csv(workdir / f"results/sensitivity/nominal/{law}/batch0.csv", dtype=str).iloc[0]
         assert nominal.status == "ok", nominal.error
-        swelling = workdir / f"results/swelling/runs/{law}/passive_{case}_{de['pressure_mmHg']:g}mmHg.csv"
+        swelling = workdir / f"results/swelling/runs/{law}/particles/passive_{case}_{de['pressure_mmHg']:g}mmHg.csv"
         table = pd.read_csv(swelling)
         at = np.flatnonzero((table.stage == "converted") & (table.concentration_mEq_l == se["concentration_mEq_l"]))
         printed = pd.read_csv(swelling, dtype=str).iloc[at[0]]

@@ -204,7 +204,7 @@ def wait_for(condition, seconds, what, log, procs):
 
 # five jobs: the homeostatic wall and its pressurised state (simulations), one pool swollen (a simulation) and
 # measured (a measurement), and figure 1 (a figure)
-SLURM_TARGETS = ["results/swelling/runs/conserved/passive_I_103mmHg.csv", "figures/fig1.png"]
+SLURM_TARGETS = ["results/swelling/runs/conserved/particles/passive_I_103mmHg.csv", "figures/fig1.png"]
 
 
 def snakemake_cmd(*args):

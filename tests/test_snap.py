@@ -180,6 +180,46 @@ def test_volume_control_reaches_a_requested_concentration(ci_config, swollen_poo
     assert np.abs(direct.x - reached[0].x).max() < 1e-4 * np.abs(direct.x - state.x).max()
 
 
+@pytest.fixture(scope="module")
+def swollen_cavity(ci_config, ci_wall):
+    """The CI pool of case I as a cavity (swelling.pool_models: cavity) at 50 mEq/l, with the model it is in."""
+    numerics = ci_config["numerics"]
+    pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
+    model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=prescribed(ci_config))
+    sw = dict(ci_config["swelling"], max_concentration_mEq_l=50.0, concentration_points=3, pool_model="cavity")
+    last = protocols.swell_pool(model, ci_wall, numerics, sw)[-1]
+    assert last.cavity
+    hollow = protocols.state_model(model, True, last.x)
+    return hollow, solver.State(last.load, last.x, hollow.evaluate(last.x, last.load), None)
+
+
+def test_the_cavitys_volume_is_the_area_its_lining_encloses_with_its_exact_gradient(swollen_cavity):
+    model, state = swollen_cavity
+    pool = pool_volume.PoolVolume.of(model, model.props.converting)
+    assert isinstance(pool, pool_volume.CavityVolume)
+    (cavity,) = model.cavities
+    assert pool(state.evaluation) == pytest.approx(cavity.pool_area * cavity.volume_ratio(state.x), rel=1e-12)
+    g = pool.gradient(state.x, state.load)
+    d = np.random.default_rng(5).standard_normal(state.x.shape)
+    h = 1e-4
+    up, down = pool(model.evaluate(state.x + h * d, state.load)), pool(model.evaluate(state.x - h * d, state.load))
+    assert (up - down) / (2 * h) == pytest.approx(float(np.sum(g * d)), rel=1e-6)
+
+
+def test_volume_control_of_a_cavity_holds_its_concentration_path(swollen_cavity):
+    """As for the pool of particles: the cavity's own volume as the control returns the state's concentration, and a
+    larger volume a higher one that concentration control confirms."""
+    model, state = swollen_cavity
+    pool = pool_volume.PoolVolume.of(model, model.props.converting)
+    v0 = pool(state.evaluation)
+    same = pool_volume.solve_at_volume(model, pool, state.x, state.load, v0, 1e-8, 20, "test")
+    assert same.concentration == pytest.approx(50.0, abs=1e-3)
+    bigger = pool_volume.solve_at_volume(model, pool, state.x, state.load, 1.05 * v0, 1e-8, 20, "test")
+    assert bigger.concentration > 50.0
+    check = solver.follow_path(model, state.x, state.load, [bigger.load], tol=1e-8)[-1]
+    assert pool(check.evaluation) == pytest.approx(1.05 * v0, rel=1e-6)
+
+
 def test_a_limit_point_is_the_top_of_the_parabola_through_the_largest_concentration():
     points = [(v, 100.0 - (v - 3.0) ** 2) for v in (1.0, 2.0, 2.5, 3.5, 4.0)]
     assert pool_volume._limit(points) == pytest.approx(100.0)

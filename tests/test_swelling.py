@@ -93,6 +93,27 @@ def test_swelling_keeps_the_lumen_pressure_and_converges(ci_config, pressurised)
     assert np.all(np.diff(conv.tip_radial_stress_kPa) > 0)
 
 
+def test_a_cavity_run_measures_its_pool_by_the_area_its_lining_encloses(ci_config, pressurised):
+    """swelling.pool_models: cavity. The converted states are equilibria of the wall with the pool as a cavity (below
+    tolerance when measured with that model), their volume change is the cavity's, and every row names the run's
+    pool model; the intact wall is the paper's."""
+    sw = dict(ci_config["swelling"], pool_model="cavity")
+    sector = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
+    gag = law_gag(ci_config, "prescribed")
+    model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-cavity", pool=sector, gag=gag)
+    start = solver.State(pressurised.load, pressurised.x, None, None)
+    states = protocols.swell_pool(model, start, ci_config["numerics"], sw)
+    table = protocols.pool_table(model, states, sector, sw["probe_length_um"], gag)
+    assert (table.pool_model == "cavity").all() and list(table.cavity) == [False] + [True] * (len(table) - 1)
+    assert (table.residual < ci_config["numerics"]["tolerance"]).all()
+    last = states[-1]
+    hollow = protocols.state_model(model, True, last.x)
+    ev = hollow.evaluate(last.x, last.load)
+    assert solver.relative_residual(hollow, ev) < ci_config["numerics"]["tolerance"]
+    assert table.pool_volume_change.iloc[-1] == pytest.approx(hollow.cavities[0].volume_ratio(last.x) - 1.0)
+    assert np.all(np.diff(table.pool_volume_change.iloc[1:]) > 0)  # the cavity swells with c
+
+
 def test_a_pool_at_45_degrees_stresses_both_tips_alike(ci_config, pressurised):
     """The layout is mirror symmetric about 45 deg, so both tips must agree (to 1e-6 of their magnitude)."""
     case = dict(ci_config["swelling"]["cases"]["I"], centre_angle_deg=45.0)

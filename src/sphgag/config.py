@@ -173,9 +173,11 @@ def _registries() -> dict:
     from .physics.materials import CHARGE_LAWS
     from .studies.candidates import RULES
     from .studies.onset import CRITERIA
+    from .studies.protocols import POOL_MODELS
 
     return {
         ("gag", "charge_laws"): list(CHARGE_LAWS),
+        ("swelling", "pool_models"): list(POOL_MODELS),
         ("delamination", "criteria"): list(CRITERIA),
         ("delamination", "candidates"): list(RULES),
     }
@@ -311,6 +313,18 @@ def _pool_angles(pool: dict) -> tuple[float, float]:
     return pool["centre_angle_deg"] - half, pool["centre_angle_deg"] + half
 
 
+def _pool_models(pool_models: list, laws: list) -> list[str]:
+    """Each pool model of the swelling runs must carry one of the configured charge laws (it runs under those)."""
+    from .studies.protocols import POOL_MODELS
+
+    return [
+        f"swelling.pool_models[{k}] = {name!r} carries the charge laws {', '.join(POOL_MODELS[name].laws)}, none of "
+        f"gag.charge_laws = {laws}"
+        for k, name in enumerate(pool_models)
+        if name in POOL_MODELS and not set(POOL_MODELS[name].laws) & set(laws)
+    ]
+
+
 def _consistency(config: dict) -> list[str]:
     """Relations between keys that a JSON schema cannot express."""
     problems = []
@@ -349,6 +363,7 @@ def _consistency(config: dict) -> list[str]:
                 f"swelling.pressures_mmHg[{k}] = {p} has no saved state: it must be one of "
                 f"bilayer_calibration.state_pressures_mmHg = {saved}"
             )
+    problems += _pool_models(sw.get("pool_models", []), config.get("gag", {}).get("charge_laws", []))
     for k, name in enumerate(config.get("swelling_convergence", {}).get("cases", [])):
         if name not in sw.get("cases", {}):
             problems.append(

@@ -7,6 +7,7 @@ import hashlib
 from sphgag.physics.materials import law_gag
 from sphgag.studies.delamination import Settings as DelaminationSettings
 from sphgag.studies.onset import CRITERIA
+from sphgag.studies.protocols import POOL_MODELS
 
 # the Donnan laws run side by side (wildcard {law}); a run's params hold its own law only (gag.charge_law), so that
 # adding or removing a law adds or removes its jobs and reruns no other simulation
@@ -59,15 +60,32 @@ SW = config["swelling"]
 CASES = list(SW["cases"])
 SWELL_PRESSURES = [f"{p:g}" for p in SW["pressures_mmHg"]]
 # what the simulations depend on; probe_length_um only sets where rule pool_stresses measures
-SWELL_SETTINGS = {k: v for k, v in SW.items() if k not in ("cases", "models", "pressures_mmHg", "probe_length_um")}
-# one run per (charge law, model, pool, pressure), each with its own law only
-SWELL_RUNS = expand(
-    "results/swelling/runs/{law}/{model}_{case}_{pressure}mmHg.csv",
-    law=LAWS,
-    model=SW["models"],
-    case=CASES,
-    pressure=SWELL_PRESSURES,
+SWELL_SETTINGS = {
+    k: v for k, v in SW.items() if k not in ("cases", "models", "pool_models", "pressures_mmHg", "probe_length_um")
+}
+# the pool models run side by side (wildcard {pool}), each under the charge laws it carries
+# (sphgag.studies.protocols.POOL_MODELS); a run's settings hold its own pool model only
+LAWS_OF_POOL = {pool: [law for law in LAWS if law in POOL_MODELS[pool].laws] for pool in SW["pool_models"]}
+SWELL_LAWS_POOLS = dict(
+    zip(("law", "pool"), zip(*((law, pool) for pool, laws in LAWS_OF_POOL.items() for law in laws)))
 )
+
+
+def swell_settings(wildcards):
+    """The swelling settings of one run: the configuration's, with the run's pool model."""
+    return dict(SWELL_SETTINGS, pool_model=wildcards.pool)
+
+
+def swell_runs(pattern, **wildcards):
+    """``pattern`` expanded for every (charge law, pool model) pair that runs, and every other wildcard of the
+    swelling runs (``model``, ``case``, ``pressure``) unless given."""
+    others = dict(dict(model=SW["models"], case=CASES, pressure=SWELL_PRESSURES), **wildcards)
+    pairs = zip(SWELL_LAWS_POOLS["law"], SWELL_LAWS_POOLS["pool"])
+    return [path for law, pool in pairs for path in expand(pattern, law=law, pool=pool, **others)]
+
+
+# one run per (charge law, pool model, model, pool, pressure), each with its own law and pool model only
+SWELL_RUNS = swell_runs("results/swelling/runs/{law}/{pool}/{model}_{case}_{pressure}mmHg.csv")
 
 
 # Delamination (figures 5-7)
@@ -129,6 +147,7 @@ def law_and_run(names):
 
 wildcard_constraints:
     law="|".join(LAWS),
+    pool="|".join(SW["pool_models"]),
     criterion="|".join(CRITERIA),
     run=r"[^/]+",
 

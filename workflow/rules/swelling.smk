@@ -7,17 +7,18 @@ wildcard_constraints:
 
 
 rule swell:
-    """One GAG pool ({case}) in the {model} wall at {pressure} mmHg, {law} charge: conversion, then swelling (states)."""
+    """One GAG pool ({case}, as {pool}) in the {model} wall at {pressure} mmHg, {law} charge: conversion, then swelling
+    (states)."""
     input:
         code=SPHGAG,
         state=STATE,
     output:
-        states="results/swelling/states/{law}/{model}_{case}_{pressure}mmHg.npz",
-        provenance="results/provenance/swell_{law}_{model}_{case}_{pressure}mmHg.json",
+        states="results/swelling/states/{law}/{pool}/{model}_{case}_{pressure}mmHg.npz",
+        provenance="results/provenance/swell_{law}_{pool}_{model}_{case}_{pressure}mmHg.json",
     log:
-        "logs/swell/{law}/{model}_{case}_{pressure}mmHg.log",
+        "logs/swell/{law}/{pool}/{model}_{case}_{pressure}mmHg.log",
     benchmark:
-        "results/benchmarks/swell_{law}_{model}_{case}_{pressure}mmHg.tsv"
+        "results/benchmarks/swell_{law}_{pool}_{model}_{case}_{pressure}mmHg.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -27,24 +28,25 @@ rule swell:
     params:
         state_slice=lambda wildcards: dict(PRESSURISED_SLICE, model=wildcards.model),
         pool=lambda wildcards: SW["cases"][wildcards.case],
-        settings=SWELL_SETTINGS,
+        settings=swell_settings,
         gag=lambda wildcards: GAG[wildcards.law],
     script:
         "../scripts/swell.py"
 
 
 rule pool_stresses:
-    """The stresses around the pool ({case}, {model} wall, {pressure} mmHg, {law} charge) in every state of its run."""
+    """The stresses around the pool ({case} as {pool}, {model} wall, {pressure} mmHg, {law} charge) in every state of
+    its run."""
     input:
         code=SPHGAG,
         states=rules.swell.output.states,
     output:
-        table="results/swelling/runs/{law}/{model}_{case}_{pressure}mmHg.csv",
-        provenance="results/provenance/pool_stresses_{law}_{model}_{case}_{pressure}mmHg.json",
+        table="results/swelling/runs/{law}/{pool}/{model}_{case}_{pressure}mmHg.csv",
+        provenance="results/provenance/pool_stresses_{law}_{pool}_{model}_{case}_{pressure}mmHg.json",
     log:
-        "logs/pool_stresses/{law}/{model}_{case}_{pressure}mmHg.log",
+        "logs/pool_stresses/{law}/{pool}/{model}_{case}_{pressure}mmHg.log",
     benchmark:
-        "results/benchmarks/pool_stresses_{law}_{model}_{case}_{pressure}mmHg.tsv"
+        "results/benchmarks/pool_stresses_{law}_{pool}_{model}_{case}_{pressure}mmHg.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -54,7 +56,7 @@ rule pool_stresses:
     params:
         state_slice=lambda wildcards: dict(PRESSURISED_SLICE, model=wildcards.model),
         pool=lambda wildcards: SW["cases"][wildcards.case],
-        settings=SWELL_SETTINGS,
+        settings=swell_settings,
         gag=lambda wildcards: GAG[wildcards.law],
         probe_length=SW["probe_length_um"],
     script:
@@ -62,7 +64,7 @@ rule pool_stresses:
 
 
 rule tip_stress:
-    """All swelling runs (every charge law) in one tidy table (figure 4)."""
+    """All swelling runs (every charge law and pool model) in one tidy table (figure 4)."""
     input:
         SWELL_RUNS,
     output:
@@ -90,7 +92,7 @@ SC_SIMULATION = dict(
     bilayer=config["bilayer"],
     numerics=config["numerics"],
     homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
-    settings=SWELL_SETTINGS,
+    settings=swell_settings,
     cases={c: SW["cases"][c] for c in SC["cases"]},
     pressure=SC["pressure_mmHg"],
 )
@@ -101,16 +103,17 @@ wildcard_constraints:
 
 
 rule swelling_convergence_dx:
-    """Resolution study, one particle spacing (dx = {dx} um), {law} charge: passive wall, every study pool swollen."""
+    """Resolution study, one particle spacing (dx = {dx} um), {law} charge, pools as {pool}: passive wall, every study
+    pool swollen."""
     input:
         code=SPHGAG,
     output:
-        states="results/swelling/convergence/states/{law}/dx{dx}.npz",
-        provenance="results/provenance/swelling_convergence_{law}_dx{dx}.json",
+        states="results/swelling/convergence/states/{law}/{pool}/dx{dx}.npz",
+        provenance="results/provenance/swelling_convergence_{law}_{pool}_dx{dx}.json",
     log:
-        "logs/swelling_convergence/{law}/dx{dx}.log",
+        "logs/swelling_convergence/{law}/{pool}/dx{dx}.log",
     benchmark:
-        "results/benchmarks/swelling_convergence_{law}_dx{dx}.tsv"
+        "results/benchmarks/swelling_convergence_{law}_{pool}_dx{dx}.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -125,17 +128,18 @@ rule swelling_convergence_dx:
 
 
 rule swelling_convergence_stresses:
-    """Resolution study, one particle spacing (dx = {dx} um), {law} charge: the pool stresses of the saved states."""
+    """Resolution study, one particle spacing (dx = {dx} um), {law} charge, pools as {pool}: the pool stresses of the
+    saved states."""
     input:
         code=SPHGAG,
         states=rules.swelling_convergence_dx.output.states,
     output:
-        table="results/swelling/convergence/{law}/dx{dx}.csv",
-        provenance="results/provenance/swelling_convergence_stresses_{law}_dx{dx}.json",
+        table="results/swelling/convergence/{law}/{pool}/dx{dx}.csv",
+        provenance="results/provenance/swelling_convergence_stresses_{law}_{pool}_dx{dx}.json",
     log:
-        "logs/swelling_convergence/{law}/stresses_dx{dx}.log",
+        "logs/swelling_convergence/{law}/{pool}/stresses_dx{dx}.log",
     benchmark:
-        "results/benchmarks/swelling_convergence_stresses_{law}_dx{dx}.tsv"
+        "results/benchmarks/swelling_convergence_stresses_{law}_{pool}_dx{dx}.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -151,9 +155,9 @@ rule swelling_convergence_stresses:
 
 
 rule swelling_convergence:
-    """The resolution study of the pool stresses (every charge law) in one tidy table."""
+    """The resolution study of the pool stresses (every charge law and pool model) in one tidy table."""
     input:
-        expand(rules.swelling_convergence_stresses.output.table, law=LAWS, dx=CONVERGENCE_DX),
+        swell_runs(rules.swelling_convergence_stresses.output.table, model=[], case=[], pressure=[], dx=CONVERGENCE_DX),
     output:
         report(
             "results/swelling/convergence.csv",

@@ -1,6 +1,7 @@
 # What researchers look at beside the figures: every swelling run and every delamination run as a ParaView series
-# (results/paraview/{swelling,delamination}/{law}/{run}/{run}.pvd, one .vtu per saved state), and an animation of
-# every delamination run drawn from its series (figures/animations/{law}/{run}.gif).
+# (results/paraview/swelling/{law}/{pool}/{run}/{run}.pvd, results/paraview/delamination/{law}/{run}/{run}.pvd, one
+# .vtu per saved state), and an animation of every delamination run drawn from its series
+# (figures/animations/{law}/{run}.gif).
 
 
 rule paraview_delamination:
@@ -25,18 +26,18 @@ rule paraview_delamination:
 
 
 rule paraview_swelling:
-    """Swelling run {law}/{model}_{case}_{pressure}mmHg: its states as a ParaView series (a .vtu file per state, a .pvd
+    """Swelling run {law}/{pool}/{model}_{case}_{pressure}mmHg: its states as a ParaView series (a .vtu file per state, a .pvd
     collection)."""
     input:
         code=SPHGAG + [PARAVIEW],
         states=rules.swell.output.states,
     output:
-        series=directory("results/paraview/swelling/{law}/{model}_{case}_{pressure}mmHg"),
-        provenance="results/provenance/paraview_swelling_{law}_{model}_{case}_{pressure}mmHg.json",
+        series=directory("results/paraview/swelling/{law}/{pool}/{model}_{case}_{pressure}mmHg"),
+        provenance="results/provenance/paraview_swelling_{law}_{pool}_{model}_{case}_{pressure}mmHg.json",
     log:
-        "logs/paraview/swelling/{law}/{model}_{case}_{pressure}mmHg.log",
+        "logs/paraview/swelling/{law}/{pool}/{model}_{case}_{pressure}mmHg.log",
     benchmark:
-        "results/benchmarks/paraview_swelling_{law}_{model}_{case}_{pressure}mmHg.tsv"
+        "results/benchmarks/paraview_swelling_{law}_{pool}_{model}_{case}_{pressure}mmHg.tsv"
     conda:
         "../envs/sphgag.yaml"
     resources:
@@ -70,7 +71,7 @@ rule animation:
 
 
 VIEWS = (
-    expand(rules.paraview_swelling.output.series, law=LAWS, model=SW["models"], case=CASES, pressure=SWELL_PRESSURES)
+    swell_runs(rules.paraview_swelling.output.series)
     + expand(rules.paraview_delamination.output.series, zip, **law_and_run(DE_SNAPSHOT_NAMES))
     + expand(rules.animation.output, zip, **law_and_run(DE_SNAPSHOT_NAMES))
 )

@@ -12,7 +12,9 @@ sm = snakemake  # noqa: F821
 threads.use(sm.threads)
 started = time.time()
 out = Path(sm.output.series)
-run = f"{sm.rule}_{sm.wildcards.law}_{out.name}"
+run = "_".join(
+    [sm.rule, sm.wildcards.law] + ([sm.wildcards.pool] if "pool" in sm.wildcards.keys() else []) + [out.name]
+)
 with runlog.run(run, sm.log[0]) as log:
     frames = paraview.saved_series(sm.input.states)
     pvd = paraview.write_series(out / f"{out.name}.pvd", frames)

@@ -10,7 +10,7 @@ sm = snakemake  # noqa: F821
 threads.use(sm.threads)
 started = time.time()
 w = sm.wildcards
-run = f"pool_stresses_{w.law}_{w.model}_{w.case}_{w.pressure}mmHg"
+run = f"pool_stresses_{w.law}_{w.pool}_{w.model}_{w.case}_{w.pressure}mmHg"
 with runlog.run(run, sm.log[0]) as log:
     cfg, p = sm.params.state_slice, sm.params
     pool = artery.pool_sector(p.pool)
@@ -18,8 +18,9 @@ with runlog.run(run, sm.log[0]) as log:
     saved = state.load_series(sm.input.states, dict(state=cfg, pool=p.pool, settings=p.settings, gag=p.gag))
     table = protocols.pool_table(model, [protocols.PoolState.from_saved(s) for s in saved], pool, p.probe_length, p.gag)
     table.insert(0, "charge_law", p.gag["charge_law"])
-    table.insert(1, "model", w.model)
-    table.insert(2, "case", w.case)
+    table.insert(1, "pool_model", table.pop("pool_model"))
+    table.insert(2, "model", w.model)
+    table.insert(3, "case", w.case)
     table.to_csv(sm.output.table, index=False)
     last = table.iloc[-1]
     first = table[table.stage == "converted"].iloc[0]

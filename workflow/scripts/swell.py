@@ -12,7 +12,7 @@ sm = snakemake  # noqa: F821
 threads.use(sm.threads)
 started = time.time()
 w = sm.wildcards
-run = f"swell_{w.law}_{w.model}_{w.case}_{w.pressure}mmHg"
+run = f"swell_{w.law}_{w.pool}_{w.model}_{w.case}_{w.pressure}mmHg"
 with runlog.run(run, sm.log[0]) as log:
     cfg = sm.params.state_slice
     pool = artery.pool_sector(sm.params.pool)

@@ -9,7 +9,7 @@ from sphgag.studies import convergence
 sm = snakemake  # noqa: F821
 threads.use(sm.threads)
 started = time.time()
-run = f"swelling_convergence_{sm.wildcards.law}_dx{sm.wildcards.dx}"
+run = f"swelling_convergence_{sm.wildcards.law}_{sm.wildcards.pool}_dx{sm.wildcards.dx}"
 with runlog.run(run, sm.log[0]) as log:
     p = sm.params
     # each case's converged states up to the end of its path (each records how the path ended)

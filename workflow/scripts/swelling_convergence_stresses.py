@@ -10,7 +10,7 @@ from sphgag.studies import convergence, protocols
 sm = snakemake  # noqa: F821
 threads.use(sm.threads)
 started = time.time()
-run = f"swelling_convergence_stresses_{sm.wildcards.law}_dx{sm.wildcards.dx}"
+run = f"swelling_convergence_stresses_{sm.wildcards.law}_{sm.wildcards.pool}_dx{sm.wildcards.dx}"
 with runlog.run(run, sm.log[0]) as log:
     p = sm.params
     simulation = {k: v for k, v in dict(p).items() if k != "probe_length"}
@@ -19,6 +19,7 @@ with runlog.run(run, sm.log[0]) as log:
     dx = float(sm.wildcards.dx)
     table = convergence.measure(dx, p.bilayer, p.numerics, p.gag, p.cases, states, p.probe_length, name=run)
     table.insert(0, "charge_law", p.gag["charge_law"])
+    table.insert(1, "pool_model", table.pop("pool_model"))
     table.to_csv(sm.output.table, index=False)
     for case, g in table.groupby("case", sort=False):
         last = g.iloc[-1]

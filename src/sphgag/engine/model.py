@@ -298,6 +298,16 @@ class Model:
         add_pressure_stiffness(data, self.pressure_blocks, load.pressure_kPa or 0.0, load.axial_stretch)
         return data
 
+    def rank_one_terms(self, ev: Evaluation) -> list[tuple[float, np.ndarray]]:
+        """The Jacobian's dense rank-one parts, ``(c, g)`` with ``d(f_int + f_ext)/dx += c g g^T`` (``g`` flat over
+        the dofs): each cavity's contents (:meth:`sphgag.engine.pool_cavity.Cavity.rank_one`). The solver applies them
+        by Sherman-Morrison (:func:`sphgag.engine.solver._factorise`)."""
+        self.material(ev.load)
+        return [
+            c.rank_one(ev.x, pc, ev.load.axial_stretch, contents)
+            for c, (pc, contents) in zip(self.cavities, self._cache["cavity_pressures"])
+        ]
+
     def block_index(self, p: int, q: int) -> int:
         lo, hi = self.block_indptr[p], self.block_indptr[p + 1]
         k = lo + np.searchsorted(self.block_indices[lo:hi], q)

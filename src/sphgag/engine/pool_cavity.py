@@ -22,8 +22,9 @@ the Donnan pressure as a follower load:
   pool: ``w(J) = mu_g/2 (2 J + lz^2 - 3) - mu_g ln(J lz) + lam_g/2 ln(J lz)^2`` per reference area, ``J`` the pool's
   volume ratio (:func:`pool_pressure`; the contents' state is uniform, as the pool's particles cannot resolve it: the
   GAG law with the Donnan pressure loses ellipticity at ``J`` of about 2.8, ``mu_g (J + 1) + lam_g < lam_g ln J``, so
-  a non-uniform state of the contents is not unique). Its stiffness, ``w''`` times the outer product of ``dA/dx``
-  with itself (a rank-one coupling of the whole lining, at most ``lam_g / V_pool``), is left out of the Jacobian;
+  a non-uniform state of the contents is not unique). Its stiffness, ``w''/V_pool`` times the outer product of
+  ``dA/dx`` with itself, couples the whole lining: it stays out of the sparse Jacobian and enters the solves as a
+  rank-one update (:meth:`Cavity.rank_one`, Sherman-Morrison in :func:`sphgag.engine.solver._factorise`);
 * the pool's volume ratio is ``1 + (A - A_0) / V_pool`` (``V_pool``: the pool's reference area, the sum of its
   particles' volumes; ``A_0``: the polygon's reference area), the exact area the lining encloses in place of
   ``sum V_i J_i``;
@@ -100,6 +101,15 @@ class Cavity:
         p = pool_pressure(self.volume_ratio(x), pressure_kPa, lz, *contents)
         f[self.loop] += p * self.area_gradient(x)
 
+    def rank_one(self, x: np.ndarray, pressure_kPa: float, lz: float, contents=(0.0, 0.0), n: int | None = None):
+        """The part of the Jacobian the blocks leave out: ``(c, g)`` with ``d(f)/dx += c g g^T``, ``g = dA/dx`` on
+        the lining (a flat vector over the ``n`` particles) and ``c = p'(J) / V_pool``, ``p'(J) = -w''(J)`` the
+        contents' stiffness (:func:`pool_pressure`): it couples every lining particle to every other."""
+        J = self.volume_ratio(x)
+        g = np.zeros((x.shape[0] if n is None else n, 2))
+        g[self.loop] = self.area_gradient(x)
+        return -contents_stiffness(J, lz, *contents) / self.pool_area, g.ravel()
+
     def stiffness_blocks(self, block_index) -> tuple:
         """The Jacobian blocks ``(p, next)`` and ``(p, previous)`` of each lining particle (``block_index(p, q)``;
         mirrored: those of :func:`sphgag.engine.loading.pressure_stiffness_blocks`)."""
@@ -125,9 +135,21 @@ class Cavity:
         np.add.at(data, (prv, 1, 0), c)
 
 
+def hollow(model, members: np.ndarray, x: np.ndarray):
+    """``model`` with the pool ``members`` as a cavity (:class:`Cavity`), its particles held at their positions in
+    ``x``; the model's factorisation cache starts empty (its Jacobian pattern of loads changes)."""
+    return replace(model, cavities=(Cavity.around(model.layout, members, x),), _cache={}, factorisation=None)
+
+
 def pool_pressure(J: float, pressure_kPa: float, lz: float, mu: float, lam: float) -> float:
     """``Pi lz - w'(J)``: the net pressure on the lining per unit reference length (module docstring)."""
     return pressure_kPa * lz - (mu * (1.0 - 1.0 / J) + lam * np.log(J * lz) / J)
+
+
+def contents_stiffness(J: float, lz: float, mu: float, lam: float) -> float:
+    """``w''(J) = (mu + lam (1 - ln(J lz))) / J^2``: the contents' stiffness per reference area (negative beyond
+    ``J = e / lz`` with ``mu = 0``: the loss of ellipticity of the module docstring)."""
+    return (mu + lam * (1.0 - np.log(J * lz))) / (J * J)
 
 
 def polygon_area(q: np.ndarray) -> float:

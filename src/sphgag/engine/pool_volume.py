@@ -76,6 +76,12 @@ class Path:
 class PoolVolume:
     """The pool's volume ``V = sum V_i J_i`` over ``members`` and its exact gradient ``dV/dx``."""
 
+    @staticmethod
+    def of(model: Model, members: np.ndarray):
+        """The volume of the pool ``members`` of ``model``: :class:`CavityVolume` where the pool is the model's cavity,
+        else :class:`PoolVolume`."""
+        return CavityVolume(model) if model.cavities else PoolVolume(model, members)
+
     def __init__(self, model: Model, members: np.ndarray):
         self.members = np.asarray(members, dtype=np.int64)
         self.V = model.layout.volume[self.members]
@@ -90,6 +96,25 @@ class PoolVolume:
 
     def gradient(self, x: np.ndarray, load: Load) -> np.ndarray:
         return self._unit.evaluate(x, Load(load.axial_stretch, 0.0)).f_int
+
+
+class CavityVolume:
+    """The volume of a pool modelled as a cavity (:mod:`sphgag.engine.pool_cavity`): ``V_pool + A - A_0`` (the area its
+    lining encloses; per unit axial reference length as :class:`PoolVolume` is, up to the constant ``lz``), and its
+    exact gradient, the area's ``dA/dx`` on the lining."""
+
+    def __init__(self, model: Model):
+        (self.cavity,) = model.cavities
+        self.V = model.layout.volume[self.cavity.members]
+        self.n = model.n
+
+    def __call__(self, ev) -> float:
+        return self.cavity.pool_area * self.cavity.volume_ratio(ev.x)
+
+    def gradient(self, x: np.ndarray, load: Load) -> np.ndarray:
+        g = np.zeros((self.n, 2))
+        g[self.cavity.loop] = self.cavity.area_gradient(x)
+        return g
 
 
 def _at(load: Load, c: float) -> Load:
@@ -175,7 +200,7 @@ def continue_path(
     times the pool's reference volume, or where volume control fails.
     """
     run = run or model.name
-    pool = PoolVolume(model, members)
+    pool = PoolVolume.of(model, members)
     reference = float(np.sum(pool.V))
     states, reached = [], []
     x, load = last.x, last.load

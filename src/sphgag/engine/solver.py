@@ -296,7 +296,26 @@ def _factorise(model: Model, ev: Evaluation, data: np.ndarray, damping: float, r
         solve = _lu(model, data)
     except RuntimeError as exc:  # exactly singular factor
         raise NotConverged(run, ev.load, f"singular Jacobian ({exc})", ev) from exc
+    for c, g in model.rank_one_terms(ev):
+        solve = _rank_one_update(solve, c, g, cons)
     return Factorisation(solve, scale, cons.copy(), damping)
+
+
+def _rank_one_update(solve: Callable, c: float, g: np.ndarray, constrained: np.ndarray) -> Callable:
+    """The solver of ``K + c g g^T`` from that of ``K`` (Sherman-Morrison; ``g`` vanishes on constrained rows, which
+    hold their targets)."""
+    if c == 0.0:
+        return solve
+    g = g.copy()
+    g.reshape(-1, 2)[constrained] = 0.0
+    z = solve(g)
+    denom = 1.0 + c * float(g @ z)
+
+    def updated(rhs):
+        y = solve(rhs)
+        return y - z * (c * float(g @ y) / denom)
+
+    return updated
 
 
 def _line_search(model: Model, ev: Evaluation, dx: np.ndarray, scale: float, max_halvings: int = 30):

@@ -23,6 +23,9 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 import pandas as pd
 
+#: the paper's pool model (sphgag.studies.protocols.POOL_MODELS): the pool's GAG particles carry eq. (2.27)
+PAPER_POOL = "particles"
+
 
 @dataclass
 class Claim:
@@ -33,6 +36,7 @@ class Claim:
     holds: str  # yes | no | n/a | not run (its evidence is made by a target that has not run)
     criterion: str
     charge_law: str = "-"  # a pool claim's Donnan law (sphgag.physics.materials.CHARGE_LAWS); "-": no pool
+    pool_model: str = "-"  # a pool claim's pool model (sphgag.studies.protocols.POOL_MODELS); "-": no pool
 
 
 @dataclass(frozen=True)
@@ -62,10 +66,11 @@ class Evidence:
     figures: dict = field(default_factory=dict)
     sensitivity: pd.DataFrame | None = None
 
-    def of_law(self, law: str) -> Evidence:
-        """The evidence of one charge law: its rows of the pool tables (column ``charge_law``)."""
+    def of_law(self, law: str, pool_model: str = PAPER_POOL) -> Evidence:
+        """The evidence of one charge law and pool model: its rows of the pool tables (columns ``charge_law`` and,
+        where a table has it, ``pool_model``)."""
         pools = {
-            k: of_law(getattr(self, k), law)
+            k: of_law(getattr(self, k), law, pool_model)
             for k in ("tips", "growth", "delamination", "sensitivity")
             if getattr(self, k) is not None
         }
@@ -628,8 +633,21 @@ def _found(claims, e: Evidence) -> list[Claim]:
 
 
 def evaluate(e: Evidence, laws) -> list[Claim]:
-    """The claims table's rows: every calibration claim, then every pool claim once per charge law in ``laws``."""
-    return _found(CALIBRATION, e) + by_law(laws, lambda law: _found(POOL, e.of_law(law)))
+    """The claims table's rows: every calibration claim, then the pool claims of every (charge law, pool model) pair
+    of :func:`variants`: all of them with the paper's pool model, the figure 4 claims (C6-C12) with the others."""
+    return _found(CALIBRATION, e) + by_law(
+        variants(e.tips, laws), lambda law, pool: _found(POOL if pool == PAPER_POOL else SWELLING, e.of_law(law, pool))
+    )
+
+
+def variants(tips: pd.DataFrame | None, laws) -> list[tuple[str, str]]:
+    """The (charge law, pool model) pairs the pool claims are evaluated for: every law in ``laws`` with the paper's
+    pool model, then every law another pool model of the swelling runs (column ``pool_model`` of ``tips``) ran
+    under."""
+    others = [] if tips is None or "pool_model" not in tips else list(dict.fromkeys(tips.pool_model))
+    return [(law, PAPER_POOL) for law in laws] + [
+        (law, pool) for pool in others if pool != PAPER_POOL for law in laws if len(of_law(tips, law, pool))
+    ]
 
 
 def swelling_claims(tips: pd.DataFrame, cases: dict, max_concentration: float | None = None) -> list[Claim]:
@@ -646,20 +664,26 @@ def delamination_claims(growth: pd.DataFrame, summary: pd.DataFrame, criteria: l
     return _found(DELAMINATION, e)
 
 
-def of_law(table: pd.DataFrame, law: str) -> pd.DataFrame:
-    """The rows of one charge law (column ``charge_law``)."""
-    return table[table.charge_law == law]
+def of_law(table: pd.DataFrame, law: str, pool_model: str = PAPER_POOL) -> pd.DataFrame:
+    """The rows of one charge law (column ``charge_law``) and pool model (column ``pool_model``, where the table has
+    one: the delamination tables have the paper's only)."""
+    rows = table.charge_law == law
+    if "pool_model" in table:
+        rows &= table.pool_model == pool_model
+    return table[rows]
 
 
-def by_law(laws, evaluate) -> list[Claim]:
-    """The claims ``evaluate(law)`` of every charge law in ``laws``, marked with their law: one row per claim and law,
-    the laws of a claim next to each other (in the order of ``laws``)."""
-    found = [Claim(**dict(c.__dict__, charge_law=law)) for law in laws for c in evaluate(law)]
+def by_law(pairs, evaluate) -> list[Claim]:
+    """The claims ``evaluate(law, pool_model)`` of every (charge law, pool model) pair in ``pairs``, marked with them:
+    one row per claim and pair, the pairs of a claim next to each other (in the order of ``pairs``)."""
+    found = [
+        Claim(**dict(c.__dict__, charge_law=law, pool_model=pool)) for law, pool in pairs for c in evaluate(law, pool)
+    ]
     order = list(dict.fromkeys(c.claim_id for c in found))
-    return sorted(found, key=lambda c: order.index(c.claim_id))  # stable: the laws of a claim keep their order
+    return sorted(found, key=lambda c: order.index(c.claim_id))  # stable: the pairs of a claim keep their order
 
 
-COLUMNS = ["claim_id", "charge_law", "statement", "paper_value", "our_value", "holds", "criterion"]
+COLUMNS = ["claim_id", "charge_law", "pool_model", "statement", "paper_value", "our_value", "holds", "criterion"]
 
 
 def table(claims: list[Claim]) -> pd.DataFrame:
@@ -674,14 +698,17 @@ def markdown(df: pd.DataFrame) -> str:
         "in the last column; nothing was tuned to make a claim hold. The pool claims (C6-C17) are evaluated once "
         "per charge law, with the same criteria: `prescribed` (Pi(c), eqs. 2.25-2.27 as printed) is the paper's "
         "model, the one to compare with the paper; `conserved` (Pi at c/J) is our documented deviation. A claim "
-        "whose evidence another target makes says `not run` until that target has run, and names the command.",
+        "whose evidence another target makes says `not run` until that target has run, and names the command. "
+        "The figure 4 claims (C6-C12) are evaluated again for every other pool model of the swelling runs: "
+        "`particles` (the pool's GAG particles carry eq. 2.27) is the paper's, `cavity` (the pool as a pressurised "
+        "cavity) our deviation.",
         "",
-        "| id | charge law | claim | paper | ours | holds | criterion |",
-        "|---|---|---|---|---|---|---|",
+        "| id | charge law | pool model | claim | paper | ours | holds | criterion |",
+        "|---|---|---|---|---|---|---|---|",
     ]
     for r in df.itertuples():
         lines.append(
-            f"| {r.claim_id} | {r.charge_law} | {r.statement} | {r.paper_value} | {r.our_value} | **{r.holds}** | "
-            f"{r.criterion} |"
+            f"| {r.claim_id} | {r.charge_law} | {r.pool_model} | {r.statement} | {r.paper_value} | {r.our_value} | "
+            f"**{r.holds}** | {r.criterion} |"
         )
     return "\n".join(lines) + "\n"

@@ -19,12 +19,12 @@ from dataclasses import dataclass, replace
 import numpy as np
 import pandas as pd
 
-from ..engine import measure, pool_volume, solver
+from ..engine import measure, pool_cavity, pool_volume, solver
 from ..engine.loading import MMHG_TO_KPA, Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
 from ..physics import analytic
-from ..physics.materials import Gag, swelling_pressure
+from ..physics.materials import CHARGE_LAWS, Gag, swelling_pressure
 
 log = logging.getLogger("sphgag")
 
@@ -358,7 +358,9 @@ def pool_measurements(model: Model, ev, pool, members: np.ndarray, probe_length:
     the tip mean, ``tip_peak_radial_stress_kPa`` is the largest particle value
     in the tip regions (a kernel average next to the pool's corners, which does
     not converge with refinement). ``pool_volume_change`` is the pool's
-    ``sum V J / sum V - 1``.
+    ``sum V J / sum V - 1``; for a pool modelled as a cavity (``model.cavities``), the area its lining encloses over
+    its reference area, less 1 (:meth:`sphgag.engine.pool_cavity.Cavity.volume_ratio`; the pool's mean and largest J
+    are then that ratio too: its contents swell uniformly).
     """
     lay = model.layout
     probes = measure.pool_probes(pool, probe_length)
@@ -367,6 +369,9 @@ def pool_measurements(model: Model, ev, pool, members: np.ndarray, probe_length:
     tip_particles = np.concatenate([probes[k].members(lay, layer="media") for k in ("tip_low", "tip_high")])
     J = J_all[members] if members.size else np.array([np.nan])
     V = lay.volume[members] if members.size else np.array([1.0])
+    if model.cavities:  # the contents swell uniformly: the lining's area gives the pool's volume (engine.pool_cavity)
+        J = np.array([model.cavities[0].volume_ratio(ev.x)])
+        V = np.array([1.0])
     return dict(
         tip_radial_stress_kPa=0.5 * (tips[0] + tips[1]),
         tip_low_radial_stress_kPa=tips[0],
@@ -385,9 +390,11 @@ def pool_measurements(model: Model, ev, pool, members: np.ndarray, probe_length:
 class PoolState:
     """One converged state of the figure 4 protocol: its stage (``intact`` or ``converted``), the GAG
     concentration [mEq/l], the positions and load, how the solver reached it (``control``: ``concentration``, or
-    ``volume`` where the concentration-controlled path had lost equilibrium, :mod:`sphgag.engine.pool_volume`), and how
-    the run's path ended (the same for every state of a run: ``path_end`` ``complete``, ``limit point`` at
-    ``limit_concentration``, or ``no equilibrium``, with ``end_reason``)."""
+    ``volume`` where the concentration-controlled path had lost equilibrium, :mod:`sphgag.engine.pool_volume`), the
+    run's pool model (``pool_model``: ``particles``, the paper's GAG particles, or ``cavity``; :data:`POOL_MODELS`)
+    and whether the pool was a cavity in this state (``cavity``), and how the run's path ended (the same for every
+    state of a run: ``path_end`` ``complete``, ``limit point`` at ``limit_concentration``, or ``no equilibrium``,
+    with ``end_reason``)."""
 
     stage: str
     concentration: float
@@ -397,15 +404,36 @@ class PoolState:
     newton_iterations: int
     force_evaluations: int
     control: str = "concentration"
+    pool_model: str = "particles"
+    cavity: bool = False
     path_end: str = "complete"
     limit_concentration: float = np.nan
     end_reason: str = ""
 
     @classmethod
-    def of(cls, stage: str, concentration: float, state: solver.State, control="concentration") -> PoolState:
+    def of(
+        cls,
+        stage: str,
+        concentration: float,
+        state: solver.State,
+        control="concentration",
+        model: Model | None = None,
+        pool_model="particles",
+    ) -> PoolState:
+        """The state ``state`` of a run with pool model ``pool_model``, in equilibrium with ``model`` (whose
+        cavities say whether the pool was a cavity in it)."""
         c = state.convergence
         return cls(
-            stage, float(concentration), state.x, state.load, c.residual, c.iterations, c.force_evaluations, control
+            stage,
+            float(concentration),
+            state.x,
+            state.load,
+            c.residual,
+            c.iterations,
+            c.force_evaluations,
+            control,
+            pool_model,
+            bool(model is not None and model.cavities),
         )
 
     def info(self) -> dict:
@@ -417,6 +445,8 @@ class PoolState:
             newton_iterations=self.newton_iterations,
             force_evaluations=self.force_evaluations,
             control=self.control,
+            pool_model=self.pool_model,
+            cavity=self.cavity,
             path_end=self.path_end,
             limit_concentration_mEq_l=None if np.isnan(self.limit_concentration) else self.limit_concentration,
             end_reason=self.end_reason,
@@ -436,10 +466,29 @@ class PoolState:
             i["newton_iterations"],
             i["force_evaluations"],
             i.get("control", "concentration"),
+            i.get("pool_model", "particles"),
+            bool(i.get("cavity", False)),
             i.get("path_end", "complete"),
             np.nan if limit is None else float(limit),
             i.get("end_reason", ""),
         )
+
+
+@dataclass(frozen=True)
+class PoolModel:
+    """A model of the pool in the figure 4 runs: the charge ``laws`` it carries and the hourglass form
+    (:data:`sphgag.engine.hourglass.FORMS`) its wall is solved with once the pool is converted (None: the
+    configuration's ``numerics.hourglass``)."""
+
+    laws: tuple[str, ...]
+    hourglass: str | None = None
+
+
+#: the pool models of the figure 4 runs (``swelling.pool_models``, wildcard ``{pool}``, column ``pool_model``):
+#: ``particles``, the paper's GAG particles (eq. 2.27), every law; ``cavity``, the pool as a pressurised cavity whose
+#: lining carries the prescribed Pi(c) (:mod:`sphgag.engine.pool_cavity`; our deviation), its wall with the energy
+#: form of eq. (2.14) (the form as printed loses the path next to the swollen cavity: docs/physics.md)
+POOL_MODELS = {"particles": PoolModel(CHARGE_LAWS), "cavity": PoolModel(("prescribed",), "energy")}
 
 
 def concentration_steps(sw: dict) -> np.ndarray:
@@ -455,7 +504,11 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
     2. convert the pool's medial particles to GAG at c = 0 (``conversion_steps``
        converged increments of the material homotopy of
        :func:`materials.convert_to_gag`) and relax;
-    3. raise the fixed-charge concentration from 0 to ``max_concentration_mEq_l``
+    3. with ``pool_model: cavity`` in ``sw`` (default ``particles``, the paper's), the converted pool becomes a
+       pressurised cavity (:mod:`sphgag.engine.pool_cavity`; our deviation) and the wall is relaxed again at c = 0
+       (where it finds no equilibrium, e.g. a long pool squeezed shut, whose lining's faces no contact keeps apart,
+       the path ends there: ``no equilibrium``, with the reason);
+    4. raise the fixed-charge concentration from 0 to ``max_concentration_mEq_l``
        (``concentration_points`` converged states, c = 0 included).
     The lumen pressure stays constant throughout: it is a follower pressure load
     on the inner surface (pressure control), not a prescribed radius. The states
@@ -484,9 +537,21 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
     conv = solver.follow_path(
         model, intact.x, base, [swelling_load(base, f, 0.0) for f in np.linspace(0, 1, steps + 1)[1:]], **opts
     )[-1]
+    pool_model = sw.get("pool_model", "particles")
+    if pool_model not in POOL_MODELS:
+        raise ValueError(f"unknown pool model {pool_model!r}: one of {', '.join(POOL_MODELS)}")
+    states = [PoolState.of("intact", 0.0, intact, pool_model=pool_model)]
+    if pool_model == "cavity":
+        try:
+            model, conv = _hollowed(model, conv, opts)
+        except solver.NotConverged as exc:
+            reason = f"the unswollen pool has no equilibrium as a cavity ({exc.reason})"
+            log.warning("[%s] the path ends at c = 0 mEq/l: %s", run, reason)
+            ended = PoolState.of("converted", 0.0, conv, pool_model=pool_model)
+            return [replace(s, path_end="no equilibrium", end_reason=reason) for s in states + [ended]]
     cs = concentration_steps(sw)
     log.info("[%s] swelling: c = %s mEq/l", run, ", ".join(f"{c:g}" for c in cs))
-    states = [PoolState.of("intact", 0.0, intact), PoolState.of("converted", 0.0, conv)]
+    states.append(PoolState.of("converted", 0.0, conv, model=model, pool_model=pool_model))
     last = conv
     for k, c in enumerate(cs):
         try:  # a step with a fallback: where it finds no equilibrium on its path, the pool's volume takes over
@@ -496,13 +561,37 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
         except solver.NotConverged as exc:
             log.info("[%s] c = %g mEq/l: %s; the pool's volume becomes the control", run, c, exc.reason)
             path, reached = pool_volume.continue_path(model, last, model.props.converting, list(cs[k:]), **opts)
-            states += [PoolState.of("converted", s.load.material_value("concentration"), s, "volume") for s in reached]
+            states += [
+                PoolState.of("converted", s.load.material_value("concentration"), s, "volume", model, pool_model)
+                for s in reached
+            ]
             end = dict(path_end=path.end, limit_concentration=path.limit_concentration, end_reason=path.reason)
             if path.end != "complete":
                 log.warning("[%s] the path ends at c = %g mEq/l: %s", run, states[-1].concentration, path.reason)
             return [replace(s, **end) for s in states]
-        states.append(PoolState.of("converted", c, last))
+        states.append(PoolState.of("converted", c, last, model=model, pool_model=pool_model))
     return states
+
+
+def _hollowed(model: Model, state: solver.State, opts: dict) -> tuple[Model, solver.State]:
+    """The model with the pool as the cavity (:func:`state_model`) and its equilibrium at the load of ``state``
+    (raises :class:`sphgag.engine.solver.NotConverged` if it has none near ``state``)."""
+    log.info("[%s] the pool becomes a cavity: its contents swell uniformly, its lining carries Pi", model.name)
+    hollow = state_model(model, True, state.x)
+    return hollow, solver.follow_path(hollow, state.x, state.load, [state.load], **opts)[-1]
+
+
+def state_model(model: Model, cavity: bool, x: np.ndarray, hollow: Model | None = None) -> Model:
+    """The model a state of :func:`swell_pool` is in equilibrium with: ``model`` (the run's wall with its pool), or,
+    for a state whose pool is a ``cavity``, ``model`` with its pool as the cavity and the cavity's hourglass form
+    (:data:`POOL_MODELS`; ``hollow`` if given: the pool's particles are held where the pool became a cavity, so any
+    such state of the run rebuilds the same model)."""
+    if not cavity:
+        return model
+    if hollow is not None:
+        return hollow
+    form = POOL_MODELS["cavity"].hourglass or model.hourglass
+    return pool_cavity.hollow(replace(model, hourglass=form, _cache={}), model.props.converting, x)
 
 
 def pool_table(model: Model, states: list[PoolState], pool, probe_length: float, gag: Gag | dict) -> pd.DataFrame:
@@ -510,9 +599,11 @@ def pool_table(model: Model, states: list[PoolState], pool, probe_length: float,
     and the stresses around the pool (:func:`pool_measurements`), with the residual of the state."""
     gag = Gag.of(gag)
     members = model.props.converting  # the seeded pool (history.HistoryMaterial)
-    rows = []
+    rows, hollow = [], None
     for st in states:
-        ev = model.evaluate(st.x, st.load)
+        at = state_model(model, st.cavity, st.x, hollow)
+        hollow = at if at.cavities else hollow
+        ev = at.evaluate(st.x, st.load)
         row = dict(
             stage=st.stage,
             concentration_mEq_l=st.concentration,
@@ -521,7 +612,7 @@ def pool_table(model: Model, states: list[PoolState], pool, probe_length: float,
             ),
             pressure_mmHg=measure.carried_pressure(model, ev) / MMHG_TO_KPA,
         )
-        row.update(pool_measurements(model, ev, pool, members, probe_length))
+        row.update(pool_measurements(at, ev, pool, members, probe_length))
         # how the state was reached and how its path ended (what its state file keeps)
         row.update({k: v for k, v in st.info().items() if k not in row and k != "stage"})
         row.update(limit_concentration_mEq_l=st.limit_concentration)  # NaN, not None, without a limit point

@@ -32,7 +32,7 @@ from ..engine import measure
 from ..engine.history import HistoryMaterial, ParticleHistory
 from ..engine.model import Model
 from ..records import state as state_io
-from ..studies import artery
+from ..studies import artery, protocols
 
 FIELDS = (
     "reference_position",
@@ -105,10 +105,13 @@ def swelling_frames(model: Model, states_path, expected_params: dict | None = No
     """The frames of a swelling run's states (rule swell): ``model`` is the run's wall with its pool
     (:func:`sphgag.studies.artery.bilayer_model` with ``pool`` and ``gag``), intact before conversion."""
     seeding = model.props
-    frames = []
+    frames, hollow = [], None
     for k, saved in enumerate(state_io.load_series(states_path, expected_params)):
-        history = seeding.after if saved.info["stage"] == "converted" else seeding.before
-        frames.append(Frame(float(k), saved.x, fields(model, saved.x, saved.load, history)))
+        stage = saved.info["stage"]
+        history = seeding.after if stage == "converted" else seeding.before
+        at = protocols.state_model(model, bool(saved.info.get("cavity", False)), saved.x, hollow)
+        hollow = at if at.cavities else hollow
+        frames.append(Frame(float(k), saved.x, fields(at, saved.x, saved.load, history)))
     return frames
 
 

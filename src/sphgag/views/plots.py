@@ -70,6 +70,39 @@ def law_title(law: str) -> str:
     return LAW_TITLES.get(law, f"{law} charge law")
 
 
+# the pool models of the swelling runs (sphgag.studies.protocols.POOL_MODELS, column pool_model of the pool tables):
+# ``particles`` is the paper's; the others are named beside their law in the figures
+PAPER_POOL = "particles"
+POOL_TITLES = {
+    "cavity": "the pool as a pressurised cavity (our deviation: its lining carries Pi, its contents swell uniformly)"
+}
+
+
+def variants(table: pd.DataFrame, laws) -> list[tuple[str, str]]:
+    """The (charge law, pool model) pairs of ``table`` in the order of ``laws``, the paper's pool model first (a table
+    without a column ``pool_model`` has the paper's only)."""
+    pools = list(dict.fromkeys(table.pool_model)) if "pool_model" in table else [PAPER_POOL]
+    pools = sorted(pools, key=lambda m: m != PAPER_POOL)
+    have = set(zip(table.charge_law, table.pool_model if "pool_model" in table else [PAPER_POOL] * len(table)))
+    return [(law, m) for law in laws for m in pools if (law, m) in have]
+
+
+def paper_pool(table: pd.DataFrame) -> pd.DataFrame:
+    """The rows of the paper's pool model (all rows of a table without a column ``pool_model``)."""
+    return table[table.pool_model == PAPER_POOL] if "pool_model" in table else table
+
+
+def variant_title(law: str, pool: str) -> str:
+    """The heading of one (charge law, pool model) pair."""
+    if pool == PAPER_POOL:
+        return law_title(law)
+    return f"{LAW_SHORT.get(law, law)}; {POOL_TITLES.get(pool, pool)}"
+
+
+def variant_short(law: str, pool: str) -> str:
+    return LAW_SHORT.get(law, law) + ("" if pool == PAPER_POOL else f", {pool}")
+
+
 def law_blocks(laws, heights, width: float = 11.0):
     """A figure with one titled block (a sub-figure, constrained layout) per charge law, stacked in the order of
     ``laws`` (``heights`` in inches); returns the figure and the blocks."""
@@ -402,27 +435,31 @@ LAST_CONVERGED = "last converged state (run stopped)"
 
 
 def fig4(tips: pd.DataFrame, particles: pd.DataFrame, cases: dict, probe_length: float, laws, max_concentration):
-    """Figure 4: (a) the pools; then for each charge law (``laws``, column ``charge_law``) the passive and active tip
-    radial and top hoop stress vs concentration (seaborn facets of tip_stress.csv: a row per law, model and stress,
-    a column per pool, a colour per pressure). A run's line ends at its last converged state (a cross if that is
-    below ``max_concentration``)."""
+    """Figure 4: (a) the pools; then for each charge law (``laws``, column ``charge_law``) and pool model (column
+    ``pool_model``, the paper's first) the passive and active tip radial and top hoop stress vs concentration
+    (seaborn facets of tip_stress.csv: a row per law, pool model, model and stress, a column per pool, a colour per
+    pressure). A run's line ends at its last converged state (a cross if that is below ``max_concentration``)."""
     _style()
     names = sorted(cases, key=lambda k: cases[k]["angular_extent_deg"])
-    laws = [law for law in laws if law in set(tips.charge_law)]
+    tips = tips if "pool_model" in tips else tips.assign(pool_model=PAPER_POOL)
+    pairs = variants(tips, laws)
     models = [m for m in ("passive", "active") if m in set(tips.model)]
     pressures = palette(sorted(tips.pressure_mmHg.unique()), PRESSURE_COLOURS, "{:g} mmHg".format)
     long = long_measures(
         tips.assign(pressure=tips.pressure_mmHg.map("{:g} mmHg".format)),
         {c: POOL_MEASURES[c] for c in ("tip_radial_stress_kPa", "tip_peak_radial_stress_kPa", "top_circ_stress_kPa")},
-        ["charge_law", "model", "case", "stage", "pressure", "concentration_mEq_l"],
+        ["charge_law", "pool_model", "model", "case", "stage", "pressure", "concentration_mEq_l"],
     )
     long = long[(long.stage == "converted") | (long.statistic == "region mean")]  # no peak of the intact wall
-    blocks = [(law, m) for law in laws for m in models]
-    letters = {block: "bcdefghij"[k] for k, block in enumerate(blocks)}
-    long["panel"] = [
-        f"({letters[law, m]}) {m}, {law}\n{q}" for law, m, q in zip(long.charge_law, long.model, long.quantity)
-    ]
-    panels = [f"({letters[law, m]}) {m}, {law}\n{q}" for law, m in blocks for q in (TIP, TOP)]
+    blocks = [(law, pool, m) for law, pool in pairs for m in models]
+    letters = {block: "bcdefghijklmnopqrstuvwxyz"[k] for k, block in enumerate(blocks)}
+
+    def label(block, q):
+        law, pool, m = block
+        return f"({letters[block]}) {m}, {variant_short(law, pool)}\n{q}"
+
+    long["panel"] = [label(b, q) for *b, q in zip(long.charge_law, long.pool_model, long.model, long.quantity)]
+    panels = [label(b, q) for b in blocks for q in (TIP, TOP)]
     grid = sns.FacetGrid(
         long,
         row="panel",
@@ -442,8 +479,10 @@ def fig4(tips: pd.DataFrame, particles: pd.DataFrame, cases: dict, probe_length:
         ax.set_ylabel(panel)
     for ax in grid.axes[1:].flat:  # one concentration axis: a run that ended early ends short of the others
         ax.set_xlim(-0.04 * max_concentration, 1.04 * max_concentration)
-    for k, law in enumerate(laws):  # a heading above each law's rows
-        grid.axes[1 + 2 * len(models) * k, 0].set_title(law_title(law), loc="left", fontweight="bold", fontsize=9)
+    for k, (law, pool) in enumerate(pairs):  # a heading above each law's (and pool model's) rows
+        grid.axes[1 + 2 * len(models) * k, 0].set_title(
+            variant_title(law, pool), loc="left", fontweight="bold", fontsize=9
+        )
     for ax, name in zip(grid.axes[0], names):
         pool_geometry_panel(
             ax, particles, cases[name], probe_length, f"(a) case {name}: {cases[name]['angular_extent_deg']:g} deg"
@@ -675,17 +714,18 @@ def verification_crack(table: pd.DataFrame, modulus: float, fracture_energy_J_m2
 def swelling_convergence(table: pd.DataFrame, laws=None):
     """Resolution study (seaborn facets of convergence.csv): tip radial stress (mean over the probe, and particle
     peak), top hoop stress and pool volume change against concentration, a colour per particle spacing, a column
-    per pool and charge law (``laws``: their order; default: as in the table)."""
+    per pool, charge law and pool model (``laws``: their order; default: as in the table)."""
     _style()
-    laws = [law for law in (laws or table.charge_law.unique()) if law in set(table.charge_law)]
+    table = table if "pool_model" in table else table.assign(pool_model=PAPER_POOL)
+    pairs = variants(table, laws or list(dict.fromkeys(table.charge_law)))
     spacings = sorted(table.dx_um.unique(), reverse=True)
     shades = dict(zip([f"{dx:g} um" for dx in spacings], plt.cm.viridis(np.linspace(0.1, 0.85, len(spacings)))))
     cases = list(dict.fromkeys(table.case))
-    column = {(law, c): f"case {c}\n{LAW_SHORT.get(law, law)}" for law in laws for c in cases}
+    column = {(law, pool, c): f"case {c}\n{variant_short(law, pool)}" for law, pool in pairs for c in cases}
     long = long_measures(
         table.assign(
             dx=table.dx_um.map("{:g} um".format),
-            facet=[column.get(key) for key in zip(table.charge_law, table.case)],
+            facet=[column.get(key) for key in zip(table.charge_law, table.pool_model, table.case)],
         ),
         POOL_MEASURES,
         ["facet", "dx", "concentration_mEq_l"],
@@ -1305,6 +1345,7 @@ def delamination_map(table: pd.DataFrame, swelling: pd.DataFrame, cases: dict, p
         sharey=True,
         layout="constrained",
     )
+    swelling = paper_pool(swelling)  # the delamination runs' pools are the paper's particles
     ends = swelling[(swelling.model == "passive") & np.isclose(swelling.pressure_mmHg, pressure_mmHg)]
     for i, law in enumerate(laws):
         for j, sigma in enumerate(sigmas):
