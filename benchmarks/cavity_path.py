@@ -32,6 +32,7 @@ from sphgag.studies import artery, convergence, protocols  # noqa: E402
 
 def trace(cfg: dict, dx: float, case: str, start: float, max_ratio: float) -> pd.DataFrame:
     numerics, sw = cfg["numerics"], dict(cfg["swelling"], pool_model="cavity")
+    alpha = numerics["hourglass_alpha"]
     gag = materials.law_gag(cfg["gag"], "prescribed")
     entry = sw["cases"][case]
     steps = protocols.concentration_steps(dict(sw))
@@ -39,6 +40,9 @@ def trace(cfg: dict, dx: float, case: str, start: float, max_ratio: float) -> pd
     t0 = time.time()
     states = convergence.swell_cases(dx, cfg["bilayer"], numerics, cfg["homeostasis"], ramp, gag, {case: entry}, 103.0)
     last = states[case][-1]
+    if last.path_end != "complete":
+        print(f"dx = {dx:g} um: the swelling path ends at c = {last.concentration:g} mEq/l ({last.end_reason})")
+        return pd.DataFrame()
     model = convergence.case_model(dx, cfg["bilayer"], numerics, gag, entry, f"cavity_path_dx{dx:g}")
     hollow = protocols.state_model(model, True, last.x)
     opts = dict(tol=numerics["tolerance"], max_iter=numerics["max_newton_iterations"], run=hollow.name)
@@ -54,7 +58,9 @@ def trace(cfg: dict, dx: float, case: str, start: float, max_ratio: float) -> pd
         )
         row.update(protocols.pool_measurements(hollow, ev, pool, hollow.props.converting, sw["probe_length_um"]))
         rows.append(row)
-    table = pd.DataFrame(rows).assign(path_end=path.end, limit_mEq_l=path.limit_concentration, seconds=time.time() - t0)
+    table = pd.DataFrame(rows).assign(
+        alpha=alpha, path_end=path.end, limit_mEq_l=path.limit_concentration, seconds=time.time() - t0
+    )
     print(
         f"dx = {dx:g} um: {len(rows)} states, J up to {table.pool_volume_change.max() + 1:.3g}, end {path.end} "
         f"({path.reason}), {time.time() - t0:.0f} s",
@@ -70,10 +76,14 @@ def main():
     ap.add_argument("--case", default="I")
     ap.add_argument("--start", type=float, default=75.0, help="concentration [mEq/l] where volume control starts")
     ap.add_argument("--max-ratio", type=float, default=150.0, help="largest pool volume ratio traced")
+    ap.add_argument("--alpha", type=float, default=None, help="alpha of eq. (2.14) (default the configuration's)")
+    ap.add_argument("--tag", default="", help="suffix of the output file")
     args = ap.parse_args()
     threads.use(1)
     cfg = config.validate(config.load_yaml(args.config), ROOT / "config" / "schema.yaml")
-    out = ROOT / "benchmarks" / "out" / f"cavity_path_{args.case}.csv"
+    if args.alpha is not None:
+        cfg["numerics"]["hourglass_alpha"] = args.alpha
+    out = ROOT / "benchmarks" / "out" / f"cavity_path_{args.case}{args.tag}.csv"
     out.parent.mkdir(parents=True, exist_ok=True)
     tables = []
     for dx in args.dx:

@@ -16,6 +16,7 @@ import pytest
 import yaml
 
 from sphgag.studies import delamination, pool_response
+from sphgag.studies.protocols import POOL_MODELS
 
 from .conftest import ROOT, project_copy, snakemake
 
@@ -646,13 +647,13 @@ def test_a_configfile_stands_alone(fresh_copy, ci_config):
     """--configfile X means X: nothing of config/config.yaml (pools II, III, pressure 145) leaks in."""
     run, out = plan(fresh_copy, "--configfile", "config/ci.yaml")
     assert run.returncode == 0, out
-    sw, laws = ci_config["swelling"], len(ci_config["gag"]["charge_laws"])
-    expected = laws * len(sw["models"]) * len(sw["cases"]) * len(sw["pressures_mmHg"])
+    sw = ci_config["swelling"]
+    expected = pool_variants(ci_config) * len(sw["models"]) * len(sw["cases"]) * len(sw["pressures_mmHg"])
     swell = [line for line in out.splitlines() if line.startswith("swell ")]
     assert swell and int(swell[0].split()[-1]) == expected, swell
     run, out = plan(fresh_copy)  # no --configfile: the full study
     full = yaml.safe_load((ROOT / "config/config.yaml").read_text())
-    runs = len(full["gag"]["charge_laws"]) * len(full["swelling"]["models"]) * len(full["swelling"]["cases"])
+    runs = pool_variants(full) * len(full["swelling"]["models"]) * len(full["swelling"]["cases"])
     assert f"swell {runs * len(full['swelling']['pressures_mmHg'])}".split() in [
         line.split() for line in out.splitlines()
     ]
@@ -698,6 +699,15 @@ def written_config(tmp_path, cfg, name="edited.yaml"):
     return path
 
 
+def pool_variants(cfg) -> int:
+    """The (charge law, pool model) pairs the swelling runs of ``cfg`` run (each pool model under its laws)."""
+    laws = set(cfg["gag"]["charge_laws"])
+    return sum(len(laws & set(POOL_MODELS[pool].laws)) for pool in cfg["swelling"]["pool_models"])
+
+
+SWELLING_RULES = ("swell", "pool_stresses", "swelling_convergence_dx", "swelling_convergence_stresses")
+
+
 def law_jobs(cfg) -> dict:
     """The simulation jobs of one charge law of ``cfg``, per rule."""
     sw, de = cfg["swelling"], cfg["delamination"]
@@ -717,6 +727,7 @@ def test_removing_a_charge_law_reruns_no_simulation(workdir, ci_config, tmp_path
     figures and claims that showed both laws are redone."""
     cfg = copy.deepcopy(ci_config)
     cfg["gag"]["charge_laws"] = ["conserved"]
+    cfg["swelling"]["pool_models"] = ["particles"]  # the cavity carries the prescribed law only
     run = snakemake(workdir, "-n", "everything", configfile=written_config(tmp_path, cfg))
     out = run.stdout + run.stderr
     assert run.returncode == 0, out[-3000:]
@@ -730,9 +741,11 @@ def test_removing_a_charge_law_reruns_no_simulation(workdir, ci_config, tmp_path
 
 
 def test_adding_a_charge_law_adds_its_own_jobs(fresh_copy, ci_config, tmp_path):
-    """From nothing, the two laws plan each law's simulation jobs once: a law adds its jobs and no others."""
+    """From nothing, the two laws plan each law's simulation jobs once: a law adds its jobs and no others (the
+    swelling runs once per pool model that carries the law: the cavity carries the prescribed law only)."""
     one = copy.deepcopy(ci_config)
     one["gag"]["charge_laws"] = ["conserved"]
+    one["swelling"]["pool_models"] = ["particles"]
     alone = planned_jobs(plan(fresh_copy, "--configfile", str(written_config(tmp_path, one)))[1])
     both = planned_jobs(plan(fresh_copy, "--configfile", "config/ci.yaml")[1])
     assert ci_config["gag"]["charge_laws"] == ["prescribed", "conserved"]
@@ -740,8 +753,10 @@ def test_adding_a_charge_law_adds_its_own_jobs(fresh_copy, ci_config, tmp_path):
     # the G_c the paper's law dissipates comes from its prescribed-law run of figure 5's pool at critical_stress_kPa,
     # which runs for that alone where figure 5's sigmas do not include it
     matched = de["fracture_energy"]["match_paper"] and de["critical_stress_kPa"] not in de["critical_stresses_kPa"]
+    variants = pool_variants(ci_config)
     for rule, n in law_jobs(ci_config).items():
-        assert (alone[rule], both[rule]) == (n, 2 * n + (matched if rule == "delaminate" else 0)), rule
+        per_law = variants if rule in SWELLING_RULES else 2
+        assert (alone[rule], both[rule]) == (n, per_law * n + (matched if rule == "delaminate" else 0)), rule
     n = len(de["fracture_energy"]["fracture_energies_J_m2"])
     assert (alone["delaminate_fracture_energy"], both["delaminate_fracture_energy"]) == (n, 2 * (n + 1))
 

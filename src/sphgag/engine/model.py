@@ -304,8 +304,8 @@ class Model:
         by Sherman-Morrison (:func:`sphgag.engine.solver._factorise`)."""
         self.material(ev.load)
         return [
-            c.rank_one(ev.x, pc, ev.load.axial_stretch, contents)
-            for c, (pc, contents) in zip(self.cavities, self._cache["cavity_pressures"])
+            c.rank_one(ev.x, ev.load.axial_stretch, contents)
+            for c, (_, contents) in zip(self.cavities, self._cache["cavity_pressures"])
         ]
 
     def block_index(self, p: int, q: int) -> int:

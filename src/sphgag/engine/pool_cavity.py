@@ -101,12 +101,13 @@ class Cavity:
         p = pool_pressure(self.volume_ratio(x), pressure_kPa, lz, *contents)
         f[self.loop] += p * self.area_gradient(x)
 
-    def rank_one(self, x: np.ndarray, pressure_kPa: float, lz: float, contents=(0.0, 0.0), n: int | None = None):
+    def rank_one(self, x: np.ndarray, lz: float, contents=(0.0, 0.0)) -> tuple[float, np.ndarray]:
         """The part of the Jacobian the blocks leave out: ``(c, g)`` with ``d(f)/dx += c g g^T``, ``g = dA/dx`` on
-        the lining (a flat vector over the ``n`` particles) and ``c = p'(J) / V_pool``, ``p'(J) = -w''(J)`` the
-        contents' stiffness (:func:`pool_pressure`): it couples every lining particle to every other."""
+        the lining (a flat vector over all particles) and ``c = p'(J) / V_pool``, ``p'(J) = -w''(J)`` the contents'
+        stiffness (:func:`pool_pressure`; the prescribed Pi does not depend on J): it couples every lining particle to
+        every other."""
         J = self.volume_ratio(x)
-        g = np.zeros((x.shape[0] if n is None else n, 2))
+        g = np.zeros_like(x)
         g[self.loop] = self.area_gradient(x)
         return -contents_stiffness(J, lz, *contents) / self.pool_area, g.ravel()
 

@@ -100,7 +100,8 @@ def variant_title(law: str, pool: str) -> str:
 
 
 def variant_short(law: str, pool: str) -> str:
-    return LAW_SHORT.get(law, law) + ("" if pool == PAPER_POOL else f", {pool}")
+    """The label of one (charge law, pool model) pair: the law's, or, for another pool model, both names."""
+    return LAW_SHORT.get(law, law) if pool == PAPER_POOL else f"{law} law, pool as {pool}"
 
 
 def law_blocks(laws, heights, width: float = 11.0):
@@ -458,7 +459,9 @@ def fig4(tips: pd.DataFrame, particles: pd.DataFrame, cases: dict, probe_length:
         law, pool, m = block
         return f"({letters[block]}) {m}, {variant_short(law, pool)}\n{q}"
 
-    long["panel"] = [label(b, q) for *b, q in zip(long.charge_law, long.pool_model, long.model, long.quantity)]
+    long["panel"] = [
+        label((law, pool, m), q) for law, pool, m, q in zip(long.charge_law, long.pool_model, long.model, long.quantity)
+    ]
     panels = [label(b, q) for b in blocks for q in (TIP, TOP)]
     grid = sns.FacetGrid(
         long,
