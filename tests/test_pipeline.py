@@ -16,6 +16,7 @@ import pytest
 import yaml
 
 from sphgag.studies import delamination, pool_response
+from sphgag.studies.claims import PAPER_POOL
 from sphgag.studies.protocols import POOL_MODELS
 
 from .conftest import ROOT, project_copy, snakemake
@@ -371,8 +372,13 @@ def test_outputs_follow_the_data_contracts(workdir, ci_config):
     assert sorted(claims[claims.claim_id == "C18"].charge_law) == sorted(ci_config["gag"]["charge_laws"])
     calibration = claims.claim_id.isin([f"C{k}" for k in range(1, 6)])
     assert set(claims[calibration].charge_law) == {"-"}
-    pool = claims[~calibration]  # C6-C17: one row per claim and law
+    pool = claims[~calibration & (claims.pool_model == PAPER_POOL)]  # C6-C17: one row per claim and law
     assert all(sorted(rows.charge_law) == sorted(laws) for _, rows in pool.groupby("claim_id"))
+    for model in set(ci_config["swelling"]["pool_models"]) - {PAPER_POOL}:  # figure 4's claims under its laws
+        other = claims[claims.pool_model == model]
+        carried = sorted(set(laws) & set(POOL_MODELS[model].laws))
+        assert set(other.claim_id) == {f"C{k}" for k in range(6, 13)}
+        assert all(sorted(rows.charge_law) == carried for _, rows in other.groupby("claim_id"))
     markdown = (workdir / "figures/claims.md").read_text()
     assert all(f"| C7 | {law} |" in markdown and f"| C13 | {law} |" in markdown for law in laws)
     for fig in FIGURES:
