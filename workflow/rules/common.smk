@@ -20,8 +20,12 @@ GAG = {law: canonical(law_gag(config["gag"], law)) for law in LAWS}
 # affects; figure, claims, sensitivity-index and view (ParaView, animation) rules depend on their own modules only (a
 # series depends on the physics it recomputes the stresses with, too); the modules that
 # compute no number (validation, logging, provenance records) are inputs of nothing.
+# The figures are drawn by families (sphgag.views.<family>: figure 1, the wall models of figure 3, the swelling of
+# figure 4, the verification problems, the delamination of figures 5-7, the sensitivity study), on a shared style.
+FIGURE_FAMILIES = ("layout", "wall", "swelling", "verification", "delamination", "sensitivity")
 PRESENTATION = {
-    "views/plots.py",
+    "views/style.py",
+    *(f"views/{family}.py" for family in FIGURE_FAMILIES),
     "views/paraview.py",
     "views/animation.py",
     "studies/claims.py",
@@ -36,7 +40,8 @@ PRESENTATION = {
 PACKAGE = Path(SRC, "sphgag")
 MODULES = {p.relative_to(PACKAGE).as_posix(): os.path.relpath(p) for p in sorted(PACKAGE.rglob("*.py"))}
 SPHGAG = [path for name, path in MODULES.items() if name not in PRESENTATION]
-PLOTS = MODULES["views/plots.py"]
+# a figure rule's code: its family's module and the shared style (an edit of one family redraws its figures only)
+VIEWS = {family: [MODULES["views/style.py"], MODULES[f"views/{family}.py"]] for family in FIGURE_FAMILIES}
 CLAIMS = MODULES["studies/claims.py"]
 SENSITIVITY = MODULES["studies/sensitivity.py"]  # the indices, not the samples' simulations
 PARAVIEW = MODULES["views/paraview.py"]

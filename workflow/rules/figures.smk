@@ -1,7 +1,7 @@
 rule fig3a_mean:
     """Figure 3a for the mean-behaviour model: pressure-outer diameter and mean stress-stretch."""
     input:
-        code=PLOTS,
+        code=VIEWS["wall"],
         states=rules.calibrate_mean.output.states,
         exact=rules.calibrate_mean.output.exact,
     output:
@@ -29,7 +29,7 @@ rule fig3a_mean:
 rule fig3b:
     """Figure 3b: transmural radial and circumferential stress of the mean model at 103, 145, 200 mmHg."""
     input:
-        code=PLOTS,
+        code=VIEWS["wall"],
         profiles=rules.transmural.output[0],
     output:
         pdf="figures/fig3b.pdf",
@@ -56,7 +56,7 @@ rule fig3b:
 rule fig3:
     """Figure 3, complete: mean, passive and active models (pressure-diameter, stress-stretch, transmural)."""
     input:
-        code=PLOTS,
+        code=VIEWS["wall"],
         mean_states=rules.calibrate_mean.output.states,
         mean_exact=rules.calibrate_mean.output.exact,
         bilayer=rules.bilayer_table.output.table,
@@ -88,7 +88,7 @@ rule fig3:
 rule fig1:
     """Figure 1: particle layout of the bi-layered model, the kernel, the layer composition."""
     input:
-        code=PLOTS,
+        code=VIEWS["layout"],
         particles=rules.homeostasis.output.particles,
     output:
         pdf="figures/fig1.pdf",
@@ -119,7 +119,7 @@ rule fig1:
 rule fig4:
     """Figure 4: the pools, and the tip radial and top hoop stress against GAG concentration, for every charge law."""
     input:
-        code=PLOTS,
+        code=VIEWS["swelling"],
         tips=rules.tip_stress.output[0],
         particles=rules.homeostasis.output.particles,
     output:
@@ -190,7 +190,7 @@ rule claims:
 rule swelling_convergence_figure:
     """Resolution study of the pool stresses: tip, top and pool volume change against concentration per dx and law."""
     input:
-        code=PLOTS,
+        code=VIEWS["swelling"],
         table=rules.swelling_convergence.output[0],
     output:
         pdf="figures/swelling_convergence.pdf",
@@ -244,7 +244,7 @@ DE_FIGURE_SNAPSHOTS = {
 rule fig5:
     """Figure 5: figure 5's pool set grown (snapshots), its tip radial stress against pseudo-time for every sigma_cr."""
     input:
-        code=PLOTS,
+        code=VIEWS["delamination"],
         growth=rules.delamination_growth.output[0],
         summary=rules.delamination_summary.output[0],
         snapshots=DE_FIGURE_SNAPSHOTS["fig5"],
@@ -280,7 +280,7 @@ rule fig6:
     """Figure 6: pools at one radius (figure 6's sets, e.g. low and high separation): snapshots, interior and exterior
     growth."""
     input:
-        code=PLOTS,
+        code=VIEWS["delamination"],
         growth=rules.delamination_growth.output[0],
         summary=rules.delamination_summary.output[0],
         snapshots=DE_FIGURE_SNAPSHOTS["fig6"],
@@ -314,7 +314,7 @@ rule fig6:
 rule fig7:
     """Figure 7: two pools offset in radius: four snapshots per criterion, tip stress and growth."""
     input:
-        code=PLOTS,
+        code=VIEWS["delamination"],
         growth=rules.delamination_growth.output[0],
         summary=rules.delamination_summary.output[0],
         snapshots=DE_FIGURE_SNAPSHOTS["fig7"],

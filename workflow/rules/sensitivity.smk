@@ -183,7 +183,7 @@ rule sensitivity_tables:
 rule sensitivity_figure:
     """Morris mu* against sigma, and Sobol S1 and ST with their intervals, for every output and charge law."""
     input:
-        code=PLOTS,
+        code=VIEWS["sensitivity"],
         indices=rules.sensitivity_tables.output.indices,
     output:
         pdf="figures/sensitivity.pdf",
@@ -257,7 +257,7 @@ rule delamination_map_figure:
     """The map: angular extent x concentration, one panel per sigma_cr and charge law, with the limit concentrations
     of figure 4's swelling runs."""
     input:
-        code=PLOTS,
+        code=VIEWS["sensitivity"],
         map=rules.delamination_map.output[0],
         swelling=rules.tip_stress.output[0],
     output:

@@ -79,7 +79,7 @@ rule verify_pool_profiles:
 rule verification_pool_figure:
     """SPH around a swelling inclusion against Inglis and Lame; errors against resolution with the observed order."""
     input:
-        code=PLOTS,
+        code=VIEWS["verification"],
         table=rules.verify_pool.output[0],
         profiles=rules.verify_pool_profiles.output[0],
     output:
@@ -165,7 +165,7 @@ rule verification_crack_figure:
     """The fracture-energy damage law on a pressurised crack: SPH against Sneddon and Griffith, and the errors against
     resolution."""
     input:
-        code=PLOTS,
+        code=VIEWS["verification"],
         table=rules.verify_crack.output[0],
     output:
         pdf="figures/verification_crack.pdf",
@@ -245,7 +245,7 @@ rule verify_circular_pool:
 rule verification_circular_pool_figure:
     """The circular pool at large strain: errors of the pool's volume and of its lining's radius against dx."""
     input:
-        code=PLOTS,
+        code=VIEWS["verification"],
         table=rules.verify_circular_pool.output[0],
     output:
         pdf="figures/verification_circular_pool.pdf",

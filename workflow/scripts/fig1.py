@@ -4,11 +4,11 @@ import pandas as pd
 
 from sphgag import threads
 from sphgag.records import runlog
-from sphgag.views import plots
+from sphgag.views import layout, style
 
 sm = snakemake  # noqa: F821
 threads.use(sm.threads)
 with runlog.run("fig1", sm.log[0]):
     particles = pd.read_csv(sm.input.particles)
-    fig = plots.fig1(particles, sm.params.mass_fractions, sm.params.support_factor, sm.params.dx)
-    plots.save(fig, [sm.output.pdf, sm.output.png], "Figure 1 (particle layout), sphgag")
+    fig = layout.fig1(particles, sm.params.mass_fractions, sm.params.support_factor, sm.params.dx)
+    style.save(fig, [sm.output.pdf, sm.output.png], "Figure 1 (particle layout), sphgag")

@@ -4,7 +4,7 @@ import pandas as pd
 
 from sphgag import threads
 from sphgag.records import runlog
-from sphgag.views import plots
+from sphgag.views import style, wall
 
 sm = snakemake  # noqa: F821
 threads.use(sm.threads)
@@ -13,13 +13,13 @@ with runlog.run("fig3", sm.log[0]):
         k: pd.read_csv(sm.input[k])
         for k in ("mean_states", "mean_exact", "bilayer", "passive_exact", "active_exact", "profiles")
     }
-    plots.finite_or_raise(tables["bilayer"], ["outer_diameter_um", "pressure_mmHg", "mean_circ_stretch"], "fig3")
-    plots.finite_or_raise(tables["profiles"], ["radius_um", "radial_stress_kPa", "circ_stress_kPa"], "fig3")
-    fig = plots.fig3(
+    style.finite_or_raise(tables["bilayer"], ["outer_diameter_um", "pressure_mmHg", "mean_circ_stretch"], "fig3")
+    style.finite_or_raise(tables["profiles"], ["radius_um", "radial_stress_kPa", "circ_stress_kPa"], "fig3")
+    fig = wall.fig3(
         tables["mean_states"],
         tables["mean_exact"],
         tables["bilayer"],
         {"passive": tables["passive_exact"], "active": tables["active_exact"]},
         tables["profiles"],
     )
-    plots.save(fig, [sm.output.pdf, sm.output.png], "Figure 3 (mean, passive and active models), sphgag")
+    style.save(fig, [sm.output.pdf, sm.output.png], "Figure 3 (mean, passive and active models), sphgag")

@@ -4,11 +4,11 @@ import pandas as pd
 
 from sphgag import threads
 from sphgag.records import runlog
-from sphgag.views import plots
+from sphgag.views import style, wall
 
 sm = snakemake  # noqa: F821
 threads.use(sm.threads)
 with runlog.run("fig3b", sm.log[0]):
     profiles = pd.read_csv(sm.input.profiles)
-    plots.finite_or_raise(profiles, ["radius_um", "radial_stress_kPa", "circ_stress_kPa"], "fig3b")
-    plots.save(plots.fig3b(profiles), [sm.output.pdf, sm.output.png], "Figure 3b (mean-behaviour model), sphgag")
+    style.finite_or_raise(profiles, ["radius_um", "radial_stress_kPa", "circ_stress_kPa"], "fig3b")
+    style.save(wall.fig3b(profiles), [sm.output.pdf, sm.output.png], "Figure 3b (mean-behaviour model), sphgag")

@@ -4,13 +4,13 @@ import pandas as pd
 
 from sphgag import threads
 from sphgag.records import runlog
-from sphgag.views import plots
+from sphgag.views import style, swelling
 
 sm = snakemake  # noqa: F821
 threads.use(sm.threads)
 with runlog.run("fig4", sm.log[0]):
     tips = pd.read_csv(sm.input.tips)
-    plots.finite_or_raise(tips, ["tip_radial_stress_kPa", "top_circ_stress_kPa", "concentration_mEq_l"], "fig4")
+    style.finite_or_raise(tips, ["tip_radial_stress_kPa", "top_circ_stress_kPa", "concentration_mEq_l"], "fig4")
     p = sm.params
-    fig = plots.fig4(tips, pd.read_csv(sm.input.particles), p.cases, p.probe_length, p.laws, p.max_concentration)
-    plots.save(fig, [sm.output.pdf, sm.output.png], "Figure 4 (GAG pool swelling), sphgag")
+    fig = swelling.fig4(tips, pd.read_csv(sm.input.particles), p.cases, p.probe_length, p.laws, p.max_concentration)
+    style.save(fig, [sm.output.pdf, sm.output.png], "Figure 4 (GAG pool swelling), sphgag")

@@ -5,7 +5,8 @@ import pandas as pd
 from sphgag import threads
 from sphgag.records import runlog
 from sphgag.studies import delamination
-from sphgag.views import plots
+from sphgag.views import delamination as views
+from sphgag.views import style
 
 sm = snakemake  # noqa: F821
 threads.use(sm.threads)
@@ -13,10 +14,10 @@ with runlog.run("fig5", sm.log[0]):
     p = sm.params
     # the paper's damage law (eq. 2.28 as printed); the fracture-energy runs are rows of the tables, not of the figure
     growth, summary = (delamination.paper_law(pd.read_csv(path)) for path in (sm.input.growth, sm.input.summary))
-    plots.finite_or_raise(
+    style.finite_or_raise(
         growth[growth.case == p.case], ["concentration_mEq_l", "converted_particles", "delaminated_length_um"], "fig5"
     )
     keys = [(law, c) for law in p.laws for c in p.criteria]  # the order of the rule's input
-    snapshots = {key: plots.read_snapshots(path) for key, path in zip(keys, sm.input.snapshots)}
-    fig = plots.fig5(growth, summary, snapshots, p.case, p.sigma, p.criteria, p.laws, p.media_outer)
-    plots.save(fig, [sm.output.pdf, sm.output.png], "Figure 5 (delamination by a single GAG pool), sphgag")
+    snapshots = {key: views.read_snapshots(path) for key, path in zip(keys, sm.input.snapshots)}
+    fig = views.fig5(growth, summary, snapshots, p.case, p.sigma, p.criteria, p.laws, p.media_outer)
+    style.save(fig, [sm.output.pdf, sm.output.png], "Figure 5 (delamination by a single GAG pool), sphgag")

@@ -5,7 +5,8 @@ import pandas as pd
 from sphgag import threads
 from sphgag.records import runlog
 from sphgag.studies import delamination
-from sphgag.views import plots
+from sphgag.views import delamination as views
+from sphgag.views import style
 
 sm = snakemake  # noqa: F821
 threads.use(sm.threads)
@@ -13,12 +14,12 @@ with runlog.run("fig6", sm.log[0]):
     p = sm.params
     # the paper's damage law (eq. 2.28 as printed); the fracture-energy runs are rows of the tables, not of the figure
     growth, summary = (delamination.paper_law(pd.read_csv(path)) for path in (sm.input.growth, sm.input.summary))
-    plots.finite_or_raise(
+    style.finite_or_raise(
         growth[growth.case.isin(p.cases)],
         ["concentration_mEq_l", "converted_interior", "converted_exterior"],
         "fig6",
     )
     keys = [(law, case, c) for law in p.laws for case in p.cases for c in p.criteria]  # the order of the rule's input
-    snapshots = {key: plots.read_snapshots(path) for key, path in zip(keys, sm.input.snapshots)}
-    fig = plots.fig6(growth, summary, snapshots, p.cases, p.criteria, p.laws, p.media_outer)
-    plots.save(fig, [sm.output.pdf, sm.output.png], "Figure 6 (coalescence of two GAG pools at one radius), sphgag")
+    snapshots = {key: views.read_snapshots(path) for key, path in zip(keys, sm.input.snapshots)}
+    fig = views.fig6(growth, summary, snapshots, p.cases, p.criteria, p.laws, p.media_outer)
+    style.save(fig, [sm.output.pdf, sm.output.png], "Figure 6 (coalescence of two GAG pools at one radius), sphgag")

@@ -4,11 +4,11 @@ import pandas as pd
 
 from sphgag import threads
 from sphgag.records import runlog
-from sphgag.views import plots
+from sphgag.views import sensitivity, style
 
 sm = snakemake  # noqa: F821
 threads.use(sm.threads)
 with runlog.run("sensitivity_figure", sm.log[0]):
     indices = pd.read_csv(sm.input.indices)
-    fig = plots.sensitivity(indices, list(dict.fromkeys(indices.charge_law)))
-    plots.save(fig, [sm.output.pdf, sm.output.png], "Sensitivity of the figure 4 and delamination results, sphgag")
+    fig = sensitivity.sensitivity(indices, list(dict.fromkeys(indices.charge_law)))
+    style.save(fig, [sm.output.pdf, sm.output.png], "Sensitivity of the figure 4 and delamination results, sphgag")

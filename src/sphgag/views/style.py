@@ -1,0 +1,137 @@
+"""What every figure family shares: the figures' style, palettes, the charge laws' and pool models' titles,
+the check of a figure's data and its saving with provenance (no figure of its own)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pandas as pd  # noqa: E402
+import seaborn as sns  # noqa: E402
+
+from ..records.provenance import figure_metadata  # noqa: E402
+
+PRESSURE_COLOURS = {103.0: "#1b9e77", 145.0: "#d95f02", 200.0: "#7570b3"}
+LAYER_COLOURS = {"media": "#3b6fb6", "adventitia": "#2e9e5b", "GAG": "#d1352b"}
+GAG_CONCENTRATION = "GAG concentration (mEq/l)"
+LAST_CONVERGED = "last converged state (run stopped)"
+
+
+def _style():
+    plt.rcParams.update(
+        {
+            "font.size": 9,
+            "axes.labelsize": 9,
+            "legend.fontsize": 8,
+            "axes.spines.top": False,
+            "axes.spines.right": False,
+            "figure.dpi": 150,
+            "savefig.bbox": "tight",
+        }
+    )
+
+
+def pressure_colour(p):
+    return PRESSURE_COLOURS.get(round(float(p), 6), None)
+
+
+def palette(levels, colours: dict, label="{:g}".format) -> dict:
+    """Seaborn palette of ``levels``: ``label(level)`` -> ``colours[level]`` where ``colours`` has the level, else
+    the next unused colour of Dark2 (deterministic, in the order of ``levels``)."""
+    spare = iter(c for c in sns.color_palette("Dark2").as_hex() if c not in colours.values())
+    return {label(v): colours.get(v) or next(spare) for v in levels}
+
+
+def long_measures(table: pd.DataFrame, measures: dict, id_vars) -> pd.DataFrame:
+    """``table`` in long form: one row per value of a ``measures`` column (column -> (quantity, statistic)) that
+    ``table`` has, with its ``quantity`` and ``statistic`` (the facets and line styles of a seaborn figure)."""
+    long = table.melt(id_vars=id_vars, value_vars=[c for c in measures if c in table], var_name="column")
+    long["quantity"] = long.column.map(lambda c: measures[c][0])
+    long["statistic"] = long.column.map(lambda c: measures[c][1])
+    return long
+
+
+def style_legend(ax, loc="best", fontsize=7, **kws):
+    """The seaborn legend of ``ax`` without a frame, in small type."""
+    sns.move_legend(ax, loc, frameon=False, fontsize=fontsize, **kws)
+
+
+# the Donnan laws of the pools (sphgag.physics.materials.CHARGE_LAWS, column charge_law of every pool table), as the
+# figures name them: the prescribed law is the paper's model, the one to compare with the paper's panels
+LAW_TITLES = {
+    "prescribed": "prescribed charge law: Pi(c), eqs. 2.25-2.27 as printed (the paper's model: compare with the paper)",
+    "conserved": "conserved charge law: Pi at the current concentration c/J (mixture theory; a deviation)",
+}
+LAW_SHORT = {"prescribed": "prescribed Pi(c), paper", "conserved": "conserved charge, c/J"}
+
+
+def law_title(law: str) -> str:
+    return LAW_TITLES.get(law, f"{law} charge law")
+
+
+# the pool models of the swelling runs (sphgag.studies.protocols.POOL_MODELS, column pool_model of the pool tables):
+# ``particles`` is the paper's; the others are named beside their law in the figures
+PAPER_POOL = "particles"
+POOL_TITLES = {
+    "cavity": "the pool as a pressurised cavity (our deviation: its lining carries Pi, its contents swell uniformly)"
+}
+
+
+def variants(table: pd.DataFrame, laws) -> list[tuple[str, str]]:
+    """The (charge law, pool model) pairs of ``table`` in the order of ``laws``, the paper's pool model first (a table
+    without a column ``pool_model`` has the paper's only)."""
+    pools = list(dict.fromkeys(table.pool_model)) if "pool_model" in table else [PAPER_POOL]
+    pools = sorted(pools, key=lambda m: m != PAPER_POOL)
+    have = set(zip(table.charge_law, table.pool_model if "pool_model" in table else [PAPER_POOL] * len(table)))
+    return [(law, m) for law in laws for m in pools if (law, m) in have]
+
+
+def paper_pool(table: pd.DataFrame) -> pd.DataFrame:
+    """The rows of the paper's pool model (all rows of a table without a column ``pool_model``)."""
+    return table[table.pool_model == PAPER_POOL] if "pool_model" in table else table
+
+
+def variant_title(law: str, pool: str) -> str:
+    """The heading of one (charge law, pool model) pair."""
+    if pool == PAPER_POOL:
+        return law_title(law)
+    return f"{LAW_SHORT.get(law, law)}; {POOL_TITLES.get(pool, pool)}"
+
+
+def variant_short(law: str, pool: str) -> str:
+    """The label of one (charge law, pool model) pair: the law's, or, for another pool model, both names."""
+    return LAW_SHORT.get(law, law) if pool == PAPER_POOL else f"{law} law, pool as {pool}"
+
+
+def law_blocks(laws, heights, width: float = 11.0):
+    """A figure with one titled block (a sub-figure, constrained layout) per charge law, stacked in the order of
+    ``laws`` (``heights`` in inches); returns the figure and the blocks."""
+    fig = plt.figure(figsize=(width, sum(heights) + 0.5), layout="constrained")
+    blocks = fig.subfigures(len(laws), 1, height_ratios=list(heights), squeeze=False)[:, 0]
+    for block, law in zip(blocks, laws):
+        block.suptitle(law_title(law), x=0.01, ha="left", fontsize=10, fontweight="bold")
+    return fig, list(blocks)
+
+
+def save(fig, paths, description: str):
+    """Save ``fig`` to every path (format from the suffix) with provenance metadata."""
+    for path in paths:
+        Path(path).parent.mkdir(parents=True, exist_ok=True)
+        meta = figure_metadata(description)
+        if str(path).endswith(".png"):
+            meta = {"Title": meta["Title"], "Software": meta["Creator"]}
+        elif str(path).endswith(".pdf"):
+            meta["CreationDate"] = None  # no timestamp: the same tables give the same bytes
+        fig.savefig(path, metadata=meta)
+    plt.close(fig)
+
+
+def finite_or_raise(df: pd.DataFrame, columns, what: str):
+    """Refuse to draw a figure from non-finite data."""
+    bad = [c for c in columns if not np.isfinite(df[c].to_numpy(dtype=float)).all()]
+    if bad:
+        raise ValueError(f"{what}: non-finite values in {bad}; refusing to draw a figure from them")

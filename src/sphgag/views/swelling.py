@@ -1,0 +1,219 @@
+"""Figure 4 of the paper, the swelling GAG pools: the pools and the stresses around them against concentration;
+and the resolution study of those stresses (figure swelling_convergence, not in the paper)."""
+
+from __future__ import annotations
+
+import matplotlib.pyplot as plt
+import numpy as np
+import pandas as pd
+import seaborn as sns
+
+from .style import (
+    GAG_CONCENTRATION,
+    LAST_CONVERGED,
+    LAYER_COLOURS,
+    PAPER_POOL,
+    PRESSURE_COLOURS,
+    _style,
+    long_measures,
+    palette,
+    variant_short,
+    variant_title,
+    variants,
+)
+
+
+def pool_geometry_panel(ax, particles: pd.DataFrame, case: dict, probe_length: float, title: str):
+    """Figure 4a: the pool (red), the media and adventitia around it, and the probe regions (outlines)."""
+    from ..engine.measure import pool_probes
+    from ..studies.artery import pool_sector
+
+    pool = pool_sector(case)
+    th0 = np.deg2rad(pool.centre_angle_deg)
+    half = 0.5 * np.deg2rad(max(pool.angular_extent_deg, 3.0)) + 25.0 / pool.centre_radius
+    near = particles[np.abs(particles.theta_rad - th0) < half]
+    arc = (near.theta_rad - th0) * pool.centre_radius
+    in_pool = pool.contains(near.radius_um, near.theta_rad) & (near.layer == "media")
+    colours = np.where(in_pool, LAYER_COLOURS["GAG"], near.layer.map(LAYER_COLOURS).fillna("k"))
+    ax.scatter(arc, near.radius_um, s=6, c=colours, linewidths=0)
+    for name, box in pool_probes(pool, probe_length).items():
+        (r0, r1), (t0, t1) = box.r_range, box.theta_range
+        a0, a1 = (t0 - th0) * pool.centre_radius, (t1 - th0) * pool.centre_radius
+        ax.plot([a0, a1, a1, a0, a0], [r0, r0, r1, r1, r0], lw=0.7, color="k" if name.startswith("tip") else "0.45")
+    ax.set(title=title, xlabel="arc from pool centre (um)")
+    ax.set_aspect("equal")
+
+
+TIP, TOP = "tip radial stress (kPa)", "top hoop stress (kPa)"
+POOL_MEASURES = {  # the pool figures' columns (tip_stress.csv, convergence.csv) -> (quantity, statistic)
+    "tip_radial_stress_kPa": (TIP, "region mean"),
+    "tip_peak_radial_stress_kPa": (TIP, "particle peak"),
+    "top_circ_stress_kPa": (TOP, "region mean"),
+    "pool_volume_change": ("pool volume change", "region mean"),
+}
+STATISTIC_LINES = dict(
+    style="statistic",
+    style_order=["region mean", "particle peak"],
+    dashes={"region mean": "", "particle peak": (1, 1.65)},
+    markers={"region mean": "o", "particle peak": "."},
+    markersize=3,
+    markeredgewidth=0,
+)
+
+
+def swelling_lines(data: pd.DataFrame, colours: dict, max_concentration: float, **_):
+    """One facet of figure 4 (FacetGrid.map_dataframe): a stress against concentration after conversion, a colour
+    per pressure, a line style per statistic; the intact wall's value as a large dot at zero concentration; a cross
+    at the last converged state of a run that stopped below ``max_concentration`` (no equilibrium beyond it)."""
+    ax = plt.gca()
+    conv, intact = data[data.stage == "converted"], data[data.stage == "intact"]
+    sns.lineplot(
+        conv,
+        x="concentration_mEq_l",
+        y="value",
+        hue="pressure",
+        hue_order=list(colours),
+        palette=colours,
+        estimator=None,
+        lw=1.0,
+        ax=ax,
+        **STATISTIC_LINES,
+    )
+    sns.scatterplot(
+        intact,
+        x="concentration_mEq_l",
+        y="value",
+        hue="pressure",
+        palette=colours,
+        s=36,
+        linewidth=0,
+        clip_on=False,
+        legend=False,
+        ax=ax,
+    )
+    means = conv[conv.statistic == "region mean"].sort_values("concentration_mEq_l")
+    ends = means.groupby("pressure").tail(1)
+    ends = ends[ends.concentration_mEq_l < max_concentration - 1e-9]
+    if len(ends):
+        ax.scatter(
+            ends.concentration_mEq_l,
+            ends.value,
+            marker="X",
+            s=40,
+            c=[colours[p] for p in ends.pressure],
+            edgecolors="k",
+            linewidths=0.5,
+            zorder=5,
+            label=LAST_CONVERGED,
+        )
+    if (data.quantity == TIP).any():
+        ax.axhline(0.0, color="0.7", lw=0.6)
+
+
+def fig4(tips: pd.DataFrame, particles: pd.DataFrame, cases: dict, probe_length: float, laws, max_concentration):
+    """Figure 4: (a) the pools; then for each charge law (``laws``, column ``charge_law``) and pool model (column
+    ``pool_model``, the paper's first) the passive and active tip radial and top hoop stress vs concentration
+    (seaborn facets of tip_stress.csv: a row per law, pool model, model and stress, a column per pool, a colour per
+    pressure). A run's line ends at its last converged state (a cross if that is below ``max_concentration``)."""
+    _style()
+    names = sorted(cases, key=lambda k: cases[k]["angular_extent_deg"])
+    tips = tips if "pool_model" in tips else tips.assign(pool_model=PAPER_POOL)
+    pairs = variants(tips, laws)
+    models = [m for m in ("passive", "active") if m in set(tips.model)]
+    pressures = palette(sorted(tips.pressure_mmHg.unique()), PRESSURE_COLOURS, "{:g} mmHg".format)
+    long = long_measures(
+        tips.assign(pressure=tips.pressure_mmHg.map("{:g} mmHg".format)),
+        {c: POOL_MEASURES[c] for c in ("tip_radial_stress_kPa", "tip_peak_radial_stress_kPa", "top_circ_stress_kPa")},
+        ["charge_law", "pool_model", "model", "case", "stage", "pressure", "concentration_mEq_l"],
+    )
+    long = long[(long.stage == "converted") | (long.statistic == "region mean")]  # no peak of the intact wall
+    blocks = [(law, pool, m) for law, pool in pairs for m in models]
+    letters = {block: "bcdefghijklmnopqrstuvwxyz"[k] for k, block in enumerate(blocks)}
+
+    def label(block, q):
+        law, pool, m = block
+        return f"({letters[block]}) {m}, {variant_short(law, pool)}\n{q}"
+
+    long["panel"] = [
+        label((law, pool, m), q) for law, pool, m, q in zip(long.charge_law, long.pool_model, long.model, long.quantity)
+    ]
+    panels = [label(b, q) for b in blocks for q in (TIP, TOP)]
+    grid = sns.FacetGrid(
+        long,
+        row="panel",
+        col="case",
+        row_order=["(a)"] + panels,
+        col_order=names,
+        sharex=False,
+        sharey="row",
+        height=2.1,
+        aspect=3.0 / 2.1,
+    )
+    grid.map_dataframe(swelling_lines, colours=pressures, max_concentration=max_concentration)
+    grid.add_legend()
+    grid.set_titles("")
+    grid.set_axis_labels(GAG_CONCENTRATION, "")
+    for ax, panel in zip(grid.axes[1:, 0], panels):
+        ax.set_ylabel(panel)
+    for ax in grid.axes[1:].flat:  # one concentration axis: a run that ended early ends short of the others
+        ax.set_xlim(-0.04 * max_concentration, 1.04 * max_concentration)
+    for k, (law, pool) in enumerate(pairs):  # a heading above each law's (and pool model's) rows
+        grid.axes[1 + 2 * len(models) * k, 0].set_title(
+            variant_title(law, pool), loc="left", fontweight="bold", fontsize=9
+        )
+    for ax, name in zip(grid.axes[0], names):
+        pool_geometry_panel(
+            ax, particles, cases[name], probe_length, f"(a) case {name}: {cases[name]['angular_extent_deg']:g} deg"
+        )
+    grid.axes[0, 0].set_ylabel("radius (um)")
+    grid.tight_layout()
+    return grid.figure
+
+
+def swelling_convergence(table: pd.DataFrame, laws=None):
+    """Resolution study (seaborn facets of convergence.csv): tip radial stress (mean over the probe, and particle
+    peak), top hoop stress and pool volume change against concentration, a colour per particle spacing, a column
+    per pool, charge law and pool model (``laws``: their order; default: as in the table)."""
+    _style()
+    table = table if "pool_model" in table else table.assign(pool_model=PAPER_POOL)
+    pairs = variants(table, laws or list(dict.fromkeys(table.charge_law)))
+    spacings = sorted(table.dx_um.unique(), reverse=True)
+    shades = dict(zip([f"{dx:g} um" for dx in spacings], plt.cm.viridis(np.linspace(0.1, 0.85, len(spacings)))))
+    cases = list(dict.fromkeys(table.case))
+    column = {(law, pool, c): f"case {c}\n{variant_short(law, pool)}" for law, pool in pairs for c in cases}
+    long = long_measures(
+        table.assign(
+            dx=table.dx_um.map("{:g} um".format),
+            facet=[column.get(key) for key in zip(table.charge_law, table.pool_model, table.case)],
+        ),
+        POOL_MEASURES,
+        ["facet", "dx", "concentration_mEq_l"],
+    )
+    quantities = list(dict.fromkeys(q for q, _ in POOL_MEASURES.values()))
+    grid = sns.relplot(
+        long,
+        kind="line",
+        x="concentration_mEq_l",
+        y="value",
+        hue="dx",
+        hue_order=list(shades),
+        palette=shades,
+        row="quantity",
+        row_order=quantities,
+        col="facet",
+        col_order=list(column.values()),
+        estimator=None,
+        lw=1.0,
+        height=7.0 / 3,
+        aspect=3.4 / (7.0 / 3),
+        facet_kws=dict(sharey=False, margin_titles=True),
+        **STATISTIC_LINES,
+    )
+    grid.set_titles(row_template="", col_template="{col_name}")
+    grid.set_axis_labels(GAG_CONCENTRATION, "")
+    for ax, quantity in zip(grid.axes[:, 0], quantities):
+        ax.set_ylabel(quantity)
+    for ax in grid.axes[0]:
+        ax.axhline(0.0, color="0.7", lw=0.6)
+    grid.tight_layout()
+    return grid.figure

@@ -1,0 +1,230 @@
+"""The verification figures (not in the paper): the pool's stress field against Inglis and Lamé
+(verification_pool), a circular pool at large strain (verification_circular_pool) and the pressurised crack
+against Sneddon and Griffith (verification_crack)."""
+
+from __future__ import annotations
+
+import matplotlib.pyplot as plt
+import numpy as np
+import pandas as pd
+import seaborn as sns
+
+from .style import _style, palette, style_legend
+
+RATIO_COLOURS = {1.0: "#1b9e77", 2.0: "#d95f02", 3.0: "#7570b3"}
+
+
+def verification_pool(table: pd.DataFrame, profiles: pd.DataFrame):
+    """The pool verification: (a) Lamé field of the circle, (b) hoop stress ahead of the tip against Inglis,
+    (c) tip error and (d) traction jump and field error against resolution (log-log, observed order)."""
+    from ..studies.inclusion import TIP_PARTICLES, observed_order
+
+    _style()
+    fig, axes = plt.subplots(1, 4, figsize=(16.0, 3.1))
+    Pi = float(table.pressure_kPa.iloc[0])
+    colour = lambda r: RATIO_COLOURS.get(float(r), "k")  # noqa: E731
+    ax = axes[0]
+    rings = profiles[profiles.profile == "rings"]
+    if len(rings):
+        b = float(table[table.aspect_ratio == 1.0].semi_axis_b_um.iloc[0])
+        for k, (res, g) in enumerate(sorted(rings.groupby("b_over_dx"), key=lambda t: t[0])[-2:]):
+            mk = "os"[k]
+            ax.plot(
+                g.radius_um / b, g.radial_sph_kPa / Pi, mk, ms=3, mfc="none", color="C0", label=f"SPH b/dx = {res:g}"
+            )
+            ax.plot(g.radius_um / b, g.circ_sph_kPa / Pi, mk, ms=3, mfc="none", color="C3")
+        g = rings[rings.b_over_dx == rings.b_over_dx.max()].sort_values("radius_um")
+        ax.plot(g.radius_um / b, g.radial_exact_kPa / Pi, "-", color="C0", lw=1, label=r"Lamé $\sigma_{rr}$")
+        ax.plot(g.radius_um / b, g.circ_exact_kPa / Pi, "-", color="C3", lw=1, label=r"Lamé $\sigma_{\theta\theta}$")
+        ax.axvline(1.0, color="0.7", lw=0.6)
+    ax.set(xlabel="r / R", ylabel="stress / Pi", title="(a) circular inclusion: ring means")
+    ax.legend(frameon=False, fontsize=6.5)
+    ax = axes[1]
+    for ratio, g in table.groupby("aspect_ratio"):
+        finest = g.b_over_dx.max()
+        p = profiles[(profiles.profile == "axis") & (profiles.aspect_ratio == ratio) & (profiles.b_over_dx == finest)]
+        b = float(g.semi_axis_b_um.iloc[0])
+        ax.plot(p.s_um / b, p.hoop_exact_kPa / Pi, "-", color=colour(ratio), lw=1)
+        ax.plot(
+            p.s_um / b,
+            p.hoop_sph_kPa / Pi,
+            "o",
+            ms=2.5,
+            mfc="none",
+            color=colour(ratio),
+            label=f"a/b = {ratio:g} (b/dx = {finest:g})",
+        )
+        row = g[g.b_over_dx == finest].iloc[0]
+        ax.plot([0], [row.tip_stress_kPa / Pi], "*", ms=8, color=colour(ratio))
+        ax.plot([0], [row.reference_kPa / Pi], "_", ms=14, mew=1.5, color="k")
+    ax.set(
+        xlim=(0, None),
+        xlabel="distance ahead of the tip / b",
+        ylabel="hoop stress / Pi",
+        title="(b) ahead of the tip: SPH (o), Inglis (-)",
+    )
+    ax.text(
+        0.98,
+        0.97,
+        f"* fit of the first {TIP_PARTICLES} particles\n- Inglis Pi (2a/b - 1)",
+        transform=ax.transAxes,
+        ha="right",
+        va="top",
+        fontsize=6.5,
+    )
+    ax.legend(frameon=False, fontsize=6.5, loc="center right")
+    ratios = sorted(table.aspect_ratio.unique())
+    errors = table.assign(
+        tip=table.rel_error.abs(),
+        first=table.first_particle_rel_error.abs(),
+        field=table.field_rms_error_kPa / Pi,
+        jump=np.maximum(table.traction_jump_kPa / Pi, 1e-4),
+    )
+    orders = {r: observed_order(g.dx_um, g.rel_error) for r, g in table.groupby("aspect_ratio")}
+    resolution_panel(
+        axes[2],
+        errors,
+        {"tip": ("tip stress", "o", ""), "first": ("first particle", "X", (1, 1.65))},
+        palette(ratios, RATIO_COLOURS, lambda r: f"a/b = {r:g}: order {orders[r]:.2f}"),
+    )
+    axes[2].axhline(0.05, color="0.6", lw=0.6, ls="--")
+    axes[2].set(ylabel="|relative error|", title="(c) tip stress and first particle")
+    resolution_panel(
+        axes[3],
+        errors,
+        {"field": ("field rms error", "o", ""), "jump": ("traction jump", "s", (3.7, 1.6))},
+        palette(ratios, RATIO_COLOURS, "a/b = {:g}".format),
+    )
+    axes[3].set(ylabel="/ Pi", title="(d) field rms error, traction jump")
+    fig.tight_layout()
+    return fig
+
+
+def resolution_panel(ax, errors: pd.DataFrame, measures: dict, ratios: dict):
+    """Errors of the pool verification against dx / b, log-log (seaborn): a colour per aspect ratio (``ratios``:
+    legend label -> colour, in the order of the sorted ratios), a marker and line style per ``measures`` column
+    (column -> (name, marker, dashes)); the legend beside the axes."""
+    labels = dict(zip(sorted(errors.aspect_ratio.unique()), ratios))
+    long = errors.assign(dx_over_b=errors.dx_um / errors.semi_axis_b_um, ratio=errors.aspect_ratio.map(labels))
+    long = long.melt(id_vars=["ratio", "dx_over_b"], value_vars=list(measures), var_name="measure")
+    long["measure"] = long.measure.map(lambda c: measures[c][0])
+    sns.lineplot(
+        long,
+        x="dx_over_b",
+        y="value",
+        hue="ratio",
+        hue_order=list(ratios),
+        palette=ratios,
+        style="measure",
+        style_order=[name for name, _, _ in measures.values()],
+        markers={name: marker for name, marker, _ in measures.values()},
+        dashes={name: dashes for name, _, dashes in measures.values()},
+        estimator=None,
+        lw=1.0,
+        markersize=4,
+        ax=ax,
+    )
+    ax.set(xscale="log", yscale="log", xlabel="dx / b")
+    style_legend(ax, "upper left", fontsize=6.5, bbox_to_anchor=(1.0, 1.0))
+
+
+def verification_circular_pool(table: pd.DataFrame):
+    """The circular pool at large strain (circular_pool.csv): |relative error| of (a) the pool's volume ratio and
+    (b) its lining's radius against dx, log-log; a colour per volume ratio, a line style per pool model, the
+    observed order of each line in the legend."""
+    from ..studies.inclusion import observed_order
+
+    _style()
+    fig, axes = plt.subplots(1, 2, figsize=(11.0, 3.2))
+    ratios = sorted(table.target_volume_ratio.unique())
+    colours = dict(zip(ratios, sns.color_palette("Dark2", len(ratios)).as_hex()))
+    styles = dict(zip(sorted(table.pool_model.unique()), ["-", "--", ":", "-."]))
+    for ax, column, title in (
+        (axes[0], "volume_error", "(a) pool volume ratio"),
+        (axes[1], "lining_error", "(b) radius of the lining"),
+    ):
+        for (model, ratio), g in table.groupby(["pool_model", "target_volume_ratio"]):
+            g = g.sort_values("dx_um")
+            order = observed_order(g.dx_um, g[column])
+            ax.loglog(
+                g.dx_um,
+                np.maximum(g[column].abs(), 1e-5),
+                styles[model],
+                marker="o",
+                ms=3.5,
+                color=colours[ratio],
+                label=f"{model}, J = {ratio:g}: order {order:.2f}",
+            )
+        ax.axhline(0.02, color="0.6", lw=0.6, ls="--")
+        ax.set(xlabel="dx (um)", ylabel="|relative error|", title=title)
+        ax.set_xticks(sorted(table.dx_um.unique()), [f"{d:g}" for d in sorted(table.dx_um.unique())])
+        ax.minorticks_off()
+    axes[1].legend(frameon=False, fontsize=6.5, loc="upper left", bbox_to_anchor=(1.02, 1.0))
+    ended = table[table.volume_error.isna()].groupby(["pool_model", "dx_um"]).target_volume_ratio.min()
+    if len(ended):
+        paths = "; ".join(f"{m}, dx = {d:g} um, from J = {j:g}" for (m, d), j in ended.items())
+        text = f"no equilibrium (the path ended): {paths}"
+        fig.text(0.01, 0.01, text, fontsize=6.5, va="bottom")
+    fig.tight_layout(rect=(0, 0.05 if len(ended) else 0, 1, 1))
+    return fig
+
+
+def verification_crack(table: pd.DataFrame, modulus: float, fracture_energy_J_m2: float, critical_stress: float):
+    """The pressurised crack (pressurised_crack.csv): (a) the pressure at which it grows against Griffith's (and
+    Dugdale's, for the cohesive length), a marker per spacing; (b) the opening area before growth against Sneddon's;
+    (c) the three relative errors against dx, log-log, a colour per half-length."""
+    from ..physics import fracture
+
+    _style()
+    fig, axes = plt.subplots(1, 3, figsize=(11.5, 3.5), layout="constrained")
+    spacings = sorted(table.dx_um.unique(), reverse=True)
+    colours = dict(zip(spacings, sns.color_palette("viridis", len(spacings))))
+    gc = fracture_energy_J_m2 * fracture.J_M2
+    a = np.linspace(0.8 * table.half_length_um.min(), 1.2 * table.half_length_um.max(), 200)
+    ax = axes[0]
+    ax.plot(a, fracture.griffith_pressure(a, gc, modulus), "k-", lw=1.2, label="Griffith")
+    ax.plot(a, fracture.dugdale_pressure(a, gc, modulus, critical_stress), "k:", lw=1.0, label="Dugdale")
+    for dx in spacings:
+        t = table[table.dx_um == dx]
+        ax.plot(t.half_length_um, t.critical_pressure_kPa, "o", color=colours[dx], ms=5, label=f"SPH, dx = {dx:g} um")
+    ax.set(xlabel="crack half-length a [um]", ylabel="face pressure at growth [kPa]", title="(a) onset of growth")
+    ax.legend(frameon=False, fontsize=6.5)
+    ax = axes[1]
+    ax.plot(a, fracture.opening_area(a, 1.0, modulus), "k-", lw=1.2, label="Sneddon")
+    for dx in spacings:
+        t = table[table.dx_um == dx]
+        ax.plot(
+            t.half_length_um, t.opening_area_um2 / t.pressure_kPa, "o", color=colours[dx], ms=5, label=f"dx = {dx:g} um"
+        )
+    ax.set(
+        xlabel="crack half-length a [um]",
+        ylabel="opening area / pressure [um^2/kPa]",
+        title="(b) opening before growth",
+    )
+    ax.legend(frameon=False, fontsize=6.5)
+    ax = axes[2]
+    lengths = sorted(table.nominal_half_length_um.unique())  # a on the grid differs by up to dx / 2
+    hue = dict(zip(lengths, sns.color_palette("rocket", len(lengths))))
+    for measure, marker, name in (
+        ("rel_error", "o", "onset vs Griffith"),
+        ("area_rel_error", "s", "area vs Sneddon"),
+        ("energy_rel_error", "^", "energy vs G_c"),
+    ):
+        for length in lengths:
+            t = table[table.nominal_half_length_um == length].sort_values("dx_um")
+            ax.plot(
+                t.dx_um,
+                t[measure].abs(),
+                marker=marker,
+                color=hue[length],
+                lw=0.8,
+                ms=4,
+                label=f"{name}, a = {length:g} um",
+            )
+    ax.axhline(0.1, color="0.5", lw=0.6, ls="--")
+    ax.axhline(0.05, color="0.5", lw=0.6, ls=":")
+    ax.set(
+        xscale="log", yscale="log", xlabel="dx [um]", ylabel="|relative error|", title="(c) errors against resolution"
+    )
+    ax.legend(frameon=False, fontsize=5.5, loc="upper left", bbox_to_anchor=(1.0, 1.0))
+    return fig
