@@ -490,12 +490,14 @@ def planned_jobs(out: str) -> dict:
     return jobs
 
 
-def test_a_reference_value_reruns_only_the_table_that_shows_it(workdir, ci_config, tmp_path):
+def test_a_reference_value_reruns_only_the_table_and_figures_that_show_it(workdir, ci_config, tmp_path):
+    """homeostasis.target_pressure_mmHg: the table that compares the carried pressure with it, and the figures that
+    mark it (figure 3a of the mean model, figure 3)."""
     edited = edited_config(tmp_path, ci_config, "homeostasis", "target_pressure_mmHg", 110.0)
     run = snakemake(workdir, "-n", "everything", configfile=edited)
     out = run.stdout + run.stderr
     assert run.returncode == 0, out
-    assert planned_jobs(out) == {"homeostasis_target": 1, "everything": 1}, out[-3000:]
+    assert planned_jobs(out) == {"homeostasis_target": 1, "fig3a_mean": 1, "fig3": 1, "everything": 1}, out[-3000:]
 
 
 def test_a_measurement_setting_reruns_the_measurement_not_the_simulations(workdir, ci_config, tmp_path):

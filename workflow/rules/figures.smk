@@ -22,12 +22,15 @@ rule fig3a_mean:
     resources:
         runtime=5,
         mem_mb=1000,
+    params:
+        homeostatic_pressure=config["homeostasis"]["target_pressure_mmHg"],
     script:
         "../scripts/fig3a_mean.py"
 
 
 rule fig3b:
-    """Figure 3b: transmural radial and circumferential stress of the mean model at 103, 145, 200 mmHg."""
+    """Figure 3b: transmural radial and circumferential stress of the mean model at the calibration's transmural
+    pressures (103, 145, 200 mmHg)."""
     input:
         code=VIEWS["wall"],
         profiles=rules.transmural.output[0],
@@ -81,6 +84,8 @@ rule fig3:
     resources:
         runtime=5,
         mem_mb=1000,
+    params:
+        homeostatic_pressure=config["homeostasis"]["target_pressure_mmHg"],
     script:
         "../scripts/fig3.py"
 
@@ -145,6 +150,8 @@ rule fig4:
         probe_length=config["swelling"]["probe_length_um"],
         laws=LAWS,
         max_concentration=config["swelling"]["max_concentration_mEq_l"],
+        # the pressures of figure 3's transmural profiles: a pressure has one colour in figures 3 and 4
+        pressures=config["calibration"]["transmural_pressures_mmHg"],
     script:
         "../scripts/fig4.py"
 

@@ -21,5 +21,6 @@ with runlog.run("fig3", sm.log[0]):
         tables["bilayer"],
         {"passive": tables["passive_exact"], "active": tables["active_exact"]},
         tables["profiles"],
+        sm.params.homeostatic_pressure,
     )
     style.save(fig, [sm.output.pdf, sm.output.png], "Figure 3 (mean, passive and active models), sphgag")

@@ -13,5 +13,5 @@ with runlog.run("fig3a_mean", sm.log[0]):
     exact = pd.read_csv(sm.input.exact)
     style.finite_or_raise(states, ["outer_diameter_um", "pressure_mmHg", "mean_circ_stretch"], "fig3a_mean")
     err = states.loc[states.pressure_mmHg >= 10, "od_rel_error"].abs().max()
-    fig = wall.fig3a_mean(states, exact, err)
+    fig = wall.fig3a_mean(states, exact, err, sm.params.homeostatic_pressure)
     style.save(fig, [sm.output.pdf, sm.output.png], "Figure 3a (mean-behaviour model), sphgag")

@@ -9,25 +9,43 @@ import numpy as np
 import pandas as pd
 import seaborn as sns
 
-from .style import GAG_CONCENTRATION, LAYER_COLOURS, _style, law_blocks, palette, style_legend
+from .style import GAG_CONCENTRATION, LAYER_COLOURS, _style, distinct_colours, law_blocks, palette, style_legend
 
 SEEDED, CONVERTED = 1, 2  # history origin codes (sphgag.engine.history): a seeded GAG pool, tissue converted by damage
 MATERIAL_COLOURS = {"media": "0.84", "adventitia": "0.62", SEEDED: LAYER_COLOURS["GAG"], CONVERTED: "#2166ac"}
 DAMAGE_CMAP = matplotlib.colors.LinearSegmentedColormap.from_list("damage", ["#ffd300", "#f47b20", "#7f2704"])
 SIDE_COLOURS = {"interior": "#1b9e77", "exterior": "#7570b3"}
-CRITERION_DASHES = ("", (3.7, 1.6))  # the default onset criterion (solid), the other one (dashed)
-CRITERION_COLOURS = ("k", "#d95f02")
 PSEUDO_TIME = "pseudo-time (concentration levels + damage passes)"
 
 
+def criterion_dashes(criteria) -> dict:
+    """A line style per onset criterion, in the order of ``criteria``: the default (the first) solid, the second
+    dashed, then dotted, dash-dot, and dashes with ever more dots between them (distinct for any number)."""
+    patterns = ["", (3.7, 1.6), (1.0, 1.65), (5.0, 1.5, 1.0, 1.5)]
+    patterns += [(5.0, 1.5) + (1.0, 1.5) * k for k in range(2, len(criteria))]
+    return dict(zip(criteria, patterns))
+
+
+def criterion_colours(criteria) -> dict:
+    """A colour per onset criterion, in the order of ``criteria``: the default (the first) black, the second orange,
+    then Dark2's other colours and evenly spaced hues (distinct for any number)."""
+    return dict(zip(criteria, distinct_colours(len(criteria), lead=("k", "#d95f02"))))
+
+
+def criteria_width(criteria) -> float:
+    """The width [in] of a figure with a column of snapshots per onset criterion: 11 in for up to two criteria, as
+    wide again per column beyond them (the panels' titles stay legible)."""
+    return 11.0 * max(1.0, len(criteria) / 2)
+
+
 def criterion_lines(ax, data, criteria, **spec):
-    """One line per run of ``data`` (seaborn's ``spec``: x, y, hue, palette), styled by its onset criterion: the
-    default solid, the other dashed."""
+    """One line per run of ``data`` (seaborn's ``spec``: x, y, hue, palette), styled by its onset criterion
+    (:func:`criterion_dashes`: the default solid, the second dashed, ...)."""
     sns.lineplot(
         data,
         style="criterion",
         style_order=list(criteria),
-        dashes=dict(zip(criteria, CRITERION_DASHES)),
+        dashes=criterion_dashes(criteria),
         estimator=None,
         sort=False,
         lw=1.0,
@@ -319,7 +337,7 @@ def fig5(
     sigmas = sorted(runs.sigma_cr_kPa.unique())
     colours = dict(zip(sigmas, plt.cm.Dark2.colors))
     rows = 1.3 * max(len(snapshot_indices(snap, n_snapshots)) for snap in snapshots.values())
-    fig, blocks = law_blocks(laws, [0.3 + rows + 3.0] * len(laws))
+    fig, blocks = law_blocks(laws, [0.3 + rows + 3.0] * len(laws), criteria_width(criteria))
     for block, law in zip(blocks, laws):
         own, notes_of = of_law(runs, law), of_law(summary, law)
         lower = criterion_snapshots(
@@ -407,7 +425,7 @@ def fig7(
     stress and (c) the converted particles against pseudo-time."""
     _style()
     rows = 1.15 * max(len(snapshot_indices(snap, n_snapshots)) for snap in snapshots.values())
-    fig, blocks = law_blocks(laws, [0.3 + rows + 3.0] * len(laws))
+    fig, blocks = law_blocks(laws, [0.3 + rows + 3.0] * len(laws), criteria_width(criteria))
     for block, law in zip(blocks, laws):
         lower = criterion_snapshots(
             block, {c: snapshots[law, c] for c in criteria}, criteria, n_snapshots, ": ", media_outer_um, rows
@@ -422,10 +440,10 @@ def fig7(
             runs,
             "criterion",
             notes,
-            dict(zip(criteria, CRITERION_COLOURS)),
+            criterion_colours(criteria),
             {sigma: "0.45"},
             f"(b) {case}: tip radial stress, sigma_cr = {sigma:g} kPa",
-            dict(zip(criteria, CRITERION_DASHES)),
+            criterion_dashes(criteria),
         )
         no_growth_note(ax, runs)
         converted_panel(block.add_subplot(bottom[1]), g, sm, case, criteria, f"(c) {case}: converted particles")

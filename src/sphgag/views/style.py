@@ -15,7 +15,6 @@ import seaborn as sns  # noqa: E402
 
 from ..records.provenance import figure_metadata  # noqa: E402
 
-PRESSURE_COLOURS = {103.0: "#1b9e77", 145.0: "#d95f02", 200.0: "#7570b3"}
 LAYER_COLOURS = {"media": "#3b6fb6", "adventitia": "#2e9e5b", "GAG": "#d1352b"}
 GAG_CONCENTRATION = "GAG concentration (mEq/l)"
 LAST_CONVERGED = "last converged state (run stopped)"
@@ -35,8 +34,25 @@ def _style():
     )
 
 
-def pressure_colour(p):
-    return PRESSURE_COLOURS.get(round(float(p), 6), None)
+def distinct_colours(n: int, lead=()) -> list:
+    """``n`` distinct colours: those of ``lead`` first, then the colours of Dark2 that ``lead`` does not have (hex, in
+    Dark2's order), then evenly spaced hues (husl) for any beyond."""
+    have = {matplotlib.colors.to_hex(c) for c in lead}
+    dark2 = [c for c in map(matplotlib.colors.to_hex, plt.cm.Dark2.colors) if c not in have]
+    colours = (list(lead) + dark2)[:n]
+    return colours + sns.color_palette("husl", n - len(colours)).as_hex()
+
+
+def pressure_colours(pressures) -> dict:
+    """A colour per distinct pressure [mmHg] of ``pressures`` (keys rounded to 1e-6 mmHg): Dark2 over the sorted
+    pressures, so that a figure of the pressures 103, 145 and 200 mmHg draws them green, orange and purple."""
+    levels = sorted({round(float(p), 6) for p in pressures})
+    return dict(zip(levels, distinct_colours(len(levels))))
+
+
+def pressure_colour(colours: dict, p):
+    """The colour of pressure ``p`` [mmHg] in ``colours`` (:func:`pressure_colours`)."""
+    return colours[round(float(p), 6)]
 
 
 def palette(levels, colours: dict, label="{:g}".format) -> dict:
@@ -70,6 +86,7 @@ LAW_SHORT = {"prescribed": "prescribed Pi(c), paper", "conserved": "conserved ch
 
 
 def law_title(law: str) -> str:
+    """The heading of a charge law: its title, or for a law without one (a new law) "<law> charge law"."""
     return LAW_TITLES.get(law, f"{law} charge law")
 
 

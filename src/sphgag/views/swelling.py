@@ -13,10 +13,10 @@ from .style import (
     LAST_CONVERGED,
     LAYER_COLOURS,
     PAPER_POOL,
-    PRESSURE_COLOURS,
     _style,
     long_measures,
-    palette,
+    pressure_colour,
+    pressure_colours,
     variant_short,
     variant_title,
     variants,
@@ -110,17 +110,29 @@ def swelling_lines(data: pd.DataFrame, colours: dict, max_concentration: float, 
         ax.axhline(0.0, color="0.7", lw=0.6)
 
 
-def fig4(tips: pd.DataFrame, particles: pd.DataFrame, cases: dict, probe_length: float, laws, max_concentration):
+def fig4(
+    tips: pd.DataFrame,
+    particles: pd.DataFrame,
+    cases: dict,
+    probe_length: float,
+    laws,
+    max_concentration,
+    pressures=(),
+):
     """Figure 4: (a) the pools; then for each charge law (``laws``, column ``charge_law``) and pool model (column
     ``pool_model``, the paper's first) the passive and active tip radial and top hoop stress vs concentration
     (seaborn facets of tip_stress.csv: a row per law, pool model, model and stress, a column per pool, a colour per
-    pressure). A run's line ends at its last converged state (a cross if that is below ``max_concentration``)."""
+    pressure). A run's line ends at its last converged state (a cross if that is below ``max_concentration``). The
+    colours are those of the pressures of the table and ``pressures`` together (figure 3's, so that a pressure has
+    one colour in both figures)."""
     _style()
     names = sorted(cases, key=lambda k: cases[k]["angular_extent_deg"])
     tips = tips if "pool_model" in tips else tips.assign(pool_model=PAPER_POOL)
     pairs = variants(tips, laws)
     models = [m for m in ("passive", "active") if m in set(tips.model)]
-    pressures = palette(sorted(tips.pressure_mmHg.unique()), PRESSURE_COLOURS, "{:g} mmHg".format)
+    levels = sorted(tips.pressure_mmHg.unique())
+    colours = pressure_colours([*pressures, *levels])
+    hues = {f"{p:g} mmHg": pressure_colour(colours, p) for p in levels}
     long = long_measures(
         tips.assign(pressure=tips.pressure_mmHg.map("{:g} mmHg".format)),
         {c: POOL_MEASURES[c] for c in ("tip_radial_stress_kPa", "tip_peak_radial_stress_kPa", "top_circ_stress_kPa")},
@@ -149,7 +161,7 @@ def fig4(tips: pd.DataFrame, particles: pd.DataFrame, cases: dict, probe_length:
         height=2.1,
         aspect=3.0 / 2.1,
     )
-    grid.map_dataframe(swelling_lines, colours=pressures, max_concentration=max_concentration)
+    grid.map_dataframe(swelling_lines, colours=hues, max_concentration=max_concentration)
     grid.add_legend()
     grid.set_titles("")
     grid.set_axis_labels(GAG_CONCENTRATION, "")

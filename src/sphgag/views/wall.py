@@ -8,9 +8,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 
-from .style import PRESSURE_COLOURS, _style, pressure_colour
-
-HOMEOSTATIC_MMHG = 103.0
+from .style import _style, pressure_colour, pressure_colours
 
 
 def pressure_diameter_panels(
@@ -32,23 +30,24 @@ def pressure_diameter_panels(
     )
 
 
-def mark_homeostasis(ax_pd, ax_ss, exact: pd.DataFrame):
-    """Horizontal and vertical lines at the homeostatic pressure (figure 3a)."""
-    row = exact.iloc[(exact.pressure_mmHg - HOMEOSTATIC_MMHG).abs().argmin()]
+def mark_homeostasis(ax_pd, ax_ss, exact: pd.DataFrame, homeostatic_mmHg: float):
+    """Horizontal and vertical lines at the homeostatic pressure ``homeostatic_mmHg`` (figure 3a)."""
+    row = exact.iloc[(exact.pressure_mmHg - homeostatic_mmHg).abs().argmin()]
     for ax, x, y in (
-        (ax_pd, row.outer_diameter_um, HOMEOSTATIC_MMHG),
+        (ax_pd, row.outer_diameter_um, homeostatic_mmHg),
         (ax_ss, row.mean_circ_stretch, row.mean_circ_stress_kPa),
     ):
         ax.axhline(y, color="0.6", lw=0.6, ls=":")
         ax.axvline(x, color="0.6", lw=0.6, ls=":")
 
 
-def fig3a_mean(states: pd.DataFrame, exact: pd.DataFrame, max_error: float):
-    """Figure 3a for the mean-behaviour model: SPH points over the exact curves."""
+def fig3a_mean(states: pd.DataFrame, exact: pd.DataFrame, max_error: float, homeostatic_mmHg: float):
+    """Figure 3a for the mean-behaviour model: SPH points over the exact curves, lines at the homeostatic pressure
+    ``homeostatic_mmHg`` (configuration: homeostasis.target_pressure_mmHg)."""
     _style()
     fig, (ax_pd, ax_ss) = plt.subplots(2, 1, figsize=(3.4, 5.6))
     pressure_diameter_panels(ax_pd, ax_ss, states, exact)
-    mark_homeostasis(ax_pd, ax_ss, exact)
+    mark_homeostasis(ax_pd, ax_ss, exact, homeostatic_mmHg)
     ax_pd.set(xlabel="outer diameter (um)", ylabel="pressure (mmHg)", title="mean-behaviour model")
     ax_ss.set(xlabel="mean circumferential stretch (eq. 2.17)", ylabel="mean circumferential stress (kPa)")
     ax_pd.legend(loc="upper left", frameon=False)
@@ -65,11 +64,12 @@ def fig3a_mean(states: pd.DataFrame, exact: pd.DataFrame, max_error: float):
     return fig
 
 
-def transmural_panels(ax_r, ax_t, profiles: pd.DataFrame, model: str, border_um=None):
-    """Radial (top) and circumferential (bottom) Cauchy stress across the wall, one line per pressure."""
+def transmural_panels(ax_r, ax_t, profiles: pd.DataFrame, model: str, colours: dict, border_um=None):
+    """Radial (top) and circumferential (bottom) Cauchy stress across the wall, one line per pressure (``colours``:
+    :func:`~sphgag.views.style.pressure_colours`)."""
     data = profiles[profiles.model == model]
     for P, grp in data.groupby("pressure_mmHg"):
-        c = pressure_colour(P)
+        c = pressure_colour(colours, P)
         ex = grp[grp.source == "exact"]
         sph = grp[grp.source == "sph"]
         if len(ex):
@@ -88,7 +88,7 @@ def fig3b(profiles: pd.DataFrame):
     """Figure 3b: transmural stresses of the mean-behaviour model with the exact thick-wall profiles."""
     _style()
     fig, (ax_r, ax_t) = plt.subplots(2, 1, figsize=(3.4, 5.6), sharex=True)
-    transmural_panels(ax_r, ax_t, profiles, "mean")
+    transmural_panels(ax_r, ax_t, profiles, "mean", pressure_colours(profiles.pressure_mmHg))
     ax_r.set_title("mean-behaviour model")
     handles, labels = ax_r.get_legend_handles_labels()
     handles.append(plt.Line2D([], [], color="k", lw=1.1))
@@ -125,14 +125,15 @@ def normalised_position(radius, profile):
     return (radius - r.min()) / (r.max() - r.min())
 
 
-def bilayer_transmural_panels(ax_r, ax_t, profiles: pd.DataFrame):
-    """Figure 3c: passive (solid) and active (dashed) transmural stresses against the normalised wall position."""
+def bilayer_transmural_panels(ax_r, ax_t, profiles: pd.DataFrame, colours: dict):
+    """Figure 3c: passive (solid) and active (dashed) transmural stresses against the normalised wall position, a
+    colour per pressure (``colours``: :func:`~sphgag.views.style.pressure_colours`)."""
     borders = []
     for model in ("passive", "active"):
         st = MODEL_STYLE[model]
         data = profiles[profiles.model == model]
         for P, grp in data.groupby("pressure_mmHg"):
-            c = pressure_colour(P)
+            c = pressure_colour(colours, P)
             ex, sph = grp[grp.source == "exact"], grp[grp.source == "sph"]
             xe, xs = normalised_position(ex.radius_um, ex), normalised_position(sph.radius_um, ex)
             ax_r.plot(xe, ex.radial_stress_kPa, ls=st["ls"], color=c, lw=1.0)
@@ -149,15 +150,17 @@ def bilayer_transmural_panels(ax_r, ax_t, profiles: pd.DataFrame):
     ax_t.set(xlabel="normalised wall position (r - r_in)/(r_out - r_in)", ylabel="circumferential stress (kPa)")
 
 
-def fig3(mean_states, mean_exact, bilayer, bilayer_exact: dict, profiles: pd.DataFrame):
-    """Figure 3, complete: (a) pressure-diameter and stress-stretch of the mean, passive and active models;
-    (b) transmural stresses of the mean model; (c) of the bi-layered passive and active models."""
+def fig3(mean_states, mean_exact, bilayer, bilayer_exact: dict, profiles: pd.DataFrame, homeostatic_mmHg: float):
+    """Figure 3, complete: (a) pressure-diameter and stress-stretch of the mean, passive and active models, lines at
+    the homeostatic pressure ``homeostatic_mmHg``; (b) transmural stresses of the mean model; (c) of the bi-layered
+    passive and active models (a colour per pressure of ``profiles``)."""
     _style()
+    colours = pressure_colours(profiles.pressure_mmHg)
     fig, axes = plt.subplots(2, 4, figsize=(13.5, 6.2))
     pressure_diameter_panels(axes[0, 0], axes[1, 0], mean_states, mean_exact)
-    mark_homeostasis(axes[0, 0], axes[1, 0], mean_exact)
+    mark_homeostasis(axes[0, 0], axes[1, 0], mean_exact, homeostatic_mmHg)
     bilayer_pressure_diameter_panels(axes[0, 1], axes[1, 1], bilayer, bilayer_exact)
-    mark_homeostasis(axes[0, 1], axes[1, 1], bilayer_exact["passive"])
+    mark_homeostasis(axes[0, 1], axes[1, 1], bilayer_exact["passive"], homeostatic_mmHg)
     for ax in axes[0, :2]:
         ax.set(xlabel="outer diameter (um)", ylabel="pressure (mmHg)")
         ax.legend(frameon=False, loc="upper left", fontsize=7)
@@ -165,11 +168,11 @@ def fig3(mean_states, mean_exact, bilayer, bilayer_exact: dict, profiles: pd.Dat
         ax.set(xlabel="mean circumferential stretch (eq. 2.17)", ylabel="mean circumferential stress (kPa)")
     axes[0, 0].set_title("(a) mean-behaviour model")
     axes[0, 1].set_title("(a) bi-layered model")
-    transmural_panels(axes[0, 2], axes[1, 2], profiles, "mean")
+    transmural_panels(axes[0, 2], axes[1, 2], profiles, "mean", colours)
     axes[0, 2].set_title("(b) mean-behaviour model")
-    bilayer_transmural_panels(axes[0, 3], axes[1, 3], profiles)
+    bilayer_transmural_panels(axes[0, 3], axes[1, 3], profiles, colours)
     axes[0, 3].set_title("(c) bi-layered model")
-    handles = [plt.Line2D([], [], color=pressure_colour(P), lw=1.2, label=f"{P:g} mmHg") for P in PRESSURE_COLOURS]
+    handles = [plt.Line2D([], [], color=c, lw=1.2, label=f"{P:g} mmHg") for P, c in colours.items()]
     handles += [
         plt.Line2D([], [], color="k", marker="o", mfc="none", ls="-", label="passive / mean: SPH, exact"),
         plt.Line2D([], [], color="k", marker="^", mfc="none", ls="--", label="active: SPH, exact"),
