@@ -3,6 +3,7 @@
 import dataclasses
 
 import numpy as np
+import pandas as pd
 import pytest
 
 from sphgag.engine import geometry, measure
@@ -114,3 +115,471 @@ def test_an_animation_shows_every_frames_stresses_and_partial_damage(ci_config, 
         assert saturated(rgb) > 200, k  # the quiet frame's stresses are visible too
     assert np.sum(np.all(np.abs(pixels[1] - orange) < 12, axis=1)) > 50  # partial damage, in its colour
     assert np.sum(np.all(np.abs(pixels[0] - orange) < 12, axis=1)) < 5  # and not where there is none
+
+
+# --- the figures (sphgag.views.<family>), each drawn from small tables made here ------------------------------------
+
+WALL_PRESSURES = (103.0, 145.0, 200.0)
+DARK2 = ("#1b9e77", "#d95f02", "#7570b3")  # what figures 3 and 4 have always drawn 103, 145 and 200 mmHg in
+SWELLING_CASES = {  # config/ci.yaml's pools
+    "I": {"centre_radius_um": 663.0, "centre_angle_deg": 51.5, "radial_extent_um": 15.0, "angular_extent_deg": 3.0},
+    "IV": {"centre_radius_um": 663.0, "centre_angle_deg": 51.5, "radial_extent_um": 15.0, "angular_extent_deg": 16.0},
+}
+
+
+@pytest.fixture(autouse=True)
+def _close_figures():
+    yield
+    import matplotlib.pyplot as plt
+
+    plt.close("all")
+
+
+def _titles(fig) -> list[str]:
+    """Every axes title of ``fig`` (centre and left)."""
+    return [t for ax in fig.axes for t in (ax.get_title(), ax.get_title(loc="left")) if t]
+
+
+def _concat(frames) -> pd.DataFrame:
+    return pd.concat(frames, ignore_index=True)
+
+
+def _hex(colour) -> str:
+    import matplotlib.colors
+
+    return matplotlib.colors.to_hex(colour)
+
+
+def _particles(dx=8.0, r0=600.0, r1=720.0, border=680.0) -> pd.DataFrame:
+    """A quarter annulus of particles as rule homeostasis writes them (particles.csv)."""
+    r, th = np.meshgrid(np.arange(r0 + dx / 2, r1, dx), np.arange(0.0, np.pi / 2, dx / 660.0), indexing="ij")
+    r, th = r.ravel(), th.ravel()
+    return pd.DataFrame(
+        dict(
+            x_um=r * np.cos(th),
+            y_um=r * np.sin(th),
+            radius_um=r,
+            theta_rad=th,
+            volume_um2=dx * dx,
+            layer=np.where(r < border, "media", "adventitia"),
+        )
+    )
+
+
+def test_figure_1_draws_the_particles_the_kernel_and_the_composition():
+    from sphgag.views import layout
+
+    particles = _particles()
+    fractions = {
+        "media": {"elastin": 0.3, "smc": 0.6, "collagen": 0.1},
+        "adventitia": {"elastin": 0.1, "collagen": 0.9},
+    }
+    fig = layout.fig1(particles, fractions, 2.0, 8.0)
+    assert len(fig.axes) == 4
+    titles = _titles(fig)
+    assert titles[0] == f"(a) {len(particles)} particles, dx = 8 um"
+    assert titles[1:] == ["(a) 6 deg sector\n(symbol area ~ volume)", "(b) spiky kernel, h = 2 dx", "(c) composition"]
+    assert fig.axes[0].get_legend_handles_labels()[1] == [
+        f"{layer} ({n})" for layer, n in particles.layer.value_counts().sort_index().items()
+    ]
+
+
+def _pressure_curve(scale=1.0) -> pd.DataFrame:
+    """A pressure-diameter curve with its mean circumferential stretch and stress (calibrate_mean's columns)."""
+    p = np.arange(0.0, 201.0, 10.0)
+    stretch = 1.0 + scale * 0.4 * p / (p + 60.0)
+    return pd.DataFrame(
+        dict(
+            pressure_mmHg=p,
+            outer_diameter_um=700.0 * stretch,
+            mean_circ_stretch=stretch,
+            mean_circ_stress_kPa=1.5 * p * stretch,
+        )
+    )
+
+
+def _transmural(pressures=WALL_PRESSURES) -> pd.DataFrame:
+    """Transmural profiles (transmural.csv): exact and SPH, of the mean, passive and active models."""
+    rows = []
+    for model in ("mean", "passive", "active"):
+        for p in pressures:
+            for source, n in (("exact", 30), ("sph", 8)):
+                r = np.linspace(640.0, 720.0, n)
+                rows.append(
+                    pd.DataFrame(
+                        dict(
+                            model=model,
+                            pressure_mmHg=p,
+                            source=source,
+                            radius_um=r,
+                            radial_stress_kPa=-p * 0.133 * (720.0 - r) / 80.0,
+                            circ_stress_kPa=p * (1.0 + (720.0 - r) / 80.0),
+                            layer=np.where(r < 690.0, "media", "adventitia"),
+                        )
+                    )
+                )
+    return pd.concat(rows, ignore_index=True)
+
+
+def _lines_at(ax, y) -> int:
+    """How many horizontal lines of ``ax`` lie at ``y``."""
+    return sum(1 for line in ax.get_lines() if len(line.get_ydata()) == 2 and np.allclose(line.get_ydata(), [y, y]))
+
+
+def test_figure_3_draws_the_wall_models_in_the_colours_of_their_pressures():
+    from sphgag.views import wall
+
+    exact = _pressure_curve()
+    states = exact.iloc[::2].reset_index(drop=True)
+    bilayer_exact = {"passive": _pressure_curve(0.8), "active": _pressure_curve(0.6)}
+    bilayer = _concat(
+        [bilayer_exact[m].iloc[::2].assign(model=m) for m in ("passive", "active")],
+    )
+    fig = wall.fig3(states, exact, bilayer, bilayer_exact, _transmural(), 110.0)
+    assert len(fig.axes) == 8
+    assert _titles(fig) == [
+        "(a) mean-behaviour model",
+        "(a) bi-layered model",
+        "(b) mean-behaviour model",
+        "(c) bi-layered model",
+    ]
+    legend = fig.axes[7].get_legend()
+    labels = [t.get_text() for t in legend.texts]
+    assert labels[:3] == ["103 mmHg", "145 mmHg", "200 mmHg"]
+    assert [_hex(h.get_color()) for h in legend.legend_handles[:3]] == list(DARK2)
+    # the homeostatic pressure is the argument's (homeostasis.target_pressure_mmHg), on both pressure-diameter panels
+    assert _lines_at(fig.axes[0], 110.0) == _lines_at(fig.axes[1], 110.0) == 1
+
+    fig = wall.fig3a_mean(states, exact, 0.01, 120.0)
+    assert len(fig.axes) == 2 and fig.axes[0].get_title() == "mean-behaviour model"
+    assert _lines_at(fig.axes[0], 120.0) == 1 and _lines_at(fig.axes[0], 103.0) == 0
+
+    fig = wall.fig3b(_transmural((90.0, 103.0)))
+    assert len(fig.axes) == 2 and fig.axes[0].get_title() == "mean-behaviour model"
+    legend = fig.axes[0].get_legend()
+    assert [t.get_text() for t in legend.texts] == ["90 mmHg", "103 mmHg", "exact thick wall", "SPH (ring means)"]
+    assert [_hex(h.get_color()) for h in legend.legend_handles[:2]] == list(DARK2[:2])  # any pressures, a colour each
+
+
+def _tips(variants, models=("passive",), cases=tuple(SWELLING_CASES), pressures=(103.0, 200.0)) -> pd.DataFrame:
+    """Figure 4's table (tip_stress.csv) for ``variants`` (charge law, pool model), ``models``, ``cases`` and
+    ``pressures``: the intact wall, and the converted pool at four concentrations."""
+    concentrations = (0.0, 50.0, 100.0, 150.0)
+    rows = []
+    for k, (law, pool) in enumerate(variants):
+        for model in models:
+            for case in cases:
+                for p in pressures:
+                    for stage, cs in (("intact", concentrations[:1]), ("converted", concentrations)):
+                        for c in cs:
+                            tip = (k + 1) * (c / 10.0 - 5.0) + p / 100.0
+                            rows.append(
+                                dict(
+                                    charge_law=law,
+                                    pool_model=pool,
+                                    model=model,
+                                    case=case,
+                                    pressure_mmHg=p,
+                                    stage=stage,
+                                    concentration_mEq_l=c,
+                                    tip_radial_stress_kPa=tip,
+                                    tip_peak_radial_stress_kPa=1.5 * tip,
+                                    top_circ_stress_kPa=200.0 + p + c,
+                                    pool_volume_change=c / 300.0,
+                                )
+                            )
+    return pd.DataFrame(rows)
+
+
+def _fig4(tips, laws):
+    from sphgag.views import swelling
+
+    cases = {name: SWELLING_CASES[name] for name in dict.fromkeys(tips.case)}
+    return swelling.fig4(tips, _particles(), cases, 10.0, laws, 150.0, WALL_PRESSURES)
+
+
+def test_figure_4_draws_a_block_per_law_and_pool_model_in_figure_3s_colours():
+    variants = [("prescribed", "particles"), ("prescribed", "cavity"), ("conserved", "particles")]
+    fig = _fig4(_tips(variants), ["prescribed", "conserved"])
+    assert len(fig.axes) == (1 + 2 * len(variants)) * len(SWELLING_CASES)  # (a), then tip and top per block
+    titles = _titles(fig)
+    assert titles[:2] == ["(a) case I: 3 deg", "(a) case IV: 16 deg"]
+    assert [t for t in titles if t[0] != "("] == [  # the headings of the (law, pool model) blocks
+        "prescribed charge law: Pi(c), eqs. 2.25-2.27 as printed (the paper's model: compare with the paper)",
+        "prescribed Pi(c), paper; the pool as a pressurised cavity (our deviation: its lining carries Pi, its "
+        "contents swell uniformly)",
+        "conserved charge law: Pi at the current concentration c/J (mixture theory; a deviation)",
+    ]
+    assert fig.axes[2].get_ylabel() == "(b) passive, prescribed Pi(c), paper\ntip radial stress (kPa)"
+    legend = fig.legends[0]
+    colours = {t.get_text(): _hex(h.get_color()) for t, h in zip(legend.texts, legend.legend_handles)}
+    assert colours["103 mmHg"] == DARK2[0] and colours["200 mmHg"] == DARK2[2]  # 200 mmHg as in figure 3
+
+
+def test_figure_4_and_the_resolution_study_draw_a_third_charge_law():
+    from sphgag.views import style, swelling
+
+    laws = ["prescribed", "conserved", "ideal"]
+    fig = _fig4(_tips([(law, "particles") for law in laws], cases=("IV",)), laws)
+    assert len(fig.axes) == 1 + 2 * len(laws)  # (a), then tip and top per law
+    assert [t for t in _titles(fig) if t[0] != "("][-1] == "ideal charge law" == style.law_title("ideal")
+    assert fig.axes[-1].get_ylabel() == "(d) passive, ideal\ntop hoop stress (kPa)"
+
+    table = _concat(
+        [
+            _tips([(law, "particles")], cases=("IV",), pressures=(103.0,))
+            .query("stage == 'converted'")
+            .assign(dx_um=dx)
+            for law in laws
+            for dx in (8.0, 6.0)
+        ]
+    )
+    fig = swelling.swelling_convergence(table, laws)
+    assert len(fig.axes) == 3 * len(laws)  # a row per quantity (tip, top, pool volume), a column per pool and law
+    assert "case IV\nideal" in _titles(fig)
+
+
+def test_the_verification_figures_draw_their_panels():
+    from sphgag.views import verification
+
+    b, pressure = 20.0, 10.0
+    table = pd.DataFrame(
+        [
+            dict(
+                aspect_ratio=ratio,
+                b_over_dx=n,
+                dx_um=b / n,
+                semi_axis_b_um=b,
+                pressure_kPa=pressure,
+                tip_stress_kPa=pressure * (2 * ratio - 1) * (1 - 0.5 / n),
+                reference_kPa=pressure * (2 * ratio - 1),
+                rel_error=-0.5 / n,
+                first_particle_rel_error=-1.0 / n,
+                field_rms_error_kPa=pressure / n**2,
+                traction_jump_kPa=pressure / n,
+            )
+            for ratio in (1.0, 2.0, 3.0)
+            for n in (4.0, 8.0)
+        ]
+    )
+    s, r = np.linspace(0.0, 2.0 * b, 10), np.linspace(0.2 * b, 2.0 * b, 10)
+    profiles = _concat(
+        [
+            pd.DataFrame(
+                dict(
+                    profile="rings",
+                    aspect_ratio=1.0,
+                    b_over_dx=n,
+                    radius_um=r,
+                    radial_sph_kPa=-pressure,
+                    circ_sph_kPa=pressure,
+                    radial_exact_kPa=-pressure,
+                    circ_exact_kPa=pressure,
+                )
+            )
+            for n in (4.0, 8.0)
+        ]  # fmt: skip
+        + [
+            pd.DataFrame(
+                dict(
+                    profile="axis",
+                    aspect_ratio=ratio,
+                    b_over_dx=n,
+                    s_um=s,
+                    hoop_exact_kPa=pressure * ratio,
+                    hoop_sph_kPa=pressure * ratio * 0.9,
+                )
+            )  # fmt: skip
+            for ratio in (1.0, 2.0, 3.0)
+            for n in (4.0, 8.0)
+        ]
+    )
+    fig = verification.verification_pool(table, profiles)
+    assert len(fig.axes) == 4
+    assert _titles(fig) == [
+        "(a) circular inclusion: ring means",
+        "(b) ahead of the tip: SPH (o), Inglis (-)",
+        "(c) tip stress and first particle",
+        "(d) field rms error, traction jump",
+    ]
+
+    circular = pd.DataFrame(
+        [
+            dict(pool_model=m, target_volume_ratio=j, dx_um=dx, volume_error=0.01 * dx, lining_error=0.02 * dx)
+            for m in ("particles", "cavity")
+            for j in (1.5, 2.0)
+            for dx in (4.0, 3.0, 2.0)
+        ]
+    )
+    circular.loc[circular.index[-1], ["volume_error", "lining_error"]] = np.nan  # a path that ended
+    fig = verification.verification_circular_pool(circular)
+    assert len(fig.axes) == 2
+    assert _titles(fig) == ["(a) pool volume ratio", "(b) radius of the lining"]
+    assert any("no equilibrium" in t.get_text() for t in fig.texts)
+
+    crack = pd.DataFrame(
+        [
+            dict(
+                dx_um=dx,
+                nominal_half_length_um=a,
+                half_length_um=a + dx / 4,
+                critical_pressure_kPa=100.0 / np.sqrt(a),
+                pressure_kPa=5.0,
+                opening_area_um2=2 * np.pi * a**2 * 5.0 / 300.0,
+                rel_error=0.1 * dx / a,
+                area_rel_error=0.05 * dx / a,
+                energy_rel_error=0.2 * dx / a,
+            )
+            for dx in (4.0, 2.0)
+            for a in (40.0, 80.0)
+        ]
+    )
+    fig = verification.verification_crack(crack, 300.0, 0.01, 50.0)
+    assert len(fig.axes) == 3
+    assert _titles(fig) == ["(a) onset of growth", "(b) opening before growth", "(c) errors against resolution"]
+
+
+THREE_CRITERIA = ["averaged", "particle", "strain"]  # a third onset criterion, not (yet) in the registry
+
+
+def test_the_criterion_styles_keep_the_first_two_and_tell_any_number_apart():
+    from sphgag.views import delamination as views
+
+    assert views.criterion_dashes(["averaged", "particle"]) == {"averaged": "", "particle": (3.7, 1.6)}
+    assert views.criterion_colours(["averaged", "particle"]) == {"averaged": "k", "particle": "#d95f02"}
+    names = [f"c{k}" for k in range(12)]
+    dashes, colours = views.criterion_dashes(names), views.criterion_colours(names)
+    assert list(dashes) == list(colours) == names
+    assert len(set(dashes.values())) == len(set(map(_hex, colours.values()))) == len(names)
+
+
+def _snapshots(steps=3, centre_deg=50.0, dx=6.0):
+    """A run's ``*_snapshots.npz`` as :func:`sphgag.views.delamination.read_snapshots` returns it: a pool of seeded
+    GAG (origin 1) in a patch of wall, tissue beside it damaged and then converted (origin 2) as the run goes on."""
+    r, th = np.meshgrid(np.arange(640.0, 712.0, dx), np.deg2rad(np.arange(40.0, 60.0, np.rad2deg(dx / 663.0))))
+    r, th = r.ravel(), th.ravel()
+    X = np.column_stack([r * np.cos(th), r * np.sin(th)])
+    off = np.abs(np.rad2deg(th) - centre_deg)
+    ring = np.abs(r - 663.0) < 8.0
+    snap = dict(
+        X=X,
+        theta=th,
+        volume=np.full(len(r), dx * dx),
+        steps=np.arange(steps),
+        concentrations=np.linspace(50.0, 150.0, steps),
+    )
+    for k in range(steps):
+        origin = np.where(ring & (off < 1.0), 1, np.where(ring & (off < 1.0 + 0.6 * k), 2, 0))
+        snap[f"s{k}_x"] = X * (1.0 + 0.002 * k)
+        snap[f"s{k}_history_origin"] = origin
+        snap[f"s{k}_history_D"] = np.where((origin == 0) & ring & (off < 2.0 + 0.6 * k), 0.5, 0.0)
+    return snap
+
+
+def _growth(laws, cases, sigmas, criteria, steps=6):
+    """Figures 5-7's tables: growth.csv and summary.csv of every run."""
+    growth, summary = [], []
+    for law in laws:
+        for case in cases:
+            for sigma in sigmas:
+                for j, criterion in enumerate(criteria):
+                    converted = np.maximum(np.arange(steps) - 2 - j, 0)
+                    growth.append(
+                        pd.DataFrame(
+                            dict(
+                                charge_law=law,
+                                case=case,
+                                sigma_cr_kPa=sigma,
+                                criterion=criterion,
+                                step=np.arange(steps),
+                                pseudo_time=np.arange(steps, dtype=float),
+                                concentration_mEq_l=np.minimum(50.0 * np.arange(1, steps + 1), 150.0),
+                                delaminated_length_um=6.0 * converted,
+                                tip_radial_stress_kPa=sigma * (0.5 + 0.3 * (np.arange(steps) % 3)),
+                                converted_particles=converted,
+                                converted_interior=converted // 2,
+                                converted_exterior=converted - converted // 2,
+                                snap=np.arange(steps) == steps - 1,
+                            )
+                        )
+                    )
+                    summary.append(
+                        dict(
+                            charge_law=law,
+                            case=case,
+                            sigma_cr_kPa=sigma,
+                            criterion=criterion,
+                            onset_concentration_mEq_l=100.0,
+                            final_length_um=6.0 * converted[-1],
+                            merged=j == 0,
+                            merge_step=4.0,
+                            snaps=1,
+                            stop="arrested",
+                        )
+                    )
+    return _concat(growth), pd.DataFrame(summary)
+
+
+@pytest.mark.filterwarnings("error:constrained_layout not applied")  # columns wide enough for their titles
+def test_figures_5_to_7_draw_three_onset_criteria():
+    from sphgag.views import delamination as views
+
+    laws, criteria = ["prescribed"], THREE_CRITERIA
+    growth, summary = _growth(laws, ["single", "low", "high", "offset"], [40.0, 60.0], criteria)
+    snap = _snapshots()
+
+    fig = views.fig5(growth, summary, {(law, c): snap for law in laws for c in criteria}, "single", 40.0, criteria,
+                     laws, 680.0)  # fmt: skip
+    titles = _titles(fig)
+    assert [f"(b) {c} onset measure, single" in titles for c in criteria] == [True] * 3
+    assert "(c) growth, single" in titles
+    (growth_ax,) = [ax for ax in fig.axes if ax.get_title() == "(c) growth, single"]
+    assert set(criteria) <= set(growth_ax.get_legend_handles_labels()[1])  # a line style per criterion
+
+    fig = views.fig6(growth, summary, {(law, case, c): snap for law in laws for case in ("low", "high")
+                                       for c in criteria}, ["low", "high"], criteria, laws, 680.0)  # fmt: skip
+    titles = _titles(fig)
+    assert "(c) low: converted particles" in titles and "(c) high: converted particles" in titles
+    assert sum(t.startswith("(b) high, strain: ") for t in titles) == 1  # the last state of the third criterion
+
+    fig = views.fig7(growth, summary, {(law, c): snap for law in laws for c in criteria}, "offset", 40.0, criteria,
+                     laws, 680.0)  # fmt: skip
+    (tip,) = [ax for ax in fig.axes if ax.get_title().startswith("(b) offset: tip radial stress")]
+    colours = {_hex(line.get_color()) for line in tip.get_lines()[: len(criteria)]}
+    assert colours == set(map(_hex, views.criterion_colours(criteria).values()))
+
+
+def test_the_sensitivity_figures_draw_a_panel_per_output_method_and_law():
+    from sphgag.views import sensitivity as views
+
+    laws = ["prescribed", "conserved", "ideal"]
+    inputs = ["gag.shear_modulus_kPa", "bilayer.dx_um", "delamination.critical_stress_kPa"]
+    rows = []
+    for law in laws:
+        for output in ("tip_radial_stress_kPa", "final_length_um"):
+            for method, indices in (("morris", ("mu_star", "sigma")), ("sobol", ("S1", "ST"))):
+                for k, name in enumerate(inputs):
+                    for index in indices:
+                        v = 0.1 * (k + 1)
+                        rows.append(
+                            dict(charge_law=law, output=output, method=method, input=name, index=index, value=v,
+                                 conf_low=0.8 * v, conf_high=1.2 * v, samples_used=8, samples_missing=0)
+                        )  # fmt: skip
+    fig = views.sensitivity(pd.DataFrame(rows), laws)
+    assert len(fig.axes) == 2 * 2 * len(laws)
+    assert _titles(fig)[:3] == ["Morris: prescribed Pi(c), paper", "Morris: conserved charge, c/J", "Morris: ideal"]
+
+    states = list(views.MAP_COLOURS)
+    table = pd.DataFrame(
+        [
+            dict(charge_law=law, sigma_cr_kPa=s, angular_extent_deg=w, concentration_mEq_l=c, state=states[k % 4])
+            for law in laws
+            for s in (40.0, 60.0)
+            for k, (w, c) in enumerate((w, c) for w in (3.0, 16.0) for c in (50.0, 100.0, 150.0))
+        ]
+    )
+    swelling = _tips([("prescribed", "particles")]).assign(limit_concentration_mEq_l=np.nan, path_end="complete")
+    swelling.loc[swelling.case == "IV", "limit_concentration_mEq_l"] = 120.0
+    fig = views.delamination_map(table, swelling, {"I": 3.0, "IV": 16.0}, 103.0, laws)
+    assert len(fig.axes) == len(laws) * 2
+    assert _titles(fig)[-1] == "ideal\nsigma_cr = 60 kPa"
