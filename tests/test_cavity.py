@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from sphgag.physics import cavity, materials
+from sphgag.physics import cavity, donnan, materials
 
 A = 1.0
 
@@ -80,7 +80,7 @@ def test_field_is_in_equilibrium_with_free_outer_surface_and_continuous_traction
         assert pool.swelling_kPa < pi
 
 
-@pytest.mark.parametrize("law", materials.CHARGE_LAWS)
+@pytest.mark.parametrize("law", donnan.CHARGE_LAWS)
 @pytest.mark.parametrize("J", [4.0, 25.0, 100.0])
 @pytest.mark.parametrize("ratio", [10.0, 1000.0])
 def test_pressure_for_volume_ratio_inverts_the_pool(law, J, ratio):
@@ -103,7 +103,7 @@ def test_thick_annulus_has_a_limit_pressure_and_two_pools_below_it():
     np.testing.assert_allclose(cavity.pressure_for_volume_ratio(stable.volume_ratio, A, B, m, g), p[2], rtol=1e-9)
 
 
-@pytest.mark.parametrize("law", materials.CHARGE_LAWS)
+@pytest.mark.parametrize("law", donnan.CHARGE_LAWS)
 def test_cauchy_stress_is_the_engines(law):
     rng = np.random.default_rng(7)
     g = cavity.Solid(3.0, 40.0, bath_mEq_l=250.0, temperature_K=300.0)

@@ -243,7 +243,7 @@ def test_a_bad_sensitivity_range_is_rejected_naming_the_input_and_its_allowed_ra
 def test_the_schemas_enumerations_are_the_registries():
     """A new charge law, onset criterion or candidate rule is an entry of its registry: the schema accepts it with no
     edit."""
-    from sphgag.physics.materials import CHARGE_LAWS
+    from sphgag.physics.donnan import CHARGE_LAWS
     from sphgag.studies.candidates import RULES
     from sphgag.studies.onset import CRITERIA
     from sphgag.studies.protocols import POOL_MODELS

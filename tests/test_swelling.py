@@ -6,7 +6,7 @@ import pytest
 
 from sphgag.engine import geometry, solver
 from sphgag.engine.loading import Load
-from sphgag.physics import materials
+from sphgag.physics import donnan, materials
 from sphgag.studies import artery, convergence, protocols
 
 from .conftest import law_gag
@@ -172,7 +172,7 @@ def test_the_charge_law_of_a_run_selects_its_donnan_term(ci_config):
     load = Load(1.0, 10.0, material=(("transition", 1.0), ("concentration", 150.0)))
     rows = {}
     wall = ci_config["bilayer"], ci_config["numerics"]
-    for law in materials.CHARGE_LAWS:
+    for law in donnan.CHARGE_LAWS:
         model = artery.bilayer_model(*wall, name="test-law", pool=sector, gag=law_gag(ci_config, law))
         assert model.props.gag == materials.Gag.of(law_gag(ci_config, law)) and model.props.gag.charge_law == law
         rows[law] = model.props(load)[model.props.converting]

@@ -170,13 +170,13 @@ def _registries() -> dict:
     """The schema's enumerations that sphgag's registries define, by the path of their key (a list of names or one
     name): a new charge law, onset criterion or candidate rule is an entry of its registry, and the configuration
     accepts it with no edit of the schema."""
-    from .physics.materials import CHARGE_LAWS
+    from .physics import donnan
     from .studies.candidates import RULES
     from .studies.onset import CRITERIA
     from .studies.protocols import POOL_MODELS
 
     return {
-        ("gag", "charge_laws"): list(CHARGE_LAWS),
+        ("gag", "charge_laws"): list(donnan.LAWS),
         ("swelling", "pool_models"): list(POOL_MODELS),
         ("delamination", "criteria"): list(CRITERIA),
         ("delamination", "candidates"): list(RULES),

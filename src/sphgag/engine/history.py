@@ -131,10 +131,10 @@ class HistoryMaterial:
 
     ``base(load)``: the intact wall's table (e.g. :class:`sphgag.studies.artery.BilayerMaterial`);
     ``gag``: the ``gag`` parameters of one run (eq. 2.27), with its Donnan law ``charge_law``
-    (:data:`sphgag.physics.materials.CHARGE_LAWS`, :func:`sphgag.physics.materials.law_gag`):
-    ``prescribed`` gives GAG particles the swelling pressure Pi(c) of the load's concentration (eqs. 2.25-2.27 as
-    printed), ``conserved`` the Donnan pressure of the conserved fixed charge at the current concentration c/J
-    (:func:`sphgag.physics.materials.donnan`).
+    (:data:`sphgag.physics.donnan.LAWS`, :func:`sphgag.physics.materials.law_gag`): a law that does not conserve the
+    fixed charge (``prescribed``) gives GAG particles the swelling pressure Pi(c) of the load's concentration
+    (eqs. 2.25-2.27 as printed), one that does (``conserved``) the fixed charge c per reference volume, whose Donnan
+    pressure acts at the current concentration c/J (:func:`sphgag.physics.materials.donnan`).
     The load's ``transition`` t in [0, 1] moves between the two histories (a load without one is at
     ``before``), so that the quasi-static solver can follow (and bisect) any change of history:
 
@@ -182,7 +182,7 @@ class HistoryMaterial:
         if np.any(D > 0.0):
             out = damage.weaken(out, D)
         g = self.gag
-        conserved = g.charge_law == "conserved"
+        conserved = g.law.conserves_charge  # which column carries the swelling: FCD (c/J in the kernels) or PI
         for rows, fraction, charge in ((self.kept, 1.0, c), (self.converting, t, t * c)):
             if not rows.size or fraction == 0.0:
                 continue

@@ -8,9 +8,10 @@ engine's laws (:mod:`sphgag.physics.materials`, with its documented correction o
     ``W = mu/2 (lr^2 + lt^2 + 1 - 3) - mu ln J + lam/2 (ln J)^2  [- Pi (J - 1) in the pool]``,  ``J = lr lt``,
 
 whose principal Cauchy stresses are ``sigma_rr = (mu (lr^2 - 1) + lam ln J)/J - Pi`` and likewise ``sigma_tt`` with
-``lt`` (:func:`cauchy`). Swelling (eqs. 2.25-2.26): the law ``prescribed`` keeps ``Pi`` fixed; ``conserved`` keeps
-the fixed charge ``c0`` per reference volume, ``Pi = RT (sqrt((c0/J)^2 + c*^2) - c*)`` (:func:`donnan_pressure`),
-``c0`` being the concentration whose ``Pi`` at ``J = 1`` is the given pressure (the engine's two laws at one load).
+``lt`` (:func:`cauchy`). Swelling (eqs. 2.25-2.26), by the charge law (:mod:`sphgag.physics.donnan`): a law that
+does not conserve the fixed charge (``prescribed``) keeps ``Pi`` fixed; one that does (``conserved``) keeps the fixed
+charge ``c0`` per reference volume, ``Pi = RT (sqrt((c0/J)^2 + c*^2) - c*)`` (:func:`donnan_pressure`), ``c0`` being
+the concentration whose ``Pi`` at ``J = 1`` is the given pressure (the engine's laws at one load).
 
 The pool deforms homogeneously, ``r = lp R``: its uniform hydrostatic stress satisfies equilibrium exactly and is
 known in closed form. In the matrix, radial equilibrium ``dP_r/dR + (P_r - P_t)/R = 0`` (``P_r = dW/dlr``,
@@ -34,7 +35,8 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq, minimize_scalar
 
-from .materials import CHARGE_LAWS, GAS_CONSTANT
+from .donnan import PAPER_LAW, charge_law
+from .materials import GAS_CONSTANT
 
 RTOL, ATOL = 1e-11, 1e-12
 
@@ -211,16 +213,15 @@ class CircularPool:
         return float(self.field(self.B)["r"])
 
 
-def circular_pool(A, B, matrix, gag, pressure_kPa, law="prescribed") -> CircularPool:
+def circular_pool(A, B, matrix, gag, pressure_kPa, law=PAPER_LAW) -> CircularPool:
     """The pool of reference radius ``A`` in the annulus ``A < R < B`` swollen by ``pressure_kPa`` under the charge
-    ``law`` (``prescribed``: Pi = pressure_kPa, eq. 2.27; ``conserved``: Pi(c0/J) with Pi(c0) = pressure_kPa, eq. 2.26).
-    ``matrix``, ``gag``: :class:`Solid` or dicts (:meth:`Solid.of`). A finite annulus has a limit pressure, the
-    maximum of the pressure-volume curve: above it there is no equilibrium (ValueError), below it the stable
-    (smaller) pool of the two is returned."""
-    if law not in CHARGE_LAWS:
-        raise ValueError(f"unknown charge law {law!r}: one of {', '.join(CHARGE_LAWS)}")
+    ``law`` (a name of :data:`sphgag.physics.donnan.LAWS`; ``prescribed``: Pi = pressure_kPa, eq. 2.27; ``conserved``:
+    Pi(c0/J) with Pi(c0) = pressure_kPa, eq. 2.26). ``matrix``, ``gag``: :class:`Solid` or dicts (:meth:`Solid.of`).
+    A finite annulus has a limit pressure, the maximum of the pressure-volume curve: above it there is no equilibrium
+    (ValueError), below it the stable (smaller) pool of the two is returned."""
+    conserved = charge_law(law).conserves_charge
     m, g = Solid.of(matrix), Solid.of(gag)
-    c0 = fixed_charge(pressure_kPa, g) if law == "conserved" else None
+    c0 = fixed_charge(pressure_kPa, g) if conserved else None
 
     def swelling(lp):
         return pressure_kPa if c0 is None else float(donnan_pressure(lp * lp, c0, g))
@@ -234,12 +235,17 @@ def circular_pool(A, B, matrix, gag, pressure_kPa, law="prescribed") -> Circular
     return CircularPool(A, B, m, g, law, pressure_kPa, lp, swelling(lp), ode)
 
 
-def pressure_for_volume_ratio(J_target, A, B, matrix, gag, law="prescribed") -> float:
-    """The swelling pressure [kPa] that gives the pool volume ratio ``J_target`` (prescribed law; for ``conserved``
-    the pressure Pi(c0) at J = 1 of the fixed charge c0 that does). The interface traction is root-found at the known
-    lp = sqrt(J_target), so the inverse is as exact as :func:`circular_pool`, on both sides of the limit point."""
+def pressure_for_volume_ratio(J_target, A, B, matrix, gag, law=PAPER_LAW) -> float:
+    """The swelling pressure [kPa] that gives the pool volume ratio ``J_target`` (prescribed law; under a law that
+    conserves the fixed charge, ``conserved``, the pressure Pi(c0) at J = 1 of the fixed charge c0 that does). The
+    interface traction is root-found at the known lp = sqrt(J_target), so the inverse is as exact as
+    :func:`circular_pool`, on both sides of the limit point."""
+    charge = charge_law(law)
     m, g = Solid.of(matrix), Solid.of(gag)
     lp = float(np.sqrt(J_target))
     t = _increasing_root(lambda t: _shoot(m, A, B, lp, t)[0], 0.0, 0.1 * m.mu)
     pi = float(cauchy(lp, lp, g)[0]) - t
-    return pi if law == "prescribed" else float(donnan_pressure(1.0, J_target * fixed_charge(pi, g), g))
+    if not charge.conserves_charge:
+        return pi
+    # the fixed charge c0 per reference volume whose concentration at J_target has the swelling pressure pi
+    return float(donnan_pressure(1.0, charge.reference_concentration(fixed_charge(pi, g), J_target), g))

@@ -45,6 +45,7 @@ import numpy as np
 from numba import njit
 
 from ..options import Options
+from .donnan import ChargeLaw, charge_law
 
 # Column layout of the property table.
 MU, LAM, GR, GT, GZ, PI, TACT, LMAX, LMIN, HG_E, NFAM = range(11)
@@ -58,20 +59,13 @@ FCD, CBATH, RT = FAM_END + 1, FAM_END + 2, FAM_END + 3
 NPROP = RT + 1
 GAS_CONSTANT = 8.314462618  # J / (mol K)
 
-# The Donnan laws of a GAG pool (eqs. 2.25-2.27; docs/physics.md), by their names in the configuration
-# (``gag.charge_laws``) and in every pool table (column ``charge_law``):
-# ``prescribed``: the paper's law as printed, a swelling pressure Pi(c) of the load's concentration c;
-# ``conserved``: the fixed charge stays in the pool, so the Donnan pressure acts at the current concentration c/J
-# (:func:`donnan`; a documented deviation).
-CHARGE_LAWS = ("prescribed", "conserved")
-
 
 @dataclass(frozen=True)
 class Gag(Options):
     """The GAG parameters of one run (:func:`law_gag`): ``shear_modulus_kPa`` mu_GAG (eq. 2.27),
     ``lame_lambda_kPa`` the bulk term of GAG particles (not in eq. 2.27; docs/physics.md), ``temperature_K`` T and
     ``bath_concentration_mEq_l`` c* of eqs. (2.25-2.26), ``hourglass_modulus_kPa`` E of eq. (2.14) for GAG particles,
-    and the run's Donnan law ``charge_law`` (:data:`CHARGE_LAWS`)."""
+    and the run's Donnan law ``charge_law``, a name of the registry :data:`sphgag.physics.donnan.LAWS` (:attr:`law`)."""
 
     SECTION = "gag"
 
@@ -83,19 +77,22 @@ class Gag(Options):
     charge_law: str
 
     def __post_init__(self):
-        if self.charge_law not in CHARGE_LAWS:
-            raise ValueError(
-                f"gag charge_law = {self.charge_law!r}: one of {', '.join(CHARGE_LAWS)} "
-                "(materials.law_gag gives the parameters of one law)"
-            )
+        try:
+            charge_law(self.charge_law)
+        except ValueError as exc:
+            raise ValueError(f"gag charge_law: {exc} (materials.law_gag gives the parameters of one law)") from None
+
+    @property
+    def law(self) -> ChargeLaw:
+        """The run's charge law (eqs. 2.25-2.27): how the fixed charge of a GAG particle follows its volume ratio."""
+        return charge_law(self.charge_law)
 
 
 def law_gag(gag: dict, law: str) -> dict:
     """The ``gag`` parameters of one run under the charge law ``law``: the configuration's ``gag`` section without its
     list ``charge_laws``, with ``charge_law = law`` (a plain dict, as Snakemake params and state files keep it;
     :class:`Gag` is its typed form)."""
-    if law not in CHARGE_LAWS:
-        raise ValueError(f"unknown charge law {law!r}: one of {', '.join(CHARGE_LAWS)}")
+    charge_law(law)  # ValueError for a law the registry does not know
     return dict({k: v for k, v in gag.items() if k not in ("charge_laws", "charge_law")}, charge_law=law)
 
 

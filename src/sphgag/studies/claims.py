@@ -35,7 +35,7 @@ class Claim:
     our_value: str
     holds: str  # yes | no | n/a | not run (its evidence is made by a target that has not run)
     criterion: str
-    charge_law: str = "-"  # a pool claim's Donnan law (sphgag.physics.materials.CHARGE_LAWS); "-": no pool
+    charge_law: str = "-"  # a pool claim's Donnan law (sphgag.physics.donnan.LAWS); "-": no pool
     pool_model: str = "-"  # a pool claim's pool model (sphgag.studies.protocols.POOL_MODELS); "-": no pool
 
 

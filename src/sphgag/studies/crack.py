@@ -49,6 +49,7 @@ from ..engine.loading import Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
 from ..physics import damage, fracture, materials
+from ..physics.donnan import PAPER_LAW
 from .delamination import intact_energy
 from .inclusion import ExactBoundary, Materials
 
@@ -302,7 +303,7 @@ def study(half_length: float, vc: dict, matrix: dict, gag: dict, numerics: Numer
     """
     mat = Materials.of(matrix, gag)
     gag_law = materials.Gag(
-        charge_law="prescribed",
+        charge_law=PAPER_LAW,  # the prescribed Donnan law: the slit carries the fixed Pi of the load
         bath_concentration_mEq_l=gag["bath_concentration_mEq_l"],
         temperature_K=gag["temperature_K"],
         shear_modulus_kPa=gag["shear_modulus_kPa"],

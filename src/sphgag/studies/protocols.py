@@ -24,7 +24,8 @@ from ..engine.loading import MMHG_TO_KPA, Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
 from ..physics import analytic
-from ..physics.materials import CHARGE_LAWS, Gag, swelling_pressure
+from ..physics.donnan import CHARGE_LAWS, LAWS
+from ..physics.materials import Gag, swelling_pressure
 
 log = logging.getLogger("sphgag")
 
@@ -486,9 +487,13 @@ class PoolModel:
 
 #: the pool models of the figure 4 runs (``swelling.pool_models``, wildcard ``{pool}``, column ``pool_model``):
 #: ``particles``, the paper's GAG particles (eq. 2.27), every law; ``cavity``, the pool as a pressurised cavity whose
-#: lining carries the prescribed Pi(c) (:mod:`sphgag.engine.pool_cavity`; our deviation), its wall with the energy
-#: form of eq. (2.14) (the form as printed loses the path next to the swollen cavity: docs/physics.md)
-POOL_MODELS = {"particles": PoolModel(CHARGE_LAWS), "cavity": PoolModel(("prescribed",), "energy")}
+#: lining carries the prescribed Pi(c) (:mod:`sphgag.engine.pool_cavity`; our deviation), so only the laws that do
+#: not conserve the fixed charge (``prescribed``: a cavity carries one pressure, whatever its J), its wall with the
+#: energy form of eq. (2.14) (the form as printed loses the path next to the swollen cavity: docs/physics.md)
+POOL_MODELS = {
+    "particles": PoolModel(CHARGE_LAWS),
+    "cavity": PoolModel(tuple(name for name, law in LAWS.items() if not law.conserves_charge), "energy"),
+}
 
 
 def concentration_steps(sw: dict) -> np.ndarray:
