@@ -11,6 +11,7 @@ from sphgag import config
 from sphgag.engine.history import HistoryMaterial, ParticleHistory
 from sphgag.engine.loading import Load
 from sphgag.physics import cavity, donnan, materials
+from sphgag.views import style
 
 from .conftest import ROOT
 
@@ -35,6 +36,13 @@ def test_the_registry_holds_the_paper_law_and_our_deviation():
     assert prescribed.reference_concentration(37.5, 4.0) == 37.5 and conserved.reference_concentration(37.5, 4.0) == 150
     with pytest.raises(ValueError, match="unknown charge law 'literal': one of prescribed, conserved"):
         donnan.charge_law("literal")
+
+
+@pytest.mark.parametrize("law", donnan.CHARGE_LAWS)
+def test_the_figures_name_a_law_from_the_registry(law):
+    entry = donnan.LAWS[law]
+    assert style.law_title(law) == entry.title and style.law_short(law) == entry.short
+    assert style.is_paper_law(law) == entry.paper
 
 
 def gag_rows(law: str, concentration: float) -> np.ndarray:
@@ -76,8 +84,8 @@ def test_a_registered_law_is_a_valid_configuration(third_law, ci_config):
 
 
 def test_a_registered_law_swells_by_its_rule(third_law):
-    """The engine's column and the exact circular pool of the new law are those of the registered law whose fixed
-    charge follows the same rule."""
+    """The engine's column, the exact circular pool and the figures' titles of the new law are those of the
+    registered law whose fixed charge follows the same rule."""
     twin = "conserved" if third_law.conserves_charge else "prescribed"
     np.testing.assert_array_equal(gag_rows("ideal", 120.0), gag_rows(twin, 120.0))
     assert third_law.concentration(120.0, 3.0) == donnan.LAWS[twin].concentration(120.0, 3.0)
@@ -89,3 +97,5 @@ def test_a_registered_law_swells_by_its_rule(third_law):
     assert p == cavity.pressure_for_volume_ratio(
         4.0, 1.0, 20.0, cavity.Solid(1.0, 10.0), cavity.Solid(0.05, 1.0), law=twin
     )
+    assert style.law_title("ideal") == "ideal charge law: a test" and style.law_short("ideal") == "ideal, test"
+    assert not style.is_paper_law("ideal")

@@ -8,7 +8,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 
-from .style import GAG_CONCENTRATION, LAST_CONVERGED, LAW_SHORT, _style, paper_pool
+from .style import GAG_CONCENTRATION, LAST_CONVERGED, _style, is_paper_law, law_short, paper_pool
 
 SENSITIVITY_OUTPUTS = {  # results/sensitivity/indices.csv output -> axis label
     "tip_radial_stress_kPa": "tip radial stress (kPa)",
@@ -122,7 +122,7 @@ def sensitivity(indices: pd.DataFrame, laws):
             rows = indices[(indices.method == method) & (indices.charge_law == law) & (indices.output == output)]
             (morris_panel if method == "morris" else sobol_panel)(ax, rows)
             if i == 0:
-                ax.set_title(f"{'Morris' if method == 'morris' else 'Sobol'}: {LAW_SHORT.get(law, law)}", fontsize=8)
+                ax.set_title(f"{'Morris' if method == 'morris' else 'Sobol'}: {law_short(law)}", fontsize=8)
             if j == 0:
                 ax.annotate(
                     SENSITIVITY_OUTPUTS[output],
@@ -148,9 +148,9 @@ MAP_COLOURS = {
 def delamination_map(table: pd.DataFrame, swelling: pd.DataFrame, cases: dict, pressure_mmHg: float, laws):
     """The delamination map: a panel per charge law (row) and sigma_cr (column), pool angular extent (x) against
     concentration level (y), each cell coloured by what the pool does there (:data:`delamination.LEVEL_CLASSES`).
-    On the prescribed law's panels, the end of figure 4's swelling runs of the passive wall at ``pressure_mmHg``
-    (``swelling``: tip_stress.csv): a limit point where there is one (a star), else the last converged state of a run
-    that stops early (a cross)."""
+    On the paper's charge law's panels (prescribed), the end of figure 4's swelling runs of the passive wall at
+    ``pressure_mmHg`` (``swelling``: tip_stress.csv): a limit point where there is one (a star), else the last
+    converged state of a run that stops early (a cross)."""
     _style()
     laws = [law for law in laws if law in set(table.charge_law)]
     sigmas = sorted(table.sigma_cr_kPa.unique())
@@ -179,7 +179,7 @@ def delamination_map(table: pd.DataFrame, swelling: pd.DataFrame, cases: dict, p
                         (x - 0.5, r.concentration_mEq_l - step / 2), 1.0, step, color=MAP_COLOURS[r.state], lw=0
                     )
                 )
-            if law == "prescribed":
+            if is_paper_law(law):
                 for name, width in cases.items():
                     run = ends[(ends.charge_law == law) & (ends.case == name)]
                     if run.empty:
@@ -196,7 +196,7 @@ def delamination_map(table: pd.DataFrame, swelling: pd.DataFrame, cases: dict, p
             ax.set_xlim(-0.5, len(widths) - 0.5)
             ax.set_ylim(levels[0] - step / 2, levels[-1] + step / 2)
             ax.set_xticks(range(len(widths)), [f"{w:g}" for w in widths])
-            ax.set_title(f"{LAW_SHORT.get(law, law)}\nsigma_cr = {sigma:g} kPa", fontsize=8)
+            ax.set_title(f"{law_short(law)}\nsigma_cr = {sigma:g} kPa", fontsize=8)
             if i == len(laws) - 1:
                 ax.set_xlabel("pool angular extent (deg)")
             if j == 0:

@@ -13,6 +13,7 @@ import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 import seaborn as sns  # noqa: E402
 
+from ..physics import donnan  # noqa: E402
 from ..records.provenance import figure_metadata  # noqa: E402
 
 LAYER_COLOURS = {"media": "#3b6fb6", "adventitia": "#2e9e5b", "GAG": "#d1352b"}
@@ -76,18 +77,28 @@ def style_legend(ax, loc="best", fontsize=7, **kws):
     sns.move_legend(ax, loc, frameon=False, fontsize=fontsize, **kws)
 
 
-# the Donnan laws of the pools (sphgag.physics.materials.CHARGE_LAWS, column charge_law of every pool table), as the
-# figures name them: the prescribed law is the paper's model, the one to compare with the paper's panels
-LAW_TITLES = {
-    "prescribed": "prescribed charge law: Pi(c), eqs. 2.25-2.27 as printed (the paper's model: compare with the paper)",
-    "conserved": "conserved charge law: Pi at the current concentration c/J (mixture theory; a deviation)",
-}
-LAW_SHORT = {"prescribed": "prescribed Pi(c), paper", "conserved": "conserved charge, c/J"}
+# the Donnan laws of the pools (the registry sphgag.physics.donnan.LAWS, column charge_law of every pool table), as
+# the figures name them (each law's title and short label): the paper's law is the one to compare with the paper's
+# panels. A name the registry does not know is shown as itself.
 
 
 def law_title(law: str) -> str:
-    """The heading of a charge law: its title, or for a law without one (a new law) "<law> charge law"."""
-    return LAW_TITLES.get(law, f"{law} charge law")
+    """The heading of a charge law: its title, or for a law the registry does not know "<law> charge law"."""
+    known = donnan.LAWS.get(law)
+    return known.title if known else f"{law} charge law"
+
+
+def law_short(law: str) -> str:
+    """The label of a charge law in a panel title or an axis label: its short label, or the name of a law the
+    registry does not know."""
+    known = donnan.LAWS.get(law)
+    return known.short if known else law
+
+
+def is_paper_law(law: str) -> bool:
+    """Whether ``law`` is the paper's charge law (False for a law the registry does not know)."""
+    known = donnan.LAWS.get(law)
+    return bool(known and known.paper)
 
 
 # the pool models of the swelling runs (sphgag.studies.protocols.POOL_MODELS, column pool_model of the pool tables):
@@ -116,12 +127,12 @@ def variant_title(law: str, pool: str) -> str:
     """The heading of one (charge law, pool model) pair."""
     if pool == PAPER_POOL:
         return law_title(law)
-    return f"{LAW_SHORT.get(law, law)}; {POOL_TITLES.get(pool, pool)}"
+    return f"{law_short(law)}; {POOL_TITLES.get(pool, pool)}"
 
 
 def variant_short(law: str, pool: str) -> str:
     """The label of one (charge law, pool model) pair: the law's, or, for another pool model, both names."""
-    return LAW_SHORT.get(law, law) if pool == PAPER_POOL else f"{law} law, pool as {pool}"
+    return law_short(law) if pool == PAPER_POOL else f"{law} law, pool as {pool}"
 
 
 def law_blocks(laws, heights, width: float = 11.0):
