@@ -4,6 +4,7 @@
 
 import hashlib
 
+from sphgag.physics.donnan import PAPER_LAW
 from sphgag.physics.materials import law_gag
 from sphgag.studies.delamination import Settings as DelaminationSettings
 from sphgag.studies.onset import CRITERIA
@@ -40,8 +41,12 @@ PRESENTATION = {
 PACKAGE = Path(SRC, "sphgag")
 MODULES = {p.relative_to(PACKAGE).as_posix(): os.path.relpath(p) for p in sorted(PACKAGE.rglob("*.py"))}
 SPHGAG = [path for name, path in MODULES.items() if name not in PRESENTATION]
-# a figure rule's code: its family's module and the shared style (an edit of one family redraws its figures only)
-VIEWS = {family: [MODULES["views/style.py"], MODULES[f"views/{family}.py"]] for family in FIGURE_FAMILIES}
+# a figure rule's code: its family's module, the shared style and the charge laws' titles it reads
+# (physics/donnan.py) (an edit of one family redraws its figures only)
+VIEWS = {
+    family: [MODULES["views/style.py"], MODULES["physics/donnan.py"], MODULES[f"views/{family}.py"]]
+    for family in FIGURE_FAMILIES
+}
 CLAIMS = MODULES["studies/claims.py"]
 SENSITIVITY = MODULES["studies/sensitivity.py"]  # the indices, not the samples' simulations
 PARAVIEW = MODULES["views/paraview.py"]
@@ -118,8 +123,8 @@ DE_RUN = f"results/delamination/runs/{DE_NAME}"
 # the damage law with a fracture energy: figure 5's set at critical_stress_kPa, default criterion, one run per G_c
 # (and per charge law); "paper" is the G_c that the paper's law dissipates in its run of that pool (prescribed law)
 DE_FE = DE["fracture_energy"]
-# (matched where the prescribed law is studied: the conserved law's default run does not grow)
-DE_MATCH = DE_FE["match_paper"] and "prescribed" in LAWS
+# (matched where the paper's charge law, prescribed, is studied: the conserved law's default run does not grow)
+DE_MATCH = DE_FE["match_paper"] and PAPER_LAW in LAWS
 DE_TOUGHNESS = [f"{g:g}" for g in DE_FE["fracture_energies_J_m2"]] + (["paper"] if DE_MATCH else [])
 DE_FE_RUN = dict(poolset=FIG5_SET, sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"][0])
 DE_FE_PATH = f"{DE_RUN}_Gc{{gc}}"
@@ -139,7 +144,7 @@ def run_tables(names, table):
 
 # the run whose dissipation is the fracture-energy runs' "paper" G_c (prescribed law), and every run that keeps
 # snapshots: the runs of the tables and that one, where it is not among them (a reduced configuration's sigma_cr)
-DE_MATCHED = DE_NAME.format(law="prescribed", **DE_FE_RUN)
+DE_MATCHED = DE_NAME.format(law=PAPER_LAW, **DE_FE_RUN)
 DE_SNAPSHOT_NAMES = DE_RUN_NAMES + ([DE_MATCHED] if DE_MATCH and DE_MATCHED not in DE_RUN_NAMES else [])
 # the snapshots of any delamination run (rule delaminate or delaminate_fracture_energy), by its name
 DE_SNAPSHOTS = "results/delamination/runs/{law}/{run}_snapshots.npz"
