@@ -54,3 +54,12 @@ def test_the_half_length_a_swelling_pool_needs_at_measured_toughness():
     a = fracture.griffith_half_length(91.0, 51.0 * fracture.J_M2, E)
     assert a == pytest.approx(330.0, rel=0.01)
     assert np.all(np.diff(fracture.griffith_half_length(91.0, np.array([51.0, 76.0, 159.0]) * fracture.J_M2, E)) > 0)
+
+
+def test_a_swelling_pool_at_its_griffith_concentration_needs_exactly_its_own_half_length():
+    """Griffith's criterion for a pool (eqs. 2.25-2.26): Pi at the critical concentration is p_c, so the half-length
+    that concentration makes critical is the pool's."""
+    gc, a = 51.0 * fracture.J_M2, 17.4
+    pool = fracture.griffith_pool(a, gc, E, 150.0, 300.0, 310.0)
+    assert pool.pressure == pytest.approx(fracture.griffith_pressure(a, gc, E))
+    assert fracture.griffith_pool(a, gc, E, pool.concentration, 300.0, 310.0).half_length == pytest.approx(a)

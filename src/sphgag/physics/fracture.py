@@ -13,6 +13,8 @@ carries a uniform pressure ``p`` on its faces:
 * Irwin's cohesive length ``ell_ch = E' G_c / sigma_c^2``: Griffith holds for ``a >> ell_ch``.
   A Dugdale zone (constant cohesive stress ``sigma_c`` up to the opening ``G_c / sigma_c``)
   gives ``(8 a / (pi ell_ch)) ln sec(pi p_c / (2 sigma_c)) = 1``, below Griffith for short cracks;
+* a swelling pool as such a crack (:func:`griffith_pool`): its faces carry the swelling pressure Pi(c) of
+  eqs. (2.25-2.26), so Griffith's ``p_c`` is a fixed-charge concentration, and Pi(c) a critical half-length;
 * crack band (Bazant & Oh 1983): a softening law smeared over a band of width ``h``
   dissipates ``G_c`` per unit crack area when its post-peak strain is
   ``shape G_c / (sigma_c h)`` (``shape`` = 2 for linear softening).
@@ -22,7 +24,11 @@ Units: kPa and um throughout, so energies per area are in kPa um; 1 J/m^2 = 1e3 
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
+
+from . import materials
 
 J_M2 = 1.0e3  # kPa um per J/m^2
 
@@ -45,6 +51,28 @@ def griffith_pressure(half_length, fracture_energy, modulus):
 def griffith_half_length(pressure, fracture_energy, modulus):
     """The half-length at which the face pressure ``p`` reaches Griffith's: ``a_c = E' G_c / (pi p^2)`` [um]."""
     return modulus * fracture_energy / (np.pi * np.square(pressure))
+
+
+class GriffithPool(NamedTuple):
+    """Griffith's criterion for a swelling pool (:func:`griffith_pool`)."""
+
+    pressure: float  # the critical face pressure p_c [kPa] of the pool's half-length
+    concentration: float  # the fixed-charge concentration [mEq/l] whose swelling pressure is p_c
+    half_length: float  # the half-length [um] at which the swelling pressure of the given concentration is critical
+
+
+def griffith_pool(half_length, fracture_energy, modulus, concentration, bath_concentration, temperature_K):
+    """A GAG pool of half-length ``a`` [um] as a pressurised straight crack whose faces carry the swelling pressure
+    Pi(c) of eqs. (2.25-2.26) (bath concentration c* [mEq/l], temperature T): Griffith's critical pressure ``p_c``
+    [kPa] (:func:`griffith_pressure`), the concentration [mEq/l] at which Pi reaches it, and the half-length
+    (:func:`griffith_half_length`) that Pi(``concentration``) makes critical; ``G_c`` in kPa um."""
+    p_c = griffith_pressure(half_length, fracture_energy, modulus)
+    pi = materials.swelling_pressure(concentration, bath_concentration, temperature_K)
+    return GriffithPool(
+        p_c,
+        materials.concentration_for_pressure(p_c, bath_concentration, temperature_K),
+        griffith_half_length(pi, fracture_energy, modulus),
+    )
 
 
 def opening(x, half_length, pressure, modulus):

@@ -863,22 +863,26 @@ def paper_law(table: pd.DataFrame) -> pd.DataFrame:
 
 
 def griffith(sectors: list[Sector], fracture_energy_J_m2: float, modulus: float, gag: dict, concentration: float):
-    """The closed form of a pool as a pressurised straight crack (:mod:`sphgag.physics.fracture`), in the media's
-    plane-strain modulus ``E'`` [kPa]: the concentration at which Griffith's criterion makes the longest seeded pool
-    (half-length half its arc) propagate, and the half-length it needs at ``concentration``, both under Pi(c) of
-    eqs. (2.25-2.26) (the prescribed law; the conserved law's Pi is lower where the pool has swollen)."""
-    gc = fracture_energy_J_m2 * fracture.J_M2
+    """The closed form of a pool as a pressurised straight crack (:func:`sphgag.physics.fracture.griffith_pool`), in
+    the media's plane-strain modulus ``E'`` [kPa], as summary columns: the concentration at which Griffith's criterion
+    makes the longest seeded pool (half-length half its arc) propagate, and the half-length it needs at
+    ``concentration``, both under Pi(c) of eqs. (2.25-2.26) (the prescribed law; the conserved law's Pi is lower where
+    the pool has swollen)."""
     a = max(0.5 * np.deg2rad(s.angular_extent_deg) * s.centre_radius for s in sectors)
-    p_c = fracture.griffith_pressure(a, gc, modulus)
     gag = materials.Gag.of(gag)
-    pi = materials.swelling_pressure(concentration, gag.bath_concentration_mEq_l, gag.temperature_K)
+    pool = fracture.griffith_pool(
+        a,
+        fracture_energy_J_m2 * fracture.J_M2,
+        modulus,
+        concentration,
+        gag.bath_concentration_mEq_l,
+        gag.temperature_K,
+    )
     return dict(
         griffith_pool_half_length_um=float(a),
-        griffith_pressure_kPa=float(p_c),
-        griffith_concentration_mEq_l=float(
-            materials.concentration_for_pressure(p_c, gag.bath_concentration_mEq_l, gag.temperature_K)
-        ),
-        griffith_half_length_um=float(fracture.griffith_half_length(pi, gc, modulus)),
+        griffith_pressure_kPa=float(pool.pressure),
+        griffith_concentration_mEq_l=float(pool.concentration),
+        griffith_half_length_um=float(pool.half_length),
     )
 
 
