@@ -2,9 +2,9 @@
 
 The package is entered with typed options: :class:`sphgag.engine.numerics.Numerics`,
 :class:`sphgag.physics.materials.Gag`, :class:`sphgag.studies.artery.Bilayer` and
-:class:`sphgag.studies.delamination.Settings`. The pipeline keeps plain dicts where rerun detection and provenance
-read them (Snakemake ``params``, the parameters a state file records); the package builds its options from them with
-``of``, at the functions it is entered by. A key the options do not know, or one they miss, raises naming it.
+:class:`sphgag.studies.delamination.settings.Settings`. The pipeline keeps plain dicts where rerun detection and
+provenance read them (Snakemake ``params``, the parameters a state file records); the package builds its options from
+them with ``of``, at the functions it is entered by. A key the options do not know, or one they miss, raises naming it.
 """
 
 from __future__ import annotations

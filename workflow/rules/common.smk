@@ -6,7 +6,7 @@ import hashlib
 
 from sphgag.physics.donnan import PAPER_LAW
 from sphgag.physics.materials import law_gag
-from sphgag.studies.delamination import Settings as DelaminationSettings
+from sphgag.studies.delamination.settings import Settings as DelaminationSettings
 from sphgag.studies.onset import CRITERIA
 from sphgag.studies.protocols import POOL_MODELS
 

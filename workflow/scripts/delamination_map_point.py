@@ -1,5 +1,5 @@
 """Rule delamination_map_point: figure 5's pool at one angular extent and sigma_cr, grown over the concentration ramp
-by eq. (2.28); what it does at each level (sphgag.studies.delamination.level_classes)."""
+by eq. (2.28); what it does at each level (sphgag.studies.delamination.tables.level_classes)."""
 
 import time
 

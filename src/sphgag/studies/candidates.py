@@ -1,7 +1,7 @@
 """Candidate rules of the delamination protocol (section 2.7): which intact particles the damage law of eq. (2.28)
 tests against sigma_cr.
 
-Every rule starts from the same set, the authors' script's (:meth:`sphgag.studies.delamination.Front.candidates`):
+Every rule starts from the same set, the authors' script's (:meth:`sphgag.studies.delamination.front.Front.candidates`):
 tissue particles of the media, off the wall surfaces, in a pool's radial band (the reference radii of its seeded
 sector) and within ``delamination.candidate_window_deg`` of the pool's current angular extent. A rule admits a subset
 of it, pool by pool. The paper compares "the radial stress at the tip of the pool" with sigma_cr (section 2.7): the
@@ -26,7 +26,7 @@ from ..engine.history import ParticleHistory
 @dataclass(frozen=True)
 class CandidateRule:
     """``admits(front, history, pool)``: the particles (a mask over all of them) that may be candidates of pool
-    ``pool`` (an index of ``front.sectors``), within the window of :class:`sphgag.studies.delamination.Front`."""
+    ``pool`` (an index of ``front.sectors``), within the window of :class:`sphgag.studies.delamination.front.Front`."""
 
     name: str
     description: str
@@ -40,7 +40,8 @@ def anywhere(front, hist: ParticleHistory, pool: int) -> np.ndarray:
 
 def in_contact(front, hist: ParticleHistory, pool: int) -> np.ndarray:
     """The particles with a GAG particle of the pool (seeded or converted) within the contact distance in the
-    reference configuration (:meth:`sphgag.studies.delamination.Front.touching`): the tip of the pool (the paper)."""
+    reference configuration (:meth:`sphgag.studies.delamination.front.Front.touching`): the tip of the pool (the
+    paper)."""
     return front.touching(hist, pool)
 
 

@@ -25,7 +25,7 @@ pressure. The outer layer of cells is held on the exact displacement of the pres
 elliptical hole with the slit's half-axes (:class:`sphgag.studies.inclusion.ExactBoundary`;
 Sneddon's crack as ``b/a -> 0``).
 
-**Growth** (as :mod:`sphgag.studies.delamination`): the pressure is raised level by level; at each,
+**Growth** (as :mod:`sphgag.studies.delamination.growth`): the pressure is raised level by level; at each,
 damage passes run until the band arrests: the onset measure is the opening stress ``sigma_yy``
 (eq. 2.10) of the candidate's column, a ruptured particle (D = 1) becomes a GAG particle of the
 slit along the conversion path, and every state is converged. Under pressure control
@@ -50,7 +50,7 @@ from ..engine.model import Model
 from ..engine.numerics import Numerics
 from ..physics import damage, fracture, materials
 from ..physics.donnan import PAPER_LAW
-from .delamination import intact_energy
+from .delamination.growth import intact_energy
 from .inclusion import ExactBoundary, Materials
 
 MAX_PASSES_PER_LEVEL = 400  # damage passes at one pressure level at most (growth under pressure control runs away)

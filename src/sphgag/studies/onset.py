@@ -21,7 +21,7 @@ from ..engine.model import Evaluation, Model
 class OnsetCriterion:
     """``measure(model, ev, history, candidates, settings)``: the radial Cauchy stress (eq. 2.10, current polar
     frame) at the ``candidates`` that the onset test of eq. (2.28) compares with sigma_cr (``settings``: the run's
-    :class:`sphgag.studies.delamination.Settings`)."""
+    :class:`sphgag.studies.delamination.settings.Settings`)."""
 
     name: str
     description: str

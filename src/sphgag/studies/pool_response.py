@@ -103,7 +103,7 @@ def swelling_settings(scenario: dict) -> dict:
 @dataclass
 class Response:
     """The pool's swelling table (:func:`sphgag.studies.protocols.pool_table`) and its delamination run's
-    ``(growth, summary)`` (:func:`sphgag.studies.delamination.labelled`), with its scenario."""
+    ``(growth, summary)`` (:func:`sphgag.studies.delamination.tables.labelled`), with its scenario."""
 
     scenario: dict
     swelling: pd.DataFrame

@@ -147,10 +147,10 @@ MAP_COLOURS = {
 
 def delamination_map(table: pd.DataFrame, swelling: pd.DataFrame, cases: dict, pressure_mmHg: float, laws):
     """The delamination map: a panel per charge law (row) and sigma_cr (column), pool angular extent (x) against
-    concentration level (y), each cell coloured by what the pool does there (:data:`delamination.LEVEL_CLASSES`).
-    On the paper's charge law's panels (prescribed), the end of figure 4's swelling runs of the passive wall at
-    ``pressure_mmHg`` (``swelling``: tip_stress.csv): a limit point where there is one (a star), else the last
-    converged state of a run that stops early (a cross)."""
+    concentration level (y), each cell coloured by what the pool does there
+    (:data:`sphgag.studies.delamination.tables.LEVEL_CLASSES`). On the paper's charge law's panels (prescribed), the end
+    of figure 4's swelling runs of the passive wall at ``pressure_mmHg`` (``swelling``: tip_stress.csv): a limit point
+    where there is one (a star), else the last converged state of a run that stops early (a cross)."""
     _style()
     laws = [law for law in laws if law in set(table.charge_law)]
     sigmas = sorted(table.sigma_cr_kPa.unique())

@@ -1,0 +1,67 @@
+"""Delamination and coalescence: damage-driven growth of GAG pools (paper section 2.7, figures 5-7).
+
+One module per concept:
+
+* :mod:`.settings`: the settings of one run (:class:`Settings`) and its concentration ramp;
+* :mod:`.front`: the pools' front: damage candidates, connectivity of the converted particles, delaminated length,
+  islands (:class:`Front`);
+* :mod:`.growth`: the staggered protocol of one run, seeding, damage passes, snaps (:class:`GrowthRun`,
+  :func:`grow`);
+* :mod:`.tables`: a run's records and the tables of them: rows, summary and its statistics, labels, the
+  delamination map's classes, the pool as a pressurised crack (:func:`griffith`);
+* :mod:`.snapshots`: a run's snapshots on disk, from which it can restart;
+* :mod:`.convergence`: the resolution study.
+
+The names the pipeline, the tests and the benchmarks use are imported here.
+"""
+
+from .convergence import convergence_study
+from .front import CONTACT_DX, Front, Islands
+from .growth import GrowthRun, grow, intact_energy, onset_measure, seeded_only
+from .settings import Settings
+from .snapshots import load_snapshot, save_snapshots
+from .tables import (
+    GROWTH_COLUMNS,
+    LEVEL_CLASSES,
+    SUMMARY_COLUMNS,
+    Pass,
+    Result,
+    first_level_growth,
+    griffith,
+    growth_rates,
+    growth_table,
+    labelled,
+    level_classes,
+    outcome,
+    paper_law,
+    run_summary,
+)
+
+__all__ = [
+    "CONTACT_DX",
+    "GROWTH_COLUMNS",
+    "LEVEL_CLASSES",
+    "SUMMARY_COLUMNS",
+    "Front",
+    "GrowthRun",
+    "Islands",
+    "Pass",
+    "Result",
+    "Settings",
+    "convergence_study",
+    "first_level_growth",
+    "griffith",
+    "grow",
+    "growth_rates",
+    "growth_table",
+    "intact_energy",
+    "labelled",
+    "level_classes",
+    "load_snapshot",
+    "onset_measure",
+    "outcome",
+    "paper_law",
+    "run_summary",
+    "save_snapshots",
+    "seeded_only",
+]

@@ -1,0 +1,434 @@
+"""The growth of GAG pools by damage (paper section 2.7, figures 5-7): one run of the staggered protocol
+(:class:`GrowthRun`), from seeding its pools to where it stops.
+
+The answer is a sequence of converged equilibria, not a trajectory. From a
+pressurised passive wall (lumen pressure held), the pools of a *pool set* are
+seeded (converted to GAG at c = 0, :class:`sphgag.engine.history.HistoryMaterial`); then
+the fixed-charge concentration ``c`` is raised level by level to
+``max_concentration_mEq_l`` and held there. At every level a staggered scheme runs:
+
+1. solve the equilibrium with the particles' history (damage ``D``, GAG pools) fixed;
+2. **damage pass**: update ``D`` of the candidate particles from that state
+   (eq. 2.28, :meth:`sphgag.physics.damage.DamageState.update`); particles with ``D = 1``
+   rupture and become GAG particles of the nearest pool (their fixed charge rises to
+   the pool's along the same path); solve the transition from the old history to
+   the new one (a material path the solver can bisect), and repeat;
+3. the level ends when a pass changes no ``D`` by more than ``damage_tolerance`` and
+   ruptures nothing.
+
+**Snaps.** A damage pass whose new history cannot be reached along its transition, or a
+concentration step with no equilibrium on its path (after bisection), has lost
+equilibrium: the wall snaps. The run follows the snap to where the overdamped
+pseudo-dynamics come to rest (:mod:`sphgag.engine.snap`), records that state (converged below
+the tolerance, ``snap`` in growth.csv) and keeps growing from it at the same
+concentration. A run ends where a level arrests at the highest concentration
+(``arrested``), where the pools merge (``merged``), where a pool spans ``max_extent_deg``
+(``maximum extent``) or comes within the candidate window of a symmetry edge
+(``symmetry edge``), after ``max_passes`` (``pass limit``), or where a snap comes to rest at
+no equilibrium (``no stable state after a snap``, with the step and load): always at its
+last equilibrium.
+
+**Pseudo-time** is the number of damage-and-relax passes. The paper's normalised time
+is that of its explicit dynamics, in which every time step is one damage update with
+at most one step of relaxation; a pass here is one damage update with complete
+relaxation, so pseudo-time counts the same updates, each taken to equilibrium.
+
+**Onset measure** (``criterion``): ``particle``, the particle's own radial Cauchy stress
+(current polar frame), as in the paper; or ``averaged``, the volume-weighted mean of the
+radial stress of the intact medial particles within a disc of diameter
+``averaging_length_um`` (:func:`sphgag.engine.measure.averaging_matrix`), which has a fixed
+physical size. Damage, once started, grows with the radial stretch beyond its onset
+value whatever the stress.
+"""
+
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ...engine import forces, measure, snap, solver
+from ...engine.geometry import Sector
+from ...engine.history import HistoryMaterial, ParticleHistory
+from ...engine.loading import MMHG_TO_KPA, Load
+from ...engine.model import Model
+from ...engine.numerics import Numerics
+from ...physics import damage
+from .. import artery, protocols
+from ..onset import CRITERIA
+from .front import Front
+from .settings import Settings
+from .tables import Pass, Result, growth_table, run_summary
+
+log = logging.getLogger("sphgag")
+
+
+def onset_measure(model: Model, ev, hist: ParticleHistory, cand: np.ndarray, settings: Settings) -> np.ndarray:
+    """The radial Cauchy stress (eq. 2.10, current polar frame) the onset test of eq. (2.28) compares with sigma_cr,
+    at the candidates, by the run's onset criterion (:data:`sphgag.studies.onset.CRITERIA`)."""
+    return CRITERIA[settings.criterion].measure(model, ev, hist, cand, settings)
+
+
+def intact_energy(model: Model, ev, base_props: np.ndarray) -> np.ndarray:
+    """``W_0`` (eq. 2.23) of every particle with the undamaged material, at the state ``ev``."""
+    W = np.empty(model.n)
+    forces.energy_densities(ev.F, ev.load.axial_stretch, model.cth, model.sth, base_props, W)
+    return W
+
+
+@dataclass
+class GrowthRun:
+    """One delamination run as a record of its state, with one method per step of the protocol.
+
+    :meth:`seed` (or :meth:`resume`) makes the run; :meth:`raise_concentration` moves it to the next level of the
+    ramp; :meth:`next_history` is one damage update; :meth:`damage_pass` solves the history it makes;
+    :meth:`follow_snap` follows a step that has no equilibrium on its path; :meth:`level` repeats damage passes at
+    one concentration until the pools arrest or the run ends; :meth:`run` walks the ramp and returns the
+    :class:`Result`. Every state the run holds is converged below the solver tolerance.
+    """
+
+    model: Model
+    front: Front
+    settings: Settings
+    opts: dict  # solver options and the run name (Numerics.solver_options)
+    material: HistoryMaterial
+    state: solver.State
+    step: int = 0  # pseudo-time: damage passes so far
+    wanted: frozenset = frozenset()  # pseudo-times at which to keep a snapshot
+    rows: list = field(default_factory=list)
+    snapshots: list = field(default_factory=list)
+    dissipated: float = 0.0  # kPa um^2 per unit axial length
+    onset_c: float = np.nan
+    merge_step: int | None = None
+    max_residual: float = 0.0
+    snaps: int = 0
+    snap_length: float = 0.0  # delaminated length gained through snaps [um]
+    tip: float = np.nan  # largest onset measure of the current state (the last row's tip stress)
+    _front: tuple = ()  # (candidates, their pools, their onset measures) of the current state
+
+    @property
+    def run_name(self) -> str:
+        return self.opts["run"]
+
+    @property
+    def hist(self) -> ParticleHistory:
+        return self.material.history
+
+    # -- making a run ---------------------------------------------------------------------------------------------
+    @classmethod
+    def seed(cls, model, start, sectors, settings, numerics, gag, base, run=None, snapshot_steps=()) -> GrowthRun:
+        """Convert the medial particles of ``sectors`` to GAG pools at c = 0 in the converged pressurised state
+        ``start`` (``settings.conversion_steps`` converged increments of the seeding path)."""
+        numerics = Numerics.of(numerics)
+        opts = dict(run=run or model.name, **numerics.solver_options())
+        material = artery.seeding(base, model.layout, sectors, gag)
+        model.set_props(material)
+        base_load = protocols.swelling_load(start.load, 0.0, 0.0)
+        law = settings.law
+        log.info(
+            "[%s] seeding %d pool(s) (%d particles) in %d steps at %.1f mmHg; sigma_cr %.0f kPa, %s onset, %s",
+            opts["run"],
+            len(sectors),
+            int(material.history.gag.sum()),
+            settings.conversion_steps,
+            base_load.pressure_mmHg,
+            law.critical_stress_kPa,
+            settings.criterion,
+            law.rupture,
+        )
+        fractions = np.linspace(0, 1, settings.conversion_steps + 1)[1:]
+        state = solver.follow_path(
+            model, start.x, base_load, [protocols.swelling_load(base_load, f, 0.0) for f in fractions], **opts
+        )[-1]
+        run = cls(model, Front.of(model, sectors, settings), settings, opts, material, state)
+        run.wanted = frozenset(int(s) for s in snapshot_steps)
+        run._settle(material.settled())
+        run._accept(state)
+        return run
+
+    @classmethod
+    def resume(cls, model, snapshot, sectors, settings, numerics, gag, base, run=None, snapshot_steps=()) -> GrowthRun:
+        """Continue from ``snapshot = (state, history, pseudo_time)`` of this run (:func:`load_snapshot`)."""
+        numerics = Numerics.of(numerics)
+        state, hist, step = snapshot
+        opts = dict(run=run or model.name, **numerics.solver_options())
+        material = HistoryMaterial(base, hist, gag)
+        model.set_props(material)
+        log.info(
+            "[%s] resuming at pass %d, c = %g mEq/l (%d GAG particles)",
+            opts["run"],
+            step,
+            state.load.material_value("concentration"),
+            int(hist.gag.sum()),
+        )
+        if state.evaluation is None:  # a saved snapshot: evaluate it and measure its residual
+            ev = model.evaluate(state.x, state.load)
+            conv = state.convergence or solver.Convergence(solver.relative_residual(model, ev), 0, 1, 0, 0.0)
+            state = solver.State(state.load, state.x, ev, conv)
+        run = cls(model, Front.of(model, sectors, settings), settings, opts, material, state, step)
+        run.wanted = frozenset(int(s) for s in snapshot_steps)
+        run._accept(state)
+        return run
+
+    # -- steps of the protocol ------------------------------------------------------------------------------------
+    @property
+    def concentration(self) -> float:
+        return float(self.state.load.material_value("concentration"))
+
+    def raise_concentration(self, c: float) -> None:
+        """Move the run to the fixed-charge concentration ``c`` (mEq/l) with its history fixed; a step with no
+        equilibrium on its path is followed as a snap."""
+        load = protocols.swelling_load(self.state.load, 1.0, float(c))
+        if load == self.state.load:
+            return
+        try:
+            state = solver.follow_path(self.model, self.state.x, self.state.load, [load], **self.opts)[-1]
+        except solver.NotConverged as exc:
+            state = self.follow_snap(load, f"c = {self.concentration:g} -> {c:g} mEq/l", exc)
+        self._accept(state)
+
+    def next_history(self) -> tuple[ParticleHistory, float] | None:
+        """The history one damage update (eq. 2.28) from the current state makes, and the energy the update releases
+        at the current deformation [kPa um^2 per unit axial length]; None if it would change no ``D`` by more than
+        ``damage_tolerance`` and rupture nothing (new onsets are then made history, D unchanged)."""
+        hist, lay = self.hist, self.model.layout
+        cand, pools, sigma = self._front
+        ev = self.state.evaluation
+        dmg = damage.DamageState(hist.D.copy(), hist.onset_stretch.copy(), hist.onset_energy.copy())
+        radial = np.full(lay.n, -np.inf)
+        radial[cand] = sigma
+        W0 = intact_energy(self.model, ev, self.material.base(ev.load))
+        band = np.full(lay.n, np.nan)
+        band[cand] = self.front.thickness[pools]  # the band a pool's growth converts: its radial extent
+        dmg.update(self.settings.law, cand, radial, damage.radial_stretch(ev.F, lay.theta), W0, band)
+        dmg.D[hist.gag] = hist.D[hist.gag]
+        ruptured = np.flatnonzero(dmg.ruptured & ~hist.gag)
+        if np.isnan(self.onset_c) and np.any(~np.isnan(dmg.onset_stretch)):
+            self.onset_c = self.concentration
+        if float(np.max(dmg.D - hist.D, initial=0.0)) <= self.settings.damage_tolerance and ruptured.size == 0:
+            if not np.array_equal(dmg.onset_stretch, hist.onset_stretch, equal_nan=True):
+                # new onsets are history; changes of D below the tolerance are not applied
+                onsets = hist.with_damage(hist.D, dmg.onset_stretch, dmg.onset_energy)
+                self._settle(HistoryMaterial(self.material.base, onsets, self.material.gag))
+            return None
+        released = float(np.sum((dmg.D - hist.D) * W0 * lay.volume))
+        new = hist.with_damage(dmg.D, dmg.onset_stretch, dmg.onset_energy)
+        if ruptured.size:
+            owner = np.full(lay.n, -1)
+            owner[cand] = pools
+            new = new.rupture(ruptured, owner[ruptured], self.step + 1)
+        return new, released
+
+    def damage_pass(self) -> bool:
+        """One damage pass: the next history (:meth:`next_history`) and the solve of its transition from the current
+        state (a snap where the transition has no equilibrium on its path); False if the damage did not change."""
+        update = self.next_history()
+        if update is None:
+            return False
+        new, released = update
+        hist, step = self.hist, self.step + 1
+        ruptured = np.flatnonzero(new.gag & ~hist.gag)
+        load = self.state.load
+        state, self.material, snapped = snap.transition(
+            self.model,
+            self.state.x,
+            self.material,
+            new,
+            load,
+            self.opts,
+            lambda exc: self.follow_snap(load, f"pass {step}", exc),  # NoStableState leaves the run as it was
+        )
+        self.step = step
+        self.dissipated += released
+        self._accept(state)
+        if snapped:
+            self.snap_length += self.front.delaminated_length(new) - self.front.delaminated_length(hist)
+        self._record(snapped=snapped)
+        if ruptured.size:
+            log.info(
+                "[%s] pass %d, c = %g mEq/l: %d ruptured (%d converted in all), delaminated %.1f um, "
+                "%d islands apart, max onset stress %.1f kPa%s",
+                self.run_name,
+                self.step,
+                self.concentration,
+                ruptured.size,
+                self.rows[-1].converted[0],
+                self.rows[-1].length,
+                self.rows[-1].islands.count,
+                self.tip,
+                " (through a snap)" if snapped else "",
+            )
+        return True
+
+    def follow_snap(self, load: Load, what: str, exc: solver.SimulationError) -> solver.State:
+        """Follow a step with no equilibrium on its path (:mod:`sphgag.engine.snap`) from the current state to the
+        equilibrium the overdamped pseudo-dynamics come to rest at, under the model's current material and ``load``;
+        raises :class:`sphgag.engine.snap.NoStableState` if there is none."""
+        log.info(
+            "[%s] %s at c = %g mEq/l has no equilibrium on its path (%s): following the snap",
+            self.run_name,
+            what,
+            load.material_value("concentration"),
+            exc.reason,
+        )
+        state = snap.follow(self.model, self.state.x, load, **self.opts)
+        self.snaps += 1
+        return state
+
+    def level(self, c: float) -> str:
+        """Damage passes at concentration ``c`` until the pools arrest (``arrested``) or the run must end (its
+        reason: ``merged``, ``maximum extent``, ``symmetry edge``, ``pass limit``)."""
+        self.raise_concentration(c)
+        self._record(first_of_level=True)
+        while self.damage_pass():
+            if self.merge_step is not None:
+                return "merged"
+            if self.step >= self.settings.max_passes:
+                return "pass limit"
+            if self.front.extent_deg(self.hist).max() >= self.settings.max_extent_deg:
+                return "maximum extent"
+            if self.front.at_symmetry_edge(self.hist):
+                return "symmetry edge"
+        return "arrested"
+
+    def run(self) -> Result:
+        """Walk the concentration ramp from the current concentration; the run ends where a level does not arrest,
+        or where a snap finds no stable state (``stop`` names the step and the load)."""
+        stop, level = "arrested", self.concentration  # the level the run stops in
+        for c in self.settings.levels[self.settings.levels >= self.concentration - 1e-9]:
+            level = float(c)
+            try:
+                stop = self.level(float(c))
+            except snap.NoStableState as exc:
+                stop = f"no stable state after a snap ({exc.reason})"
+                log.warning(
+                    "[%s] c = %g mEq/l, pass %d: %s; the run ends at its last equilibrium",
+                    self.run_name,
+                    c,
+                    self.step + 1,
+                    stop,
+                )
+                self.model.set_props(self.material)
+                break
+            log.info(
+                "[%s] c = %g mEq/l: %s after %d passes, %d converted",
+                self.run_name,
+                c,
+                stop,
+                self.step,
+                self.rows[-1].converted[0],
+            )
+            if stop != "arrested":
+                break
+        return self.result(stop, level)
+
+    # -- bookkeeping ----------------------------------------------------------------------------------------------
+    def _settle(self, material: HistoryMaterial) -> None:
+        self.material = material
+        self.model.set_props(material)
+
+    def _accept(self, state: solver.State) -> None:
+        """Make ``state`` (converged under the current material) the run's state and measure its front."""
+        self.state = state
+        self.max_residual = max(self.max_residual, state.convergence.residual)
+        cand, pools = self.front.candidates(self.hist)
+        sigma = (
+            onset_measure(self.model, state.evaluation, self.hist, cand, self.settings) if cand.size else np.empty(0)
+        )
+        self._front = (cand, pools, sigma)
+        self.tip = float(sigma.max()) if sigma.size else np.nan
+        if self.merge_step is None and self.step and self.front.merged(self.hist):
+            self.merge_step = self.step
+            log.info("[%s] pools merged at pass %d (c = %g mEq/l)", self.run_name, self.step, self.concentration)
+
+    def _record(self, first_of_level=False, snapped=False) -> None:
+        st = self.state
+        self.rows.append(
+            Pass(
+                self.step,
+                self.concentration,
+                self.front.converted(self.hist),
+                self.front.delaminated_length(self.hist),
+                self.front.islands(self.hist),
+                self.tip,
+                st.convergence.residual,
+                snapped,
+            )
+        )
+        if (first_of_level or self.step in self.wanted) and not any(
+            s[0] == self.step and s[1].load == st.load for s in self.snapshots
+        ):
+            self.snapshots.append((self.step, st, self.hist))
+            # the run continues from a snapshot exactly as a restart from it does: without a stale factorisation
+            # (equilibria need not be unique, e.g. a crushed tissue bridge between two GAG regions, so the
+            # solver's path must be the same)
+            self.model.factorisation = None
+
+    def result(self, stop: str, level: float) -> Result:
+        """The run's rows and summary (:func:`sphgag.studies.delamination.tables.run_summary`); it stopped (``stop``)
+        in the ramp's level ``level`` [mEq/l]."""
+        growth = growth_table(self.rows)
+        summary = run_summary(
+            growth,
+            self.rows[-1],
+            stop,
+            level,
+            onset_concentration=self.onset_c,
+            merge_step=self.merge_step,
+            dissipated=self.dissipated,
+            passes=self.step,
+            snaps=self.snaps,
+            snap_length=self.snap_length,
+            max_residual=self.max_residual,
+            pressure_mmHg=measure.carried_pressure(self.model, self.state.evaluation) / MMHG_TO_KPA,
+            concentration_step=self.settings.concentration_step_mEq_l,
+        )
+        state = self.state
+        snapshots = list(self.snapshots)
+        if not any(s[0] == self.step and s[1].load == state.load for s in snapshots):
+            snapshots.append((self.step, state, self.hist))
+        return Result(growth, summary, snapshots, (state, self.hist))
+
+
+def grow(
+    model: Model,
+    start: solver.State,
+    sectors: list[Sector],
+    settings: Settings,
+    numerics: Numerics,
+    gag: dict,
+    base,
+    snapshot_steps=(),
+    run: str | None = None,
+    resume: tuple | None = None,
+) -> Result:
+    """Seed the pools of ``sectors`` in the wall at the converged pressurised state ``start`` and grow them
+    (:class:`GrowthRun`).
+
+    ``base``: the intact wall's material (``load -> props``, e.g. :class:`sphgag.studies.artery.BilayerMaterial`).
+    ``snapshot_steps``: pseudo-times at which to keep the state (the first state of every concentration level and
+    the last state are always kept). ``resume``: ``(state, history, pseudo_time)`` of a snapshot of this run
+    (:func:`load_snapshot`) to continue from instead of seeding; the rows then start there.
+    """
+    args = (model, resume if resume is not None else start, sectors, settings, numerics, gag, base, run, snapshot_steps)
+    return (GrowthRun.resume(*args) if resume is not None else GrowthRun.seed(*args)).run()
+
+
+def seeded_only(
+    model: Model,
+    start: solver.State,
+    sectors: list[Sector],
+    settings: Settings,
+    numerics: Numerics,
+    gag: dict,
+    base,
+    stop: str,
+    run: str | None = None,
+) -> Result:
+    """A run that ends where its pools are seeded, before the ramp, for the reason ``stop`` (e.g. a damage law whose
+    G_c is not defined): its one state is the seeded wall at c = 0 (``settings`` seed it; no damage law acts)."""
+    log.warning("[%s] %s: the run ends where its pools are seeded", run or model.name, stop)
+    seeded = GrowthRun.seed(model, start, sectors, settings, numerics, gag, base, run=run)
+    seeded._record(first_of_level=True)  # the seeded wall is the run's one row (and its snapshot)
+    return seeded.result(stop, 0.0)

@@ -1,0 +1,73 @@
+"""The settings of one delamination run (paper section 2.7): the ``delamination`` configuration section
+(config/schema.yaml) with the run's own critical stress sigma_cr, onset criterion and damage law (eq. 2.28), and the
+concentration ramp they make."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, fields
+
+import numpy as np
+
+from ...physics import damage
+from ..candidates import RULES
+from ..onset import CRITERIA
+
+
+@dataclass(frozen=True)
+class Settings:
+    """The ``delamination`` configuration of one run (see config/schema.yaml)."""
+
+    critical_stress_kPa: float
+    rupture_stretch_increment: float
+    criterion: str
+    averaging_length_um: float
+    candidate_window_deg: float
+    damage_tolerance: float
+    concentration_step_mEq_l: float
+    max_concentration_mEq_l: float
+    max_passes: int
+    max_extent_deg: float
+    conversion_steps: int
+    damage_law: str = "paper"  # damage.LAWS: eq. (2.28) as printed, or with a fracture energy
+    fracture_energy_J_m2: float = np.nan  # G_c of the fracture_energy law
+    candidates: str = "contact"  # candidates.RULES: the particles touching the pool (the paper), or the window
+
+    def __post_init__(self):
+        if self.criterion not in CRITERIA:
+            raise ValueError(f"criterion must be one of {', '.join(CRITERIA)}, got {self.criterion!r}")
+        if self.candidates not in RULES:
+            raise ValueError(f"candidates must be one of {', '.join(RULES)}, got {self.candidates!r}")
+        if self.damage_law not in damage.LAWS:
+            raise ValueError(f"damage_law must be one of {', '.join(damage.LAWS)}, got {self.damage_law!r}")
+
+    @classmethod
+    def config_keys(cls) -> tuple[str, ...]:
+        """The keys of the ``delamination`` configuration section that every run reads (:meth:`from_config`); sigma_cr,
+        the onset criterion and the damage law are each run's own."""
+        own = ("critical_stress_kPa", "criterion", "damage_law", "fracture_energy_J_m2")
+        return tuple(f.name for f in fields(cls) if f.name not in own)
+
+    @classmethod
+    def from_config(
+        cls, de: dict, critical_stress_kPa: float, criterion: str, fracture_energy_J_m2: float | None = None
+    ) -> Settings:
+        """The settings of one run from the ``delamination`` configuration section (its :meth:`config_keys`): eq.
+        (2.28) as printed, or the fracture-energy law where ``fracture_energy_J_m2`` (G_c) is given."""
+        keys = cls.config_keys()
+        law = dict(damage_law="paper")
+        if fracture_energy_J_m2 is not None:
+            law = dict(damage_law="fracture_energy", fracture_energy_J_m2=float(fracture_energy_J_m2))
+        return cls(
+            critical_stress_kPa=float(critical_stress_kPa), criterion=criterion, **law, **{k: de[k] for k in keys}
+        )
+
+    @property
+    def law(self) -> damage.DamageLaw | damage.FractureEnergyLaw:
+        """The run's damage law, from the registry :data:`sphgag.physics.damage.LAWS`."""
+        return damage.LAWS[self.damage_law].of(self)
+
+    @property
+    def levels(self) -> np.ndarray:
+        """Concentrations [mEq/l] of the ramp, 0 excluded, ``max_concentration_mEq_l`` included."""
+        n = int(np.ceil(self.max_concentration_mEq_l / self.concentration_step_mEq_l - 1e-9))
+        return np.linspace(0.0, self.max_concentration_mEq_l, n + 1)[1:]
