@@ -136,7 +136,7 @@ def main():
     out["last_converged"] = dict(
         residual=run.state.convergence.residual, modes=stiffness_modes(model, run.state.evaluation)
     )
-    new, _ = run.next_history()
+    new = run.next_history().history
     model.set_props(HistoryMaterial(base, hist, gag, new))
     load = state.load
     x, t, dt, stall = state.x, 0.0, 0.25, None

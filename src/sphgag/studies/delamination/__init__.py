@@ -17,7 +17,7 @@ The names the pipeline, the tests and the benchmarks use are imported here.
 
 from .convergence import convergence_study
 from .front import CONTACT_DX, Front, Islands
-from .growth import GrowthRun, grow, intact_energy, onset_measure, seeded_only
+from .growth import DamageUpdate, GrowthRun, grow, intact_energy, onset_measure, seeded_only
 from .settings import Settings
 from .snapshots import load_snapshot, save_snapshots
 from .tables import (
@@ -42,6 +42,7 @@ __all__ = [
     "GROWTH_COLUMNS",
     "LEVEL_CLASSES",
     "SUMMARY_COLUMNS",
+    "DamageUpdate",
     "Front",
     "GrowthRun",
     "Islands",

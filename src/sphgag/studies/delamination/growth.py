@@ -77,14 +77,31 @@ def intact_energy(model: Model, ev, base_props: np.ndarray) -> np.ndarray:
     return W
 
 
+@dataclass(frozen=True)
+class DamageUpdate:
+    """One damage update (eq. 2.28) from a run's current state (:meth:`GrowthRun.next_history`).
+
+    ``history``: the history it makes (damage, onsets and ruptures), None if it changes no ``D`` by more than
+    ``damage_tolerance`` and ruptures nothing; ``released``: the energy raising ``D`` releases at the current
+    deformation [kPa um^2 per unit axial length] (0 without ``history``); ``onsets``: without ``history``, the current
+    history with the update's new onsets (``D`` unchanged), None if it has none; ``begun``: some particle has begun
+    damage (an onset stretch)."""
+
+    history: ParticleHistory | None
+    released: float = 0.0
+    onsets: ParticleHistory | None = None
+    begun: bool = False
+
+
 @dataclass
 class GrowthRun:
     """One delamination run as a record of its state, with one method per step of the protocol.
 
     :meth:`seed` (or :meth:`resume`) makes the run; :meth:`raise_concentration` moves it to the next level of the
-    ramp; :meth:`next_history` is one damage update; :meth:`damage_pass` solves the history it makes;
-    :meth:`follow_snap` follows a step that has no equilibrium on its path; :meth:`level` repeats damage passes at
-    one concentration until the pools arrest or the run ends; :meth:`run` walks the ramp and returns the
+    ramp; :meth:`next_history` finds one damage update (a query: the run does not change) and :meth:`take_onsets`
+    keeps the onsets it tells of; :meth:`damage_pass` solves the history it makes; :meth:`follow_snap` follows a step
+    that has no equilibrium on its path; :meth:`level` repeats damage passes at one concentration until the pools
+    arrest or the run ends; :meth:`run` walks the ramp and returns the
     :class:`Result`. Every state the run holds is converged below the solver tolerance.
     """
 
@@ -169,6 +186,7 @@ class GrowthRun:
         run = cls(model, Front.of(model, sectors, settings), settings, opts, material, state, step)
         run.wanted = frozenset(int(s) for s in snapshot_steps)
         run._accept(state)
+        run._detect_merge()
         return run
 
     # -- steps of the protocol ------------------------------------------------------------------------------------
@@ -188,10 +206,10 @@ class GrowthRun:
             state = self.follow_snap(load, f"c = {self.concentration:g} -> {c:g} mEq/l", exc)
         self._accept(state)
 
-    def next_history(self) -> tuple[ParticleHistory, float] | None:
-        """The history one damage update (eq. 2.28) from the current state makes, and the energy the update releases
-        at the current deformation [kPa um^2 per unit axial length]; None if it would change no ``D`` by more than
-        ``damage_tolerance`` and rupture nothing (new onsets are then made history, D unchanged)."""
+    def next_history(self) -> DamageUpdate:
+        """The damage update (eq. 2.28) from the current state (:class:`DamageUpdate`): the history it makes and the
+        energy it releases at the current deformation, or, if it changes no ``D`` by more than ``damage_tolerance``
+        and ruptures nothing, its new onsets alone. A query: the run does not change (:meth:`take_onsets`)."""
         hist, lay = self.hist, self.model.layout
         cand, pools, sigma = self._front
         ev = self.state.evaluation
@@ -204,29 +222,38 @@ class GrowthRun:
         dmg.update(self.settings.law, cand, radial, damage.radial_stretch(ev.F, lay.theta), W0, band)
         dmg.D[hist.gag] = hist.D[hist.gag]
         ruptured = np.flatnonzero(dmg.ruptured & ~hist.gag)
-        if np.isnan(self.onset_c) and np.any(~np.isnan(dmg.onset_stretch)):
-            self.onset_c = self.concentration
+        begun = bool(np.any(~np.isnan(dmg.onset_stretch)))
         if float(np.max(dmg.D - hist.D, initial=0.0)) <= self.settings.damage_tolerance and ruptured.size == 0:
+            onsets = None
             if not np.array_equal(dmg.onset_stretch, hist.onset_stretch, equal_nan=True):
-                # new onsets are history; changes of D below the tolerance are not applied
                 onsets = hist.with_damage(hist.D, dmg.onset_stretch, dmg.onset_energy)
-                self._settle(HistoryMaterial(self.material.base, onsets, self.material.gag))
-            return None
+            return DamageUpdate(None, onsets=onsets, begun=begun)
         released = float(np.sum((dmg.D - hist.D) * W0 * lay.volume))
         new = hist.with_damage(dmg.D, dmg.onset_stretch, dmg.onset_energy)
         if ruptured.size:
             owner = np.full(lay.n, -1)
             owner[cand] = pools
             new = new.rupture(ruptured, owner[ruptured], self.step + 1)
-        return new, released
+        return DamageUpdate(new, released, begun=begun)
+
+    def take_onsets(self, update: DamageUpdate) -> None:
+        """Keep what ``update`` tells of damage onsets: the concentration of the run's first onset, and, where the
+        update changes no ``D``, its new onsets, made history (changes of ``D`` below the tolerance are not
+        applied)."""
+        if np.isnan(self.onset_c) and update.begun:
+            self.onset_c = self.concentration
+        if update.onsets is not None:
+            self._settle(HistoryMaterial(self.material.base, update.onsets, self.material.gag))
 
     def damage_pass(self) -> bool:
-        """One damage pass: the next history (:meth:`next_history`) and the solve of its transition from the current
-        state (a snap where the transition has no equilibrium on its path); False if the damage did not change."""
+        """One damage pass: the next history (:meth:`next_history`, its onsets kept by :meth:`take_onsets`) and the
+        solve of its transition from the current state (a snap where the transition has no equilibrium on its path);
+        False if the damage did not change."""
         update = self.next_history()
-        if update is None:
+        self.take_onsets(update)
+        if update.history is None:
             return False
-        new, released = update
+        new, released = update.history, update.released
         hist, step = self.hist, self.step + 1
         ruptured = np.flatnonzero(new.gag & ~hist.gag)
         load = self.state.load
@@ -242,6 +269,7 @@ class GrowthRun:
         self.step = step
         self.dissipated += released
         self._accept(state)
+        self._detect_merge()
         if snapped:
             self.snap_length += self.front.delaminated_length(new) - self.front.delaminated_length(hist)
         self._record(snapped=snapped)
@@ -338,6 +366,11 @@ class GrowthRun:
         )
         self._front = (cand, pools, sigma)
         self.tip = float(sigma.max()) if sigma.size else np.nan
+
+    def _detect_merge(self) -> None:
+        """Note the pass at which the pools first touch (:meth:`Front.merged`). A step of its own where the history is
+        new, the only times the pools can come to touch: after every damage pass and on resuming from a snapshot (the
+        seeded pools, pass 0, do not count)."""
         if self.merge_step is None and self.step and self.front.merged(self.hist):
             self.merge_step = self.step
             log.info("[%s] pools merged at pass %d (c = %g mEq/l)", self.run_name, self.step, self.concentration)
