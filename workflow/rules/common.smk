@@ -65,6 +65,13 @@ STATE_PRESSURES = [f"{p:g}" for p in config["bilayer_calibration"]["state_pressu
 STATE = "results/states/{model}_{pressure}mmHg.npz"
 
 
+# A run's key names its files: its results and log nest by the key's parts ("{law}/{pool}/..."), while its provenance
+# record and benchmark are single files named by the rule and the key with each / as _ (flat).
+def flat(key):
+    """The run key ``key`` ("{law}/{run}") as one file name ("{law}_{run}")."""
+    return key.replace("/", "_")
+
+
 # Swelling (figure 4)
 SW = config["swelling"]
 CASES = list(SW["cases"])
@@ -94,13 +101,16 @@ def swell_runs(pattern, **wildcards):
     return [path for law, pool in pairs for path in expand(pattern, law=law, pool=pool, **others)]
 
 
-# one run per (charge law, pool model, model, pool, pressure), each with its own law and pool model only
-SWELL_RUNS = swell_runs("results/swelling/runs/{law}/{pool}/{model}_{case}_{pressure}mmHg.csv")
+# the key of a swelling run (rules swell, pool_stresses, paraview_swelling): one run per (charge law, pool model,
+# model, pool, pressure), each with its own law and pool model only
+SWELL_NAME = "{law}/{pool}/{model}_{case}_{pressure}mmHg"
 
 
 # Delamination (figures 5-7)
 DE = config["delamination"]
 DE_PRESSURE = f"{DE['pressure_mmHg']:g}"
+# the state every delamination run starts from: the passive wall at delamination.pressure_mmHg
+DE_STATE = STATE.format(model="passive", pressure=DE_PRESSURE)
 # the pool sets' roles in the figures (delamination.figures): figure 5's set runs at every critical_stresses_kPa and
 # is the set of the resolution study; figures 6 and 7 show theirs; every set runs and appears in the tables
 DE_FIGURES = DE["figures"]
@@ -118,8 +128,17 @@ DE_RUNS = [
 # settings, not a wildcard: changing it reruns every delamination run
 DE_SETTINGS = {k: DE[k] for k in DelaminationSettings.config_keys()}
 DE_DX = [f"{dx:g}" for dx in DE["convergence"]["dx_um"]]
+# the key of a delamination run under the paper's damage law (rule delaminate)
 DE_NAME = "{law}/{poolset}_{sigma}kPa_{criterion}"
-DE_RUN = f"results/delamination/runs/{DE_NAME}"
+
+
+def de_run(name):
+    """The files of the delamination run ``name`` (a key or a run's name): its growth and summary tables and its
+    snapshots."""
+    path = f"results/delamination/runs/{name}"
+    return dict(growth=f"{path}_growth.csv", summary=f"{path}_summary.csv", snapshots=f"{path}_snapshots.npz")
+
+
 # the damage law with a fracture energy: figure 5's set at critical_stress_kPa, default criterion, one run per G_c
 # (and per charge law); "paper" is the G_c that the paper's law dissipates in its run of that pool (prescribed law)
 DE_FE = DE["fracture_energy"]
@@ -127,27 +146,30 @@ DE_FE = DE["fracture_energy"]
 DE_MATCH = DE_FE["match_paper"] and PAPER_LAW in LAWS
 DE_TOUGHNESS = [f"{g:g}" for g in DE_FE["fracture_energies_J_m2"]] + (["paper"] if DE_MATCH else [])
 DE_FE_RUN = dict(poolset=FIG5_SET, sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"][0])
-DE_FE_PATH = f"{DE_RUN}_Gc{{gc}}"
-# every delamination run by its path under results/delamination/runs/ ("{law}/{poolset}_{sigma}kPa_{criterion}",
-# with "_Gc{gc}" for the fracture-energy runs): its growth and summary tables, snapshots, ParaView series, animation.
+# the key of a run of the damage law with a fracture energy (rule delaminate_fracture_energy)
+DE_FE_NAME = f"{DE_NAME}_Gc{{gc}}"
+# every delamination run by its name (its key filled in: DE_NAME, or DE_FE_NAME for the fracture-energy runs), which
+# names its files (de_run: growth and summary tables, snapshots), ParaView series and animation.
 # The runs of the paper's damage law (figures 5-7, the claims) and those of the law with a fracture energy (target
 # fracture_energy) have tables of their own.
 DE_PAPER_NAMES = [DE_NAME.format(law=law, **r) for law in LAWS for r in DE_RUNS]
-DE_FE_NAMES = [f"{DE_NAME}_Gc{{gc}}".format(law=law, gc=gc, **DE_FE_RUN) for law in LAWS for gc in DE_TOUGHNESS]
+DE_FE_NAMES = [DE_FE_NAME.format(law=law, gc=gc, **DE_FE_RUN) for law in LAWS for gc in DE_TOUGHNESS]
 DE_RUN_NAMES = DE_PAPER_NAMES + DE_FE_NAMES
 
 
 def run_tables(names, table):
     """The ``table`` (growth or summary) of each delamination run of ``names``."""
-    return [f"results/delamination/runs/{name}_{table}.csv" for name in names]
+    return [de_run(name)[table] for name in names]
 
 
 # the run whose dissipation is the fracture-energy runs' "paper" G_c (prescribed law), and every run that keeps
 # snapshots: the runs of the tables and that one, where it is not among them (a reduced configuration's sigma_cr)
 DE_MATCHED = DE_NAME.format(law=PAPER_LAW, **DE_FE_RUN)
 DE_SNAPSHOT_NAMES = DE_RUN_NAMES + ([DE_MATCHED] if DE_MATCH and DE_MATCHED not in DE_RUN_NAMES else [])
-# the snapshots of any delamination run (rule delaminate or delaminate_fracture_energy), by its name
-DE_SNAPSHOTS = "results/delamination/runs/{law}/{run}_snapshots.npz"
+# any delamination run (rule delaminate or delaminate_fracture_energy) by its name "{law}/{run}" (law_and_run), and
+# its snapshots
+DE_ANY_NAME = "{law}/{run}"
+DE_SNAPSHOTS = de_run(DE_ANY_NAME)["snapshots"]
 
 
 def law_and_run(names):

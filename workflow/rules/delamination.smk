@@ -7,21 +7,23 @@ wildcard_constraints:
     dedx="|".join(re.escape(dx) for dx in DE_DX),
 
 
+# the key of a run of the resolution study: one charge law, spacing and onset criterion
+DC_NAME = "{law}/dx{dedx}_{criterion}"
+
+
 rule delaminate:
     """Pool set {poolset} in the passive wall, {law} charge: seeded, swollen, grown by damage at sigma_cr = {sigma} kPa
     ({criterion})."""
     input:
         code=SPHGAG,
-        state=STATE.format(model="passive", pressure=DE_PRESSURE),
+        state=DE_STATE,
     output:
-        growth=f"{DE_RUN}_growth.csv",
-        summary=f"{DE_RUN}_summary.csv",
-        snapshots=f"{DE_RUN}_snapshots.npz",
-        provenance="results/provenance/delaminate_{law}_{poolset}_{sigma}kPa_{criterion}.json",
+        **de_run(DE_NAME),
+        provenance=f"results/provenance/delaminate_{flat(DE_NAME)}.json",
     log:
-        "logs/delaminate/{law}/{poolset}_{sigma}kPa_{criterion}.log",
+        f"logs/delaminate/{DE_NAME}.log",
     benchmark:
-        "results/benchmarks/delaminate_{law}_{poolset}_{sigma}kPa_{criterion}.tsv"
+        f"results/benchmarks/delaminate_{flat(DE_NAME)}.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -42,19 +44,15 @@ rule delaminate_fracture_energy:
     J/m^2 (onset at sigma_cr = {sigma} kPa, {criterion}); G_c = paper: the energy the paper's law dissipates."""
     input:
         code=SPHGAG,
-        state=STATE.format(model="passive", pressure=DE_PRESSURE),
-        matched=lambda wildcards: (
-            f"results/delamination/runs/{DE_MATCHED}_summary.csv" if wildcards.gc == "paper" else []
-        ),
+        state=DE_STATE,
+        matched=lambda wildcards: de_run(DE_MATCHED)["summary"] if wildcards.gc == "paper" else [],
     output:
-        growth=f"{DE_FE_PATH}_growth.csv",
-        summary=f"{DE_FE_PATH}_summary.csv",
-        snapshots=f"{DE_FE_PATH}_snapshots.npz",
-        provenance="results/provenance/delaminate_{law}_{poolset}_{sigma}kPa_{criterion}_Gc{gc}.json",
+        **de_run(DE_FE_NAME),
+        provenance=f"results/provenance/delaminate_{flat(DE_FE_NAME)}.json",
     log:
-        "logs/delaminate/{law}/{poolset}_{sigma}kPa_{criterion}_Gc{gc}.log",
+        f"logs/delaminate/{DE_FE_NAME}.log",
     benchmark:
-        "results/benchmarks/delaminate_{law}_{poolset}_{sigma}kPa_{criterion}_Gc{gc}.tsv"
+        f"results/benchmarks/delaminate_{flat(DE_FE_NAME)}.tsv"
     wildcard_constraints:
         gc="|".join(re.escape(g) for g in DE_TOUGHNESS),
     conda:
@@ -152,12 +150,12 @@ rule delamination_convergence_dx:
     input:
         code=SPHGAG,
     output:
-        table="results/delamination/convergence/{law}/dx{dedx}_{criterion}.csv",
-        provenance="results/provenance/delamination_convergence_{law}_dx{dedx}_{criterion}.json",
+        table=f"results/delamination/convergence/{DC_NAME}.csv",
+        provenance=f"results/provenance/delamination_convergence_{flat(DC_NAME)}.json",
     log:
-        "logs/delamination_convergence/{law}/dx{dedx}_{criterion}.log",
+        f"logs/delamination_convergence/{DC_NAME}.log",
     benchmark:
-        "results/benchmarks/delamination_convergence_{law}_dx{dedx}_{criterion}.tsv"
+        f"results/benchmarks/delamination_convergence_{flat(DC_NAME)}.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1

@@ -35,18 +35,15 @@ SE_SETTINGS = {
     purpose: {m: {k: SE[m][k] for k in keys[m]} for m in ("morris", "sobol")}
     for purpose, keys in (("design", SE_DESIGN_KEYS), ("indices", SE_INDEX_KEYS))
 }
-SE_BATCH = "results/sensitivity/{method}/{law}/batch{batch}.csv"
+# the key of a batch of samples: one design's, under one charge law
+SE_BATCH_NAME = "{method}/{law}/batch{batch}"
 # a method's design, indices and samples (the Sobol design reads the Morris indices, which are written after it)
 SE_DESIGN = "results/sensitivity/{method}/design.csv"
 SE_INDICES = "results/sensitivity/{method}/indices.csv"
 SE_SAMPLES = "results/sensitivity/{method}/samples.csv"
 SE_MAP = SE["map"]
-SE_MAP_POINTS = [
-    f"results/sensitivity/map/{law}/{w:g}deg_{s:g}kPa.csv"
-    for law in LAWS
-    for w in SE_MAP["angular_extents_deg"]
-    for s in SE_MAP["critical_stresses_kPa"]
-]
+# the key of a point of the delamination map: one charge law, angular extent and sigma_cr
+SE_MAP_NAME = "{law}/{width}deg_{sigma}kPa"
 
 
 wildcard_constraints:
@@ -108,12 +105,12 @@ rule sensitivity_batch:
         code=SPHGAG,
         design=SE_DESIGN,
     output:
-        table=SE_BATCH,
-        provenance="results/provenance/sensitivity_{method}_{law}_batch{batch}.json",
+        table=f"results/sensitivity/{SE_BATCH_NAME}.csv",
+        provenance=f"results/provenance/sensitivity_{flat(SE_BATCH_NAME)}.json",
     log:
-        "logs/sensitivity/{method}/{law}/batch{batch}.log",
+        f"logs/sensitivity/{SE_BATCH_NAME}.log",
     benchmark:
-        "results/benchmarks/sensitivity_{method}_{law}_batch{batch}.tsv"
+        f"results/benchmarks/sensitivity_{flat(SE_BATCH_NAME)}.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -134,7 +131,7 @@ rule sensitivity_method:
         code=SENSITIVITY,
         design=SE_DESIGN,
         batches=lambda wildcards: expand(
-            SE_BATCH, method=wildcards.method, law=LAWS, batch=SE_BATCHES[wildcards.method]
+            rules.sensitivity_batch.output.table, method=wildcards.method, law=LAWS, batch=SE_BATCHES[wildcards.method]
         ),
     output:
         indices=SE_INDICES,
@@ -160,7 +157,7 @@ rule sensitivity_tables:
     input:
         indices=expand(rules.sensitivity_method.output.indices, method=("morris", "sobol")),
         samples=expand(rules.sensitivity_method.output.samples, method=("morris", "sobol")),
-        nominal=expand(SE_BATCH, method="nominal", law=LAWS, batch=0),
+        nominal=expand(rules.sensitivity_batch.output.table, method="nominal", law=LAWS, batch=0),
     output:
         indices=report(
             "results/sensitivity/indices.csv",
@@ -208,14 +205,14 @@ rule delamination_map_point:
     each concentration level."""
     input:
         code=SPHGAG,
-        state=STATE.format(model="passive", pressure=DE_PRESSURE),
+        state=DE_STATE,
     output:
-        table="results/sensitivity/map/{law}/{width}deg_{sigma}kPa.csv",
-        provenance="results/provenance/delamination_map_{law}_{width}deg_{sigma}kPa.json",
+        table=f"results/sensitivity/map/{SE_MAP_NAME}.csv",
+        provenance=f"results/provenance/delamination_map_{flat(SE_MAP_NAME)}.json",
     log:
-        "logs/sensitivity/map/{law}/{width}deg_{sigma}kPa.log",
+        f"logs/sensitivity/map/{SE_MAP_NAME}.log",
     benchmark:
-        "results/benchmarks/delamination_map_{law}_{width}deg_{sigma}kPa.tsv"
+        f"results/benchmarks/delamination_map_{flat(SE_MAP_NAME)}.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -235,7 +232,12 @@ rule delamination_map_point:
 rule delamination_map:
     """The delamination map (every charge law, angular extent, sigma_cr and concentration level) in one tidy table."""
     input:
-        SE_MAP_POINTS,
+        expand(
+            rules.delamination_map_point.output.table,
+            law=LAWS,
+            width=[f"{w:g}" for w in SE_MAP["angular_extents_deg"]],
+            sigma=[f"{s:g}" for s in SE_MAP["critical_stresses_kPa"]],
+        ),
     output:
         report(
             "results/sensitivity/delamination_map.csv",

@@ -13,12 +13,12 @@ rule swell:
         code=SPHGAG,
         state=STATE,
     output:
-        states="results/swelling/states/{law}/{pool}/{model}_{case}_{pressure}mmHg.npz",
-        provenance="results/provenance/swell_{law}_{pool}_{model}_{case}_{pressure}mmHg.json",
+        states=f"results/swelling/states/{SWELL_NAME}.npz",
+        provenance=f"results/provenance/swell_{flat(SWELL_NAME)}.json",
     log:
-        "logs/swell/{law}/{pool}/{model}_{case}_{pressure}mmHg.log",
+        f"logs/swell/{SWELL_NAME}.log",
     benchmark:
-        "results/benchmarks/swell_{law}_{pool}_{model}_{case}_{pressure}mmHg.tsv"
+        f"results/benchmarks/swell_{flat(SWELL_NAME)}.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -41,12 +41,12 @@ rule pool_stresses:
         code=SPHGAG,
         states=rules.swell.output.states,
     output:
-        table="results/swelling/runs/{law}/{pool}/{model}_{case}_{pressure}mmHg.csv",
-        provenance="results/provenance/pool_stresses_{law}_{pool}_{model}_{case}_{pressure}mmHg.json",
+        table=f"results/swelling/runs/{SWELL_NAME}.csv",
+        provenance=f"results/provenance/pool_stresses_{flat(SWELL_NAME)}.json",
     log:
-        "logs/pool_stresses/{law}/{pool}/{model}_{case}_{pressure}mmHg.log",
+        f"logs/pool_stresses/{SWELL_NAME}.log",
     benchmark:
-        "results/benchmarks/pool_stresses_{law}_{pool}_{model}_{case}_{pressure}mmHg.tsv"
+        f"results/benchmarks/pool_stresses_{flat(SWELL_NAME)}.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -66,7 +66,7 @@ rule pool_stresses:
 rule tip_stress:
     """All swelling runs (every charge law and pool model) in one tidy table (figure 4)."""
     input:
-        SWELL_RUNS,
+        swell_runs(rules.pool_stresses.output.table),
     output:
         report(
             "results/swelling/tip_stress.csv",
@@ -96,6 +96,9 @@ SC_SIMULATION = dict(
     cases={c: SW["cases"][c] for c in SC["cases"]},
     pressure=SC["pressure_mmHg"],
 )
+# the key of a run of the study: its pools, under one charge law and pool model, at one spacing
+SC_POOLS = "{law}/{pool}"
+SC_NAME = f"{SC_POOLS}/dx{{dx}}"
 
 
 wildcard_constraints:
@@ -108,12 +111,12 @@ rule swelling_convergence_dx:
     input:
         code=SPHGAG,
     output:
-        states="results/swelling/convergence/states/{law}/{pool}/dx{dx}.npz",
-        provenance="results/provenance/swelling_convergence_{law}_{pool}_dx{dx}.json",
+        states=f"results/swelling/convergence/states/{SC_NAME}.npz",
+        provenance=f"results/provenance/swelling_convergence_{flat(SC_NAME)}.json",
     log:
-        "logs/swelling_convergence/{law}/{pool}/dx{dx}.log",
+        f"logs/swelling_convergence/{SC_NAME}.log",
     benchmark:
-        "results/benchmarks/swelling_convergence_{law}_{pool}_dx{dx}.tsv"
+        f"results/benchmarks/swelling_convergence_{flat(SC_NAME)}.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1
@@ -134,12 +137,12 @@ rule swelling_convergence_stresses:
         code=SPHGAG,
         states=rules.swelling_convergence_dx.output.states,
     output:
-        table="results/swelling/convergence/{law}/{pool}/dx{dx}.csv",
-        provenance="results/provenance/swelling_convergence_stresses_{law}_{pool}_dx{dx}.json",
+        table=f"results/swelling/convergence/{SC_NAME}.csv",
+        provenance=f"results/provenance/swelling_convergence_stresses_{flat(SC_NAME)}.json",
     log:
-        "logs/swelling_convergence/{law}/{pool}/stresses_dx{dx}.log",
+        f"logs/swelling_convergence/{SC_POOLS}/stresses_dx{{dx}}.log",
     benchmark:
-        "results/benchmarks/swelling_convergence_stresses_{law}_{pool}_dx{dx}.tsv"
+        f"results/benchmarks/swelling_convergence_stresses_{flat(SC_NAME)}.tsv"
     conda:
         "../envs/sphgag.yaml"
     threads: 1

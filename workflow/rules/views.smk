@@ -10,12 +10,12 @@ rule paraview_delamination:
         code=SPHGAG + [PARAVIEW],
         states=DE_SNAPSHOTS,
     output:
-        series=directory("results/paraview/delamination/{law}/{run}"),
-        provenance="results/provenance/paraview_delamination_{law}_{run}.json",
+        series=directory(f"results/paraview/delamination/{DE_ANY_NAME}"),
+        provenance=f"results/provenance/paraview_delamination_{flat(DE_ANY_NAME)}.json",
     log:
-        "logs/paraview/delamination/{law}/{run}.log",
+        f"logs/paraview/delamination/{DE_ANY_NAME}.log",
     benchmark:
-        "results/benchmarks/paraview_delamination_{law}_{run}.tsv"
+        f"results/benchmarks/paraview_delamination_{flat(DE_ANY_NAME)}.tsv"
     conda:
         "../envs/sphgag.yaml"
     resources:
@@ -32,12 +32,12 @@ rule paraview_swelling:
         code=SPHGAG + [PARAVIEW],
         states=rules.swell.output.states,
     output:
-        series=directory("results/paraview/swelling/{law}/{pool}/{model}_{case}_{pressure}mmHg"),
-        provenance="results/provenance/paraview_swelling_{law}_{pool}_{model}_{case}_{pressure}mmHg.json",
+        series=directory(f"results/paraview/swelling/{SWELL_NAME}"),
+        provenance=f"results/provenance/paraview_swelling_{flat(SWELL_NAME)}.json",
     log:
-        "logs/paraview/swelling/{law}/{pool}/{model}_{case}_{pressure}mmHg.log",
+        f"logs/paraview/swelling/{SWELL_NAME}.log",
     benchmark:
-        "results/benchmarks/paraview_swelling_{law}_{pool}_{model}_{case}_{pressure}mmHg.tsv"
+        f"results/benchmarks/paraview_swelling_{flat(SWELL_NAME)}.tsv"
     conda:
         "../envs/sphgag.yaml"
     resources:
@@ -54,16 +54,16 @@ rule animation:
         series=rules.paraview_delamination.output.series,
     output:
         report(
-            "figures/animations/{law}/{run}.gif",
+            f"figures/animations/{DE_ANY_NAME}.gif",
             caption="../report/animation.rst",
             category="5 Delamination",
             subcategory="Animations",
             labels={"charge law": "{law}", "run": "{run}"},
         ),
     log:
-        "logs/animation/{law}/{run}.log",
+        f"logs/animation/{DE_ANY_NAME}.log",
     benchmark:
-        "results/benchmarks/animation_{law}_{run}.tsv"
+        f"results/benchmarks/animation_{flat(DE_ANY_NAME)}.tsv"
     conda:
         "../envs/sphgag.yaml"
     script:
