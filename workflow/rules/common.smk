@@ -140,9 +140,9 @@ def de_run(name):
 
 
 # the damage law with a fracture energy: figure 5's set at critical_stress_kPa, default criterion, one run per G_c
-# (and per charge law); "paper" is the G_c that the paper's law dissipates in its run of that pool (prescribed law)
+# (and per charge law); "paper" is the G_c that the paper's law (PAPER_LAW) dissipates in its run of that pool
 DE_FE = DE["fracture_energy"]
-# (matched where the paper's charge law, prescribed, is studied: the conserved law's default run does not grow)
+# (matched where the paper's charge law is studied, against its own run: another law's default run may not grow)
 DE_MATCH = DE_FE["match_paper"] and PAPER_LAW in LAWS
 DE_TOUGHNESS = [f"{g:g}" for g in DE_FE["fracture_energies_J_m2"]] + (["paper"] if DE_MATCH else [])
 DE_FE_RUN = dict(poolset=FIG5_SET, sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"][0])
@@ -162,7 +162,7 @@ def run_tables(names, table):
     return [de_run(name)[table] for name in names]
 
 
-# the run whose dissipation is the fracture-energy runs' "paper" G_c (prescribed law), and every run that keeps
+# the run whose dissipation is the fracture-energy runs' "paper" G_c (PAPER_LAW), and every run that keeps
 # snapshots: the runs of the tables and that one, where it is not among them (a reduced configuration's sigma_cr)
 DE_MATCHED = DE_NAME.format(law=PAPER_LAW, **DE_FE_RUN)
 DE_SNAPSHOT_NAMES = DE_RUN_NAMES + ([DE_MATCHED] if DE_MATCH and DE_MATCHED not in DE_RUN_NAMES else [])
