@@ -111,7 +111,7 @@ rule sensitivity:
 rule views:
     """A ParaView series of every swelling and delamination run, and an animation of every delamination run."""
     input:
-        VIEWS,
+        RUN_VIEWS,
 
 
 rule everything:
