@@ -152,7 +152,7 @@ def main():
     out["transition_reached"] = t
     ev = stall.evaluation
     r = ev.residual_vector
-    fac = solver._factorise(model, ev, model.jacobian(ev), 0.0, "diagnosis")
+    fac = solver.factorise(model, ev, model.jacobian(ev), 0.0, "diagnosis")
     d = fac.step(ev)
     checks = []
     for eps in (1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6):

@@ -80,7 +80,7 @@ def test_jacobian_with_the_contents_rank_one_term_is_exact(band_cavity):
         fd = (ep.residual_vector - em.residual_vector).ravel() / (2 * eps)
         assert np.abs(fd[free] - Jm[free, k]).max() <= 1e-6 * np.abs(fd).max()
     # the factorisation solves the full matrix (constrained rows: scale * identity)
-    fac = solver._factorise(model, ev, data.copy(), 0.0, "test")
+    fac = solver.factorise(model, ev, data.copy(), 0.0, "test")
     full = Jm.copy()
     fixed = np.flatnonzero(~free)
     full[fixed] = 0.0

@@ -60,8 +60,8 @@ def test_a_stale_factorisation_never_lets_a_state_through_above_tolerance(wall):
     target = Load(1.0, start.load.pressure_kPa + 5 * MMHG_TO_KPA, material=start.load.material)
     ref = model.evaluate(model.layout.X, start.load)
     wrong = [
-        solver._factorise(model, ref, model.jacobian(ref), 0.0, "test"),
-        solver._factorise(model, ref, 50.0 * model.jacobian(ref), 0.0, "test"),
+        solver.factorise(model, ref, model.jacobian(ref), 0.0, "test"),
+        solver.factorise(model, ref, 50.0 * model.jacobian(ref), 0.0, "test"),
     ]
     for fac in wrong:
         model.factorisation = fac

@@ -301,7 +301,7 @@ class Model:
     def rank_one_terms(self, ev: Evaluation) -> list[tuple[float, np.ndarray]]:
         """The Jacobian's dense rank-one parts, ``(c, g)`` with ``d(f_int + f_ext)/dx += c g g^T`` (``g`` flat over
         the dofs): each cavity's contents (:meth:`sphgag.engine.pool_cavity.Cavity.rank_one`). The solver applies them
-        by Sherman-Morrison (:func:`sphgag.engine.solver._factorise`)."""
+        by Sherman-Morrison (:func:`sphgag.engine.solver.factorise`)."""
         self.material(ev.load)
         return [
             c.rank_one(ev.x, ev.load.axial_stretch, contents)

@@ -24,7 +24,7 @@ the Donnan pressure as a follower load:
   GAG law with the Donnan pressure loses ellipticity at ``J`` of about 2.8, ``mu_g (J + 1) + lam_g < lam_g ln J``, so
   a non-uniform state of the contents is not unique). Its stiffness, ``w''/V_pool`` times the outer product of
   ``dA/dx`` with itself, couples the whole lining: it stays out of the sparse Jacobian and enters the solves as a
-  rank-one update (:meth:`Cavity.rank_one`, Sherman-Morrison in :func:`sphgag.engine.solver._factorise`);
+  rank-one update (:meth:`Cavity.rank_one`, Sherman-Morrison in :func:`sphgag.engine.solver.factorise`);
 * the pool's volume ratio is ``1 + (A - A_0) / V_pool`` (``V_pool``: the pool's reference area, the sum of its
   particles' volumes; ``A_0``: the polygon's reference area), the exact area the lining encloses in place of
   ``sum V_i J_i``;

@@ -136,7 +136,7 @@ def solve_at_volume(
     backtracking line search on the residual and the volume error)."""
     x, load = x0.copy(), load0
     ev = model.evaluate(x, load)
-    solver._check(model, ev, run)
+    solver.check(model, ev, run)
     n_eval, n_jac = 1, 0
 
     def merit(ev):
@@ -154,7 +154,7 @@ def solve_at_volume(
             progress = (merit(ev), it)
         elif it - progress[1] >= solver.STALL_ITERATIONS:
             raise solver.NotConverged(run, load, f"volume control stagnated (residual {rel:.3g})")
-        fac = solver._factorise(model, ev, model.jacobian(ev), 0.0, run)
+        fac = solver.factorise(model, ev, model.jacobian(ev), 0.0, run)
         n_jac += 1
         a = -fac.step(ev).ravel()  # K^-1 r
         b = fac.solve(concentration_slope(model, x, load).ravel())

@@ -22,7 +22,7 @@ attractor of it); a state it cannot converge within its budget is no state at al
 and the caller ends its run there (:class:`NoStableState`).
 
 The damping matrix is that of the solver's Levenberg-Marquardt damping
-(:func:`sphgag.engine.solver._factorise`, ``K + m diag|K|`` with ``m = 1/dtau``), so a snap
+(:func:`sphgag.engine.solver.factorise`, ``K + m diag|K|`` with ``m = 1/dtau``), so a snap
 costs one Jacobian and one LU per pseudo-time step.
 """
 
@@ -86,7 +86,7 @@ def follow(
 def _follow(model, x0, load, tol, max_iter, run, max_steps, handoff, damping) -> solver.State:
     t0 = time.perf_counter()
     ev = model.evaluate(x0, load)
-    solver._check(model, ev, run)
+    solver.check(model, ev, run)
     rel = solver.relative_residual(model, ev)
     best = (rel, ev)
     halved = (rel, 0)  # (residual, step) when the best residual last halved
@@ -129,9 +129,9 @@ def _follow(model, x0, load, tol, max_iter, run, max_steps, handoff, damping) ->
         data = model.jacobian(ev)
         n_jac += 1
         while True:
-            fac = solver._factorise(model, ev, data.copy(), m, run)
+            fac = solver.factorise(model, ev, data.copy(), m, run)
             dx = fac.step(ev)
-            trial = solver._trial(model, ev, dx, 1.0, solver._bending(model, ev.x, dx))
+            trial = solver.trial(model, ev, dx, 1.0, solver.bending(model, ev.x, dx))
             n_eval += 1
             if trial is not None:
                 break

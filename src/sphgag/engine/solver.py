@@ -86,7 +86,9 @@ def relative_residual(model: Model, ev: Evaluation) -> float:
     return float(np.linalg.norm(ev.residual_vector) / ev.force_scale(model))
 
 
-def _check(model: Model, ev: Evaluation, run: str):
+def check(model: Model, ev: Evaluation, run: str) -> None:
+    """Raise :class:`Diverged` (non-finite positions or forces) or :class:`Inverted` (``det F <= 0``) for an evaluation
+    no solve may start from or accept."""
     if not np.isfinite(ev.x).all():
         raise Diverged(run, ev.load, "non-finite positions")
     if ev.min_det <= 0.0:
@@ -128,7 +130,7 @@ BAND_BYTES = 512 * 2**20
 BAND_FILL = 0.2
 
 
-def _lu(model: Model, data: np.ndarray):
+def lu_solver(model: Model, data: np.ndarray) -> Callable[[np.ndarray], np.ndarray]:
     """A solver for the block matrix ``data``: banded LAPACK LU if the band is narrow, SuperLU otherwise.
     Raises ``RuntimeError`` for an exactly singular matrix."""
     kl, ku, index = model.band
@@ -202,7 +204,7 @@ def newton(
     t0 = time.perf_counter()
     x = x0.copy()
     ev = model.evaluate(x, load)
-    _check(model, ev, run)
+    check(model, ev, run)
     n_eval, n_jac, damping, chords = 1, 0, 0.0, 0
     rel = relative_residual(model, ev)
     run_start, run_length = rel, 0  # the current sequence of chord steps
@@ -215,7 +217,7 @@ def newton(
         fac = model.factorisation
         if reuse and fac is not None and fac.serves(ev) and chords < CHORD_STEPS:
             dx = fac.step(ev)
-            ev_try = _trial(model, ev, dx, 1.0, _bending(model, ev.x, dx))
+            ev_try = trial(model, ev, dx, 1.0, bending(model, ev.x, dx))
             n_eval += 1
             rel_try = relative_residual(model, ev_try) if ev_try is not None else np.inf
             if rel_try < 2.0 * CHORD_CONTRACTION**run_length * run_start:
@@ -227,7 +229,7 @@ def newton(
         n_jac += 1
         best = None  # (step, evaluation, factorisation, dx) of the best step a lower damping found
         while True:
-            fac = _factorise(model, ev, data.copy(), damping, run)
+            fac = factorise(model, ev, data.copy(), damping, run)
             dx = fac.step(ev)
             step, ev_try, evals = _line_search(model, ev, dx, fac.scale)
             n_eval += evals
@@ -280,8 +282,12 @@ def newton(
     )
 
 
-def _factorise(model: Model, ev: Evaluation, data: np.ndarray, damping: float, run: str) -> Factorisation:
-    """LU of ``J - damping diag|J|`` with the constrained rows replaced by ``scale (x - target)``."""
+def factorise(model: Model, ev: Evaluation, data: np.ndarray, damping: float, run: str) -> Factorisation:
+    """LU of ``J - damping diag|J|`` with the constrained rows replaced by ``scale (x - target)``.
+
+    ``data``: the Jacobian blocks of ``ev`` (:meth:`sphgag.engine.model.Model.jacobian`), changed in place (pass a
+    copy to keep them); the model's rank-one terms are added by Sherman-Morrison. Raises :class:`NotConverged` for an
+    exactly singular matrix."""
     d = data[model.block_diagonal]
     scale = 0.5 * (np.abs(d[:, 0, 0]).mean() + np.abs(d[:, 1, 1]).mean())
     if damping:
@@ -293,7 +299,7 @@ def _factorise(model: Model, ev: Evaluation, data: np.ndarray, damping: float, r
         data[model.row_blocks(cons)] = 0.0
         data[model.block_diagonal[cons]] = scale * np.eye(2)
     try:
-        solve = _lu(model, data)
+        solve = lu_solver(model, data)
     except RuntimeError as exc:  # exactly singular factor
         raise NotConverged(run, ev.load, f"singular Jacobian ({exc})", ev) from exc
     for c, g in model.rank_one_terms(ev):
@@ -323,20 +329,20 @@ def _line_search(model: Model, ev: Evaluation, dx: np.ndarray, scale: float, max
 
     Returns ``(step, evaluation, evaluations used)``; the evaluation is None if no step was accepted.
     """
-    bend = _bending(model, ev.x, dx)
+    bend = bending(model, ev.x, dx)
     merit0 = _merit(ev, scale)
     step = 1.0
     for k in range(1, max_halvings + 1):
-        ev_try = _trial(model, ev, dx, step, bend)
+        ev_try = trial(model, ev, dx, step, bend)
         if ev_try is not None and _merit(ev_try, scale) <= (1.0 - 1e-4 * step) * merit0:
             return step, ev_try, k
         step *= 0.5
     return 0.0, None, max_halvings
 
 
-def _bending(model: Model, x: np.ndarray, dx: np.ndarray):
-    """``(r_in, dr_in)``: mean inner radius and the step's mean radial expansion there
-    (see :func:`_radial_correction`)."""
+def bending(model: Model, x: np.ndarray, dx: np.ndarray) -> tuple[float, float]:
+    """``(r_in, dr_in)``: mean inner radius and the step's mean radial expansion there, the bend of a step
+    ``dx`` from ``x`` that :func:`trial` applies (see :func:`_radial_correction`)."""
     inner = model.layout.inner_surface
     if not inner.size:  # no lumen: no radial expansion to correct
         return 0.0, 0.0
@@ -344,9 +350,9 @@ def _bending(model: Model, x: np.ndarray, dx: np.ndarray):
     return rho_in.mean(), float(np.mean((dx[inner] * x[inner]).sum(axis=1) / rho_in))
 
 
-def _trial(model: Model, ev: Evaluation, dx: np.ndarray, step: float, bend) -> Evaluation | None:
-    """The evaluation at ``x + step dx`` (bent onto the area-preserving radial map), or None if it is
-    inadmissible (non-finite, or an inverted particle)."""
+def trial(model: Model, ev: Evaluation, dx: np.ndarray, step: float, bend) -> Evaluation | None:
+    """The evaluation at ``x + step dx`` (bent onto the area-preserving radial map by ``bend``, :func:`bending` of
+    ``ev.x`` and ``dx``), or None if it is inadmissible (non-finite, or an inverted particle)."""
     r_in, dr_in = bend
     with np.errstate(invalid="ignore", over="ignore"):  # a trial step may be absurd; it is rejected
         x_try = ev.x + step * dx + (_radial_correction(ev.x, r_in, step * dr_in) if dr_in else 0.0)
