@@ -5,6 +5,7 @@ import dataclasses
 import pytest
 
 from sphgag.engine.numerics import Numerics
+from sphgag.engine.solver import PathOptions
 from sphgag.physics.materials import Gag, law_gag
 from sphgag.studies.artery import Bilayer, FibreConstants
 
@@ -25,6 +26,24 @@ def test_a_misspelt_or_missing_key_raises_naming_it(ci_config):
     bilayer = dict(ci_config["bilayer"], collagen=dict(ci_config["bilayer"]["collagen"], c1_kpa=1.0))
     with pytest.raises(ValueError, match=r"unknown key bilayer\.collagen\.c1_kpa"):
         Bilayer.of(bilayer)
+
+
+def test_the_solver_options_of_a_path_are_typed(ci_config):
+    """The keyword options a path passes on build :class:`PathOptions` (the solver's defaults for the rest); a key
+    they do not know raises naming it."""
+    n = Numerics.of(ci_config["numerics"])
+    opts = PathOptions.of(n.solver_options())
+    assert (opts.tol, opts.max_iter, opts.reuse, opts.stall) == (
+        n.tolerance,
+        n.max_newton_iterations,
+        n.reuse_factorisation,
+        None,
+    )
+    assert PathOptions.of({}) == PathOptions()
+    with pytest.raises(ValueError, match=r"unknown key solver\.tolerance"):
+        PathOptions.of(dict(n.solver_options(), tolerance=1e-4))
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        opts.tol = 1.0
 
 
 def test_the_bilayer_is_typed_all_the_way_down(ci_config):

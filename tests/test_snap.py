@@ -128,6 +128,18 @@ def test_no_stable_state_ends_a_snap_with_its_reason(ci_config, ci_wall):
         snap.follow(model, ci_wall.x, load, max_steps=2, **Numerics.of(numerics).solver_options())
 
 
+@pytest.mark.parametrize("follow", ["snap", "volume control"])
+def test_an_unknown_solver_option_raises_naming_it(ci_config, ci_wall, follow):
+    """A snap and the volume-controlled path take the solver options of the path they continue, and no others."""
+    model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-options")
+    opts = dict(Numerics.of(ci_config["numerics"]).solver_options(), tolerance=1e-4)
+    with pytest.raises(ValueError, match=r"unknown key solver\.tolerance"):
+        if follow == "snap":
+            snap.follow(model, ci_wall.x, ci_wall.load, **opts)
+        else:
+            pool_volume.continue_path(model, ci_wall, np.arange(0), [60.0], **opts)
+
+
 # -- the pool's volume as the control --------------------------------------------------------------------------------
 
 

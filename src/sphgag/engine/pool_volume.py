@@ -183,13 +183,11 @@ def continue_path(
     members: np.ndarray,
     targets: list[float],
     *,
-    tol: float = 1e-4,
-    max_iter: int = 30,
     run: str | None = None,
     growth: float = 0.05,
     max_ratio: float = 100.0,
     min_growth: float = 1e-3,
-    **_,
+    **options,
 ) -> tuple[Path, list[solver.State]]:
     """Trace the pool's path from the converged state ``last`` with its volume as the control.
 
@@ -197,9 +195,13 @@ def continue_path(
     ``c`` passes one of ``targets`` (concentrations the concentration-controlled path could not reach) while it
     rises, the state at exactly that concentration is solved by concentration control from the bracketing state
     and returned too. Stops at a limit point, when the targets are done, when the volume reaches ``max_ratio``
-    times the pool's reference volume, or where volume control fails.
+    times the pool's reference volume, or where volume control fails. ``options``: the solver options of the path
+    (:class:`sphgag.engine.solver.PathOptions`; Newton's ``tol`` and ``max_iter`` are used); an option they do not
+    know raises ``ValueError`` naming it.
     """
     run = run or model.name
+    opts = solver.PathOptions.of(options)
+    tol, max_iter = opts.tol, opts.max_iter
     pool = PoolVolume.of(model, members)
     reference = float(np.sum(pool.V))
     states, reached = [], []

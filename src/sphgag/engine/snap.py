@@ -56,13 +56,11 @@ def follow(
     x0: np.ndarray,
     load: Load,
     *,
-    tol: float = 1e-4,
-    max_iter: int = 30,
     run: str | None = None,
     max_steps: int = 300,
     handoff: float = 1e-2,
     damping: float = 1.0,
-    **_,
+    **options,
 ) -> solver.State:
     """The equilibrium at ``load`` that the overdamped pseudo-dynamics from ``x0`` comes to rest at.
 
@@ -71,12 +69,14 @@ def follow(
     the state; if it fails, the pseudo-dynamics resume from the best state so far
     with ten times more damping, and Newton is tried again once the residual is ten
     times lower (at most ``HANDOFFS`` tries). Raises :class:`NoStableState` after ``max_steps``
-    pseudo-time steps, or when the lowest residual has not halved in ``STALL_STEPS`` steps. Extra keyword arguments
-    (the solver options of a path) are ignored.
+    pseudo-time steps, or when the lowest residual has not halved in ``STALL_STEPS`` steps. ``options``: the solver
+    options of the path the snap interrupts (:class:`sphgag.engine.solver.PathOptions`; Newton's ``tol`` and
+    ``max_iter`` are used); an option they do not know raises ``ValueError`` naming it.
     """
     run = run or model.name
+    opts = solver.PathOptions.of(options)
     try:
-        return _follow(model, x0, load, tol, max_iter, run, max_steps, handoff, damping)
+        return _follow(model, x0, load, opts.tol, opts.max_iter, run, max_steps, handoff, damping)
     except NoStableState:
         raise
     except solver.SimulationError as exc:  # a singular or inadmissible pseudo-time step

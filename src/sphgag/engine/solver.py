@@ -34,6 +34,7 @@ import numpy as np
 import scipy.linalg.lapack as lapack
 import scipy.sparse.linalg as spla
 
+from ..options import Options
 from .loading import Load
 from .model import Evaluation, Model
 
@@ -80,6 +81,24 @@ class Convergence:
     force_evaluations: int
     jacobians: int
     seconds: float
+
+
+@dataclass(frozen=True)
+class PathOptions(Options):
+    """The solver options of a load path: ``tol`` (the relative residual of a converged state), ``max_iter`` (Newton
+    iterations per load step), ``max_bisections`` (halvings of a load step, :func:`follow_path`), ``reuse`` (chord
+    steps with the cached factorisation) and ``stall`` (fresh iterations without halving the residual before Newton
+    gives up), with :func:`newton`'s and :func:`follow_path`'s defaults. :meth:`of` builds them from a mapping (the
+    keyword options a path passes on, :meth:`sphgag.engine.numerics.Numerics.solver_options`) and raises
+    ``ValueError`` naming a key it does not know."""
+
+    SECTION = "solver"
+
+    tol: float = 1e-4
+    max_iter: int = 30
+    max_bisections: int = 10
+    reuse: bool = False
+    stall: int | None = None
 
 
 def relative_residual(model: Model, ev: Evaluation) -> float:

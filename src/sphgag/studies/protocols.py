@@ -565,7 +565,9 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
             last = solver.follow_path(model, last.x, last.load, target, **budget)[-1]
         except solver.NotConverged as exc:
             log.info("[%s] c = %g mEq/l: %s; the pool's volume becomes the control", run, c, exc.reason)
-            path, reached = pool_volume.continue_path(model, last, model.props.converting, list(cs[k:]), **opts)
+            path, reached = pool_volume.continue_path(
+                model, last, model.props.converting, list(cs[k:]), run=run, **numerics.solver_options()
+            )
             states += [
                 PoolState.of("converted", s.load.material_value("concentration"), s, "volume", model, pool_model)
                 for s in reached
