@@ -90,7 +90,7 @@ def measure(dx: float, config_path: str) -> dict:
 
     def factorised_at_start():
         """The model as a run leaves it at the start state: with the LU of its Jacobian there."""
-        model.factorisation = solver.factorise(model, ev, model.jacobian(ev), 0.0, model.name)
+        solver.factorisation_cache(model).keep(solver.factorise(model, ev, model.jacobian(ev), 0.0, model.name))
 
     for label, reuse in (("", numerics["reuse_factorisation"]), ("_fresh_newton", False)):
         opts = dict(Numerics.of(numerics).solver_options(), reuse=reuse)
@@ -122,7 +122,7 @@ def measure(dx: float, config_path: str) -> dict:
         times = []
         for _ in range(3):
             fixed.set_props(ruptured)
-            fixed.factorisation = solver.factorise(fixed, evd, fixed.jacobian(evd), 0.0, model.name)
+            solver.factorisation_cache(fixed).keep(solver.factorise(fixed, evd, fixed.jacobian(evd), 0.0, model.name))
             fixed.set_props(gag)
             t = time.perf_counter()
             solver.newton(fixed, xd, load, **opts)

@@ -163,7 +163,7 @@ def run(cfg, dx, args) -> dict:
     V = model.layout.volume[members]
     if args.pool == "cavity":
         cav = pool_cavity.Cavity.around(model.layout, members, state.x)
-        model = dataclasses.replace(model, cavities=(cav,), _cache={}, factorisation=None)
+        model = dataclasses.replace(model, cavities=(cav,), _cache={})
     reached, stall, path = 0.0, None, []
     for c in protocols.concentration_steps(sw):
         try:

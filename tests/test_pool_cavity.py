@@ -26,7 +26,7 @@ def band_cavity(coarse_mean_model):
     materials.convert_to_gag(p, band, 1.0, 0.1, 18.53, lame=1.0)
     p[band, materials.PI] = 30.0
     cav = pool_cavity.Cavity.around(m.layout, band, m.layout.X)
-    model = dataclasses.replace(m, props=p, cavities=(cav,), _cache={}, factorisation=None)
+    model = dataclasses.replace(m, props=p, cavities=(cav,), _cache={})
     return model, cav
 
 

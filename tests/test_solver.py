@@ -23,7 +23,7 @@ def wall(ci_config):
 def both_ways(model, x, start, targets, tol):
     out = {}
     for reuse in (False, True):
-        model.factorisation = None
+        solver.factorisation_cache(model).reset()
         states = solver.follow_path(model, x, start, targets, tol=tol, reuse=reuse)
         out[reuse] = states
     return out
@@ -64,7 +64,7 @@ def test_a_stale_factorisation_never_lets_a_state_through_above_tolerance(wall):
         solver.factorise(model, ref, 50.0 * model.jacobian(ref), 0.0, "test"),
     ]
     for fac in wrong:
-        model.factorisation = fac
+        solver.factorisation_cache(model).keep(fac)
         for tol in (1e-4, 1e-7):
             x, ev, conv = solver.newton(model, start.x, target, tol=tol, reuse=True)
             assert conv.residual < tol

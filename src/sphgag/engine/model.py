@@ -102,7 +102,6 @@ class Model:
     hourglass: str = "paper"
     cavities: tuple = ()
     _cache: dict = field(default_factory=dict, repr=False)
-    factorisation: object = field(default=None, repr=False)  # the solver's last LU, for reuse (solver.newton)
 
     def __post_init__(self):
         if self.hourglass not in hourglass.FORMS:

@@ -138,8 +138,9 @@ class Cavity:
 
 def hollow(model, members: np.ndarray, x: np.ndarray):
     """``model`` with the pool ``members`` as a cavity (:class:`Cavity`), its particles held at their positions in
-    ``x``; the model's factorisation cache starts empty (its Jacobian pattern of loads changes)."""
-    return replace(model, cavities=(Cavity.around(model.layout, members, x),), _cache={}, factorisation=None)
+    ``x``; a new model, whose solver factorisation cache (:func:`sphgag.engine.solver.factorisation_cache`) starts empty
+    (its Jacobian pattern of loads changes)."""
+    return replace(model, cavities=(Cavity.around(model.layout, members, x),), _cache={})
 
 
 def pool_pressure(J: float, pressure_kPa: float, lz: float, mu: float, lam: float) -> float:

@@ -91,7 +91,7 @@ def _follow(model, x0, load, tol, max_iter, run, max_steps, handoff, damping) ->
     best = (rel, ev)
     halved = (rel, 0)  # (residual, step) when the best residual last halved
     m, n_eval, n_jac, attempts = damping, 1, 0, 0
-    model.factorisation = None
+    solver.factorisation_cache(model).reset()
     for k in range(max_steps):
         if rel < handoff or (m < 1e-3 and attempts == 0):
             attempts += 1

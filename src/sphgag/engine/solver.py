@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import logging
 import time
+import weakref
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
@@ -142,6 +143,37 @@ class Factorisation:
         return self.solve(rhs.ravel()).reshape(-1, 2)
 
 
+class FactorisationCache:
+    """The last undamped :class:`Factorisation` of one model's Jacobian, kept for the chord steps of :func:`newton`
+    (``reuse``) at this or later states. Every fresh Newton step replaces it (a damped one empties it); :meth:`reset`
+    empties it, so that the next solve starts as a solve of a new model does (a run continued from a snapshot)."""
+
+    def __init__(self):
+        self.factorisation: Factorisation | None = None
+
+    def keep(self, fac: Factorisation) -> None:
+        """Keep ``fac`` if it is undamped; a damped factorisation empties the cache."""
+        self.factorisation = fac if fac.damping == 0.0 else None
+
+    def reset(self) -> None:
+        """Forget the kept factorisation."""
+        self.factorisation = None
+
+
+_caches: dict[int, FactorisationCache] = {}
+
+
+def factorisation_cache(model: Model) -> FactorisationCache:
+    """The solver's factorisation cache of ``model`` (one per model object, empty for a new or copied model, dropped
+    with the model)."""
+    key = id(model)
+    cache = _caches.get(key)
+    if cache is None:
+        cache = _caches[key] = FactorisationCache()
+        weakref.finalize(model, _caches.pop, key, None)
+    return cache
+
+
 # The Jacobian is factorised as a band matrix (LAPACK gbtrf, partial pivoting) when the band is well filled and its
 # storage stays below BAND_BYTES: the artery's particles are numbered by angle, so its band is narrow and ~40 %
 # full, and the banded LU 2-3 times faster than SuperLU's; sparser bands (the inclusion's rings) use SuperLU.
@@ -210,8 +242,8 @@ def newton(
     the undamped residual alone.
 
     With ``reuse``, the last undamped factorisation of the model (from this
-    or an earlier state) is tried first: a chord step ``dx = -K_old^-1 r`` on the
-    exact residual, kept while the chord steps cut the relative residual by
+    or an earlier state, kept in its :func:`factorisation_cache`) is tried first: a chord step ``dx = -K_old^-1 r`` on
+    the exact residual, kept while the chord steps cut the relative residual by
     ``CHORD_CONTRACTION`` per step on average (at most ``CHORD_STEPS`` per
     state). Otherwise (and whenever no factorisation fits)
     the iteration is an ordinary Newton step with a fresh Jacobian, whose
@@ -221,6 +253,7 @@ def newton(
     """
     run = run or model.name
     t0 = time.perf_counter()
+    cache = factorisation_cache(model)
     x = x0.copy()
     ev = model.evaluate(x, load)
     check(model, ev, run)
@@ -233,7 +266,7 @@ def newton(
             return x, ev, Convergence(rel, it, n_eval, n_jac, time.perf_counter() - t0)
         if it - chords == max_iter:
             break
-        fac = model.factorisation
+        fac = cache.factorisation
         if reuse and fac is not None and fac.serves(ev) and chords < CHORD_STEPS:
             dx = fac.step(ev)
             ev_try = trial(model, ev, dx, 1.0, bending(model, ev.x, dx))
@@ -266,7 +299,7 @@ def newton(
             log.debug(
                 "[%s] newton %d: damped line search failed, step %.3g of damping %.0e kept", run, it, step, damping
             )
-        model.factorisation = fac if fac.damping == 0.0 else None
+        cache.keep(fac)
         if ev_try is None:
             reason = f"line search failed at Newton iteration {it} (relative residual {rel:.3g})"
             raise NotConverged(run, load, reason, ev)

@@ -396,7 +396,7 @@ class GrowthRun:
             # the run continues from a snapshot exactly as a restart from it does: without a stale factorisation
             # (equilibria need not be unique, e.g. a crushed tissue bridge between two GAG regions, so the
             # solver's path must be the same)
-            self.model.factorisation = None
+            solver.factorisation_cache(self.model).reset()
 
     def result(self, stop: str, level: float) -> Result:
         """The run's rows and summary (:func:`sphgag.studies.delamination.tables.run_summary`); it stopped (``stop``)
