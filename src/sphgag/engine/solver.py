@@ -242,14 +242,18 @@ def newton(
     the undamped residual alone.
 
     With ``reuse``, the last undamped factorisation of the model (from this
-    or an earlier state, kept in its :func:`factorisation_cache`) is tried first: a chord step ``dx = -K_old^-1 r`` on
-    the exact residual, kept while the chord steps cut the relative residual by
+    or an earlier state, kept in its :func:`factorisation_cache`) is tried first: a chord step
+    ``dx = -K_old^-1 r`` on the exact residual, kept while the chord steps cut the relative residual by
     ``CHORD_CONTRACTION`` per step on average (at most ``CHORD_STEPS`` per
     state). Otherwise (and whenever no factorisation fits)
     the iteration is an ordinary Newton step with a fresh Jacobian, whose
     factorisation is then kept. The acceptance test is the same in both cases.
 
     With ``stall``, the iteration gives up once ``stall`` fresh iterations have not halved the relative residual.
+
+    Each iteration is a sequence of named steps: the convergence test (:func:`_converged`), a chord step with the
+    cached factorisation (:func:`_chord_step`), else a fresh step (:func:`_fresh_step`: assemble, factorise and line
+    search, :func:`_damped_step`), and the progress test (:func:`_check_progress`).
     """
     run = run or model.name
     t0 = time.perf_counter()
@@ -257,81 +261,123 @@ def newton(
     x = x0.copy()
     ev = model.evaluate(x, load)
     check(model, ev, run)
-    n_eval, n_jac, damping, chords = 1, 0, 0.0, 0
-    rel = relative_residual(model, ev)
-    run_start, run_length = rel, 0  # the current sequence of chord steps
-    progress = (rel, 0)  # (residual, fresh iterations) when the residual last halved
+    s = _Iterate(x, ev, relative_residual(model, ev))
     for it in range(max_iter + CHORD_STEPS + 1):
-        if rel < tol and ev.constraint_error < 1e-9 * model.layout.outer_radius:
-            return x, ev, Convergence(rel, it, n_eval, n_jac, time.perf_counter() - t0)
-        if it - chords == max_iter:
+        if _converged(model, s, tol):
+            return s.x, s.ev, Convergence(s.rel, it, s.n_eval, s.n_jac, time.perf_counter() - t0)
+        if it - s.chords == max_iter:
             break
-        fac = cache.factorisation
-        if reuse and fac is not None and fac.serves(ev) and chords < CHORD_STEPS:
-            dx = fac.step(ev)
-            ev_try = trial(model, ev, dx, 1.0, bending(model, ev.x, dx))
-            n_eval += 1
-            rel_try = relative_residual(model, ev_try) if ev_try is not None else np.inf
-            if rel_try < 2.0 * CHORD_CONTRACTION**run_length * run_start:
-                log.debug("[%s] chord %d: residual %.3e", run, it, rel)
-                x, ev, rel, chords, run_length = ev_try.x, ev_try, rel_try, chords + 1, run_length + 1
-                continue
-            log.debug("[%s] chord %d rejected: residual %.3e -> %.3e", run, it, rel, rel_try)
-        data = model.jacobian(ev)
-        n_jac += 1
-        best = None  # (step, evaluation, factorisation, dx) of the best step a lower damping found
-        while True:
-            fac = factorise(model, ev, data.copy(), damping, run)
-            dx = fac.step(ev)
-            step, ev_try, evals = _line_search(model, ev, dx, fac.scale)
-            n_eval += evals
-            if step >= 0.125 or damping >= 1e4:
-                break
-            if ev_try is not None and (best is None or _merit(ev_try, fac.scale) < _merit(best[1], fac.scale)):
-                best = (step, ev_try, fac, dx)
-            damping = max(10.0 * damping, 1e-4)  # steps cut hard: damp the soft modes and solve again
-            log.debug("[%s] newton %d: step %.3g, damping raised to %.0e", run, it, step, damping)
-        if ev_try is None and best is not None:
-            # with an indefinite stiffness a damped direction need not descend at all; the undamped Newton direction
-            # always does (exact Jacobian), so the short step found before the damping rose is taken
-            step, ev_try, fac, dx = best
-            damping = fac.damping
-            log.debug(
-                "[%s] newton %d: damped line search failed, step %.3g of damping %.0e kept", run, it, step, damping
-            )
-        cache.keep(fac)
-        if ev_try is None:
-            reason = f"line search failed at Newton iteration {it} (relative residual {rel:.3g})"
-            raise NotConverged(run, load, reason, ev)
-        if step == 1.0:
-            damping = 0.0 if damping <= 1e-4 else 0.1 * damping
-        log.debug(
-            "[%s] newton %d: residual %.3e, step %.3g, damping %.0e, |dx|max %.3g",
-            run,
-            it,
-            rel,
-            step,
-            damping,
-            np.abs(dx).max(),
-        )
-        x, ev = ev_try.x, ev_try
-        rel = relative_residual(model, ev)
-        run_start, run_length = rel, 0
-        if rel < 0.5 * progress[0]:
-            progress = (rel, n_jac)
-        elif stall is not None and n_jac - progress[1] >= stall:
-            raise NotConverged(
-                run,
-                load,
-                f"Newton stagnated: {stall} iterations without halving the relative residual ({rel:.3g})",
-                ev,
-            )
+        if reuse and _chord_step(model, cache, s, run, it):
+            continue
+        _fresh_step(model, cache, s, run, it)
+        _check_progress(s, stall, run)
     raise NotConverged(
         run,
         load,
-        f"no convergence in {max_iter} Newton iterations (and {chords} chord steps; relative residual {rel:.3g})",
-        ev,
+        f"no convergence in {max_iter} Newton iterations (and {s.chords} chord steps; relative residual {s.rel:.3g})",
+        s.ev,
     )
+
+
+class _Iterate:
+    """The state of one :func:`newton` solve: the iterate ``x`` and its evaluation ``ev`` and relative residual
+    ``rel``, the work done (``n_eval`` force evaluations, ``n_jac`` Jacobians, ``chords`` chord steps), the
+    Levenberg-Marquardt ``damping``, the current sequence of chord steps (``run_start``: the residual it started
+    from, ``run_length``: its steps) and ``progress``: ``(residual, fresh iterations)`` when the residual last
+    halved."""
+
+    def __init__(self, x: np.ndarray, ev: Evaluation, rel: float):
+        self.x, self.ev, self.rel = x, ev, rel
+        self.n_eval, self.n_jac, self.damping, self.chords = 1, 0, 0.0, 0
+        self.run_start, self.run_length = rel, 0
+        self.progress = (rel, 0)
+
+
+def _converged(model: Model, s: _Iterate, tol: float) -> bool:
+    """The acceptance test: relative residual below ``tol`` and the prescribed particles at their targets."""
+    return s.rel < tol and s.ev.constraint_error < 1e-9 * model.layout.outer_radius
+
+
+def _chord_step(model: Model, cache: FactorisationCache, s: _Iterate, run: str, it: int) -> bool:
+    """A chord step ``dx = -K_old^-1 r`` with the cached factorisation, if one serves the iterate and the state has
+    chord steps left; taken (True) if it cuts the residual enough (``CHORD_CONTRACTION``)."""
+    fac = cache.factorisation
+    if not (fac is not None and fac.serves(s.ev) and s.chords < CHORD_STEPS):
+        return False
+    dx = fac.step(s.ev)
+    ev_try = trial(model, s.ev, dx, 1.0, bending(model, s.ev.x, dx))
+    s.n_eval += 1
+    rel_try = relative_residual(model, ev_try) if ev_try is not None else np.inf
+    if rel_try < 2.0 * CHORD_CONTRACTION**s.run_length * s.run_start:
+        log.debug("[%s] chord %d: residual %.3e", run, it, s.rel)
+        s.x, s.ev, s.rel, s.chords, s.run_length = ev_try.x, ev_try, rel_try, s.chords + 1, s.run_length + 1
+        return True
+    log.debug("[%s] chord %d rejected: residual %.3e -> %.3e", run, it, s.rel, rel_try)
+    return False
+
+
+def _fresh_step(model: Model, cache: FactorisationCache, s: _Iterate, run: str, it: int) -> None:
+    """A Newton step with a fresh Jacobian (assembled, factorised and line searched by :func:`_damped_step`), whose
+    undamped factorisation the cache keeps; the damping is relaxed after a full step."""
+    data = model.jacobian(s.ev)
+    s.n_jac += 1
+    step, ev_try, fac, dx = _damped_step(model, s, data, run, it)
+    cache.keep(fac)
+    if ev_try is None:
+        reason = f"line search failed at Newton iteration {it} (relative residual {s.rel:.3g})"
+        raise NotConverged(run, s.ev.load, reason, s.ev)
+    if step == 1.0:
+        s.damping = 0.0 if s.damping <= 1e-4 else 0.1 * s.damping
+    log.debug(
+        "[%s] newton %d: residual %.3e, step %.3g, damping %.0e, |dx|max %.3g",
+        run,
+        it,
+        s.rel,
+        step,
+        s.damping,
+        np.abs(dx).max(),
+    )
+    s.x, s.ev = ev_try.x, ev_try
+    s.rel = relative_residual(model, s.ev)
+    s.run_start, s.run_length = s.rel, 0
+
+
+def _damped_step(model: Model, s: _Iterate, data: np.ndarray, run: str, it: int):
+    """Solve with the factorisation of the Jacobian ``data`` at the iterate's damping and line search
+    (:func:`_line_search`); while the line search cuts the step hard (below 1/8), raise the damping and solve again.
+    Returns ``(step, evaluation, factorisation, dx)``: the evaluation None if no step was accepted."""
+    best = None  # (step, evaluation, factorisation, dx) of the best step a lower damping found
+    while True:
+        fac = factorise(model, s.ev, data.copy(), s.damping, run)
+        dx = fac.step(s.ev)
+        step, ev_try, evals = _line_search(model, s.ev, dx, fac.scale)
+        s.n_eval += evals
+        if step >= 0.125 or s.damping >= 1e4:
+            break
+        if ev_try is not None and (best is None or _merit(ev_try, fac.scale) < _merit(best[1], fac.scale)):
+            best = (step, ev_try, fac, dx)
+        s.damping = max(10.0 * s.damping, 1e-4)  # steps cut hard: damp the soft modes and solve again
+        log.debug("[%s] newton %d: step %.3g, damping raised to %.0e", run, it, step, s.damping)
+    if ev_try is None and best is not None:
+        # with an indefinite stiffness a damped direction need not descend at all; the undamped Newton direction
+        # always does (exact Jacobian), so the short step found before the damping rose is taken
+        step, ev_try, fac, dx = best
+        s.damping = fac.damping
+        log.debug("[%s] newton %d: damped line search failed, step %.3g of damping %.0e kept", run, it, step, s.damping)
+    return step, ev_try, fac, dx
+
+
+def _check_progress(s: _Iterate, stall: int | None, run: str) -> None:
+    """Note when the residual halves; with ``stall``, give up once ``stall`` fresh iterations have not halved it."""
+    if s.rel < 0.5 * s.progress[0]:
+        s.progress = (s.rel, s.n_jac)
+    elif stall is not None and s.n_jac - s.progress[1] >= stall:
+        raise NotConverged(
+            run,
+            s.ev.load,
+            f"Newton stagnated: {stall} iterations without halving the relative residual ({s.rel:.3g})",
+            s.ev,
+        )
 
 
 def factorise(model: Model, ev: Evaluation, data: np.ndarray, damping: float, run: str) -> Factorisation:
