@@ -1,5 +1,7 @@
 """Factorisation reuse (chord steps with a stale LU): same equilibria as fresh Newton, never a state above tolerance."""
 
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -81,3 +83,20 @@ def test_a_misspelt_material_name_raises():
         load.with_material(activaton=1.0)
     with pytest.raises(KeyError, match="'prestrech'"):
         Load(1.0, 0.0, material=(("prestrech", 1.0),))
+
+
+def test_the_solver_keeps_one_factorisation_cache_per_model(ci_config):
+    """The cache of a model is the same object on every solve, empty for a copied model; a damped factorisation is not
+    kept, and ``reset`` forgets an undamped one."""
+    model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-cache")
+    cache = solver.factorisation_cache(model)
+    assert solver.factorisation_cache(model) is cache and cache.factorisation is None
+    fac = solver.Factorisation(lambda rhs: rhs, 1.0, np.empty(0, dtype=np.int64), 0.0)
+    cache.keep(fac)
+    assert cache.factorisation is fac
+    assert solver.factorisation_cache(dataclasses.replace(model, _cache={})).factorisation is None
+    cache.keep(dataclasses.replace(fac, damping=1e-4))
+    assert cache.factorisation is None
+    cache.keep(fac)
+    cache.reset()
+    assert cache.factorisation is None
