@@ -1,5 +1,5 @@
 """The pools under the Donnan law as eq. (2.27) is printed: a swelling pressure Pi(c) that does not fall as the
-pool swells (``gag.charge_laws: [prescribed]``, the law ``prescribed`` of :data:`sphgag.physics.materials.CHARGE_LAWS`).
+pool swells (``gag.charge_laws: [prescribed]``, the law ``prescribed`` of :data:`sphgag.physics.donnan.LAWS`).
 
 For each particle spacing: passive homeostatic state at 103 mmHg, then the figure 4
 protocol for cases I and IV. Prints, per run, the pool's volume ratio and the tip
