@@ -3,6 +3,7 @@
 # defines only the names it alone uses.
 
 import hashlib
+from pathlib import PurePosixPath
 
 from sphgag.physics.donnan import PAPER_LAW
 from sphgag.physics.materials import law_gag
@@ -69,7 +70,7 @@ STATE = "results/states/{model}_{pressure}mmHg.npz"
 # record and benchmark are single files named by the rule and the key with each / as _ (flat).
 def flat(key):
     """The run key ``key`` ("{law}/{run}") as one file name ("{law}_{run}")."""
-    return key.replace("/", "_")
+    return "_".join(PurePosixPath(key).parts)
 
 
 # Swelling (figure 4)
