@@ -105,7 +105,20 @@ def test_all_problems_are_reported_at_once(full_config):
         (("swelling", "cases", "I", "angular_extent_deg"), 0, "swelling.cases.I.angular_extent_deg = 0 is invalid"),
         (("bilayer_calibration", "state_pressures_mmHg"), [103.0, 103.0000001, 200.0], "all give the file name '103'"),
         # found by the fuzz test: below round-off the layer's outer radius equals its inner one
-        (("bilayer", "adventitia_thickness_um"), 3.9e-56, "bilayer.adventitia_thickness_um = 3.9e-56 um is thinner"),
+        (("bilayer", "layers", 1, "thickness_um"), 3.9e-56, "bilayer.layers[1].thickness_um (adventitia) = 3.9e-56 um"),
+        (("bilayer", "pool_layers"), ["intima"], "bilayer.pool_layers.intima is not a layer of bilayer.layers"),
+        (
+            ("bilayer", "mass_fractions", "lamina"),
+            dict(elastin=1.0, collagen=0.0),
+            "mass_fractions.lamina is not a layer",
+        ),
+        (("bilayer", "orientations", "media", "circumferential"), 0.0, "a layer carries at most 4 fibre families"),
+        (
+            ("bilayer", "layers"),
+            [dict(name="media", thickness_um=28.4), dict(name="lamina", thickness_um=1.0)],
+            "missing key 'bilayer.mass_fractions.lamina'",
+        ),  # fmt: skip
+        (("bilayer", "aligned_radii_um"), [700.0], "bilayer.aligned_radii_um[0] = 700.0 is not inside the wall"),
         (("bilayer", "aligned_radii_um"), [646.9, 670.5], "the media sub-layer 646.8-646.9 um = 0.1 um is thinner"),
         (("mean", "outer_radius_um"), 333.0, "must be at least half the particle spacing mean.dx_um"),
     ],
@@ -212,7 +225,8 @@ def test_figure_5s_set_is_checked_at_the_resolution_studys_spacings(ci_config):
     config.validate(cfg, SCHEMA)  # no figure's set: run at bilayer.dx_um = 6 um only, where it holds a particle
     de["figures"]["fig5"] = "tiny"
     with pytest.raises(
-        config.ConfigError, match=r"delamination.pool_sets.tiny\[0\]: the pool holds no medial particle at dx = 8 um"
+        config.ConfigError,
+        match=r"delamination.pool_sets.tiny\[0\]: the pool holds no particle of a pool layer at dx = 8 um",
     ):
         config.validate(cfg, SCHEMA)
 
@@ -228,7 +242,11 @@ def test_figure_5s_set_is_checked_at_the_resolution_studys_spacings(ci_config):
         ),
         (("sensitivity", "inputs", "bilayer.nope"), dict(low=1, high=2, source="x"), "bilayer.nope is not a number"),
         (("sensitivity", "inputs", "mean.dx_um"), dict(low=1, high=2, source="x"), "an input is a number of one of"),
-        (("sensitivity", "inputs", "pool.centre_radius_um"), dict(low=650, high=670, source="x"), "leaves the media"),
+        (
+            ("sensitivity", "inputs", "pool.centre_radius_um"),
+            dict(low=650, high=670, source="x"),
+            "leaves the pool layers media",
+        ),
         (("sensitivity", "inputs", "gag.temperature_K", "high"), 300.0, "low = 306.0 must be below high = 300.0"),
         (("sensitivity", "inputs", "gag.temperature_K", "source"), "", "sensitivity.inputs.gag.temperature_K.source"),
         (("sensitivity", "concentration_mEq_l"), 110.0, "must be a step of the swelling ramp (25, 50, 75, 100, 125"),

@@ -129,7 +129,7 @@ def test_a_mutated_config_is_rejected_by_name_or_really_valid(case):
         return 0.25 * np.pi * (r_out**2 - r_in**2) / dx**2
 
     b, m = cfg["bilayer"], cfg["mean"]
-    outer = b["inner_radius_um"] + b["media_thickness_um"] + b["adventitia_thickness_um"]
+    outer = b["inner_radius_um"] + sum(band["thickness_um"] for band in b["layers"])
     if (
         max(
             particles(b["inner_radius_um"], outer, b["dx_um"]),

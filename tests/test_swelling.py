@@ -76,7 +76,7 @@ def swell(cfg, start, sector):
 
 def test_a_pool_without_particles_is_refused_by_name(ci_config):
     """A pool too small for the resolution would write a table of an unchanged wall: it is an error instead."""
-    with pytest.raises(ValueError, match="holds no medial particle at dx = 6 um"):
+    with pytest.raises(ValueError, match="holds no particle of a pool layer .media. at dx = 6 um"):
         pool_model(ci_config, geometry.Sector(663.0, 51.5, 15.0, 0.01))
 
 

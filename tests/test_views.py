@@ -184,6 +184,25 @@ def test_figure_1_draws_the_particles_the_kernel_and_the_composition():
     ]
 
 
+def test_figure_1_shows_a_third_layer_in_the_order_of_the_wall():
+    """A lamina between media and adventitia (a layer of the configuration, not of the code): its particles get a
+    colour of their own and its composition a bar, in the wall's order."""
+    from sphgag.views import layout, style
+
+    particles = _particles()
+    particles.loc[particles.radius_um.between(676.0, 684.0), "layer"] = "lamina"
+    fractions = {
+        "adventitia": {"elastin": 0.1, "collagen": 0.9},  # sorted keys, as the pipeline's canonical configuration
+        "lamina": {"elastin": 1.0, "collagen": 0.0},
+        "media": {"elastin": 0.3, "smc": 0.6, "collagen": 0.1},
+    }
+    fig = layout.fig1(particles, fractions, 2.0, 8.0, ["media", "lamina", "adventitia"])
+    bars = fig.axes[3]
+    assert [t.get_text() for t in bars.get_xticklabels()] == ["media", "lamina", "adventitia"]
+    colours = {_hex(c.get_facecolor()[0]) for c in fig.axes[0].collections}
+    assert len(colours) == 3 and _hex(style.LAYER_COLOURS["media"]) in colours
+
+
 def _pressure_curve(scale=1.0) -> pd.DataFrame:
     """A pressure-diameter curve with its mean circumferential stretch and stress (calibrate_mean's columns)."""
     p = np.arange(0.0, 201.0, 10.0)
@@ -295,7 +314,7 @@ def _fig4(tips, laws):
     from sphgag.views import swelling
 
     cases = {name: SWELLING_CASES[name] for name in dict.fromkeys(tips.case)}
-    return swelling.fig4(tips, _particles(), cases, 10.0, laws, 150.0, WALL_PRESSURES)
+    return swelling.fig4(tips, _particles(), cases, 10.0, laws, 150.0, WALL_PRESSURES, pool_layers=["media"])
 
 
 def test_figure_4_draws_a_block_per_law_and_pool_model_in_figure_3s_colours():
@@ -520,6 +539,10 @@ def _growth(laws, cases, sigmas, criteria, steps=6):
     return _concat(growth), pd.DataFrame(summary)
 
 
+# a lamellar wall: the snapshots grey each layer, the material key names each
+WALL_LAYERS = [["media", 680.0], ["lamina", 681.0], ["media", 690.0], ["adventitia", 720.0]]
+
+
 @pytest.mark.filterwarnings("error:constrained_layout not applied")  # columns wide enough for their titles
 def test_figures_5_to_7_draw_three_onset_criteria():
     from sphgag.views import delamination as views
@@ -529,21 +552,23 @@ def test_figures_5_to_7_draw_three_onset_criteria():
     snap = _snapshots()
 
     fig = views.fig5(growth, summary, {(law, c): snap for law in laws for c in criteria}, "single", 40.0, criteria,
-                     laws, 680.0)  # fmt: skip
+                     laws, WALL_LAYERS)  # fmt: skip
     titles = _titles(fig)
     assert [f"(b) {c} onset measure, single" in titles for c in criteria] == [True] * 3
     assert "(c) growth, single" in titles
     (growth_ax,) = [ax for ax in fig.axes if ax.get_title() == "(c) growth, single"]
     assert set(criteria) <= set(growth_ax.get_legend_handles_labels()[1])  # a line style per criterion
+    (key,) = fig.legends
+    assert [t.get_text() for t in key.get_texts()][:3] == ["intact media", "intact lamina", "intact adventitia"]
 
     fig = views.fig6(growth, summary, {(law, case, c): snap for law in laws for case in ("low", "high")
-                                       for c in criteria}, ["low", "high"], criteria, laws, 680.0)  # fmt: skip
+                                       for c in criteria}, ["low", "high"], criteria, laws, WALL_LAYERS)  # fmt: skip
     titles = _titles(fig)
     assert "(c) low: converted particles" in titles and "(c) high: converted particles" in titles
     assert sum(t.startswith("(b) high, strain: ") for t in titles) == 1  # the last state of the third criterion
 
     fig = views.fig7(growth, summary, {(law, c): snap for law in laws for c in criteria}, "offset", 40.0, criteria,
-                     laws, 680.0)  # fmt: skip
+                     laws, WALL_LAYERS)  # fmt: skip
     (tip,) = [ax for ax in fig.axes if ax.get_title().startswith("(b) offset: tip radial stress")]
     colours = {_hex(line.get_color()) for line in tip.get_lines()[: len(criteria)]}
     assert colours == set(map(_hex, views.criterion_colours(criteria).values()))

@@ -212,7 +212,8 @@ def validate(config: dict, schema_path) -> dict:
 
 
 def _empty_pools(config: dict) -> list[str]:
-    """Pools that hold no medial particle at a resolution they are run at (too thin or too narrow for dx)."""
+    """Pools that hold no particle of a pool layer (the media) at a resolution they are run at (too thin or too
+    narrow for dx)."""
     from .studies import artery
 
     bil, out, layouts = config["bilayer"], [], {}
@@ -231,18 +232,23 @@ def _empty_pools(config: dict) -> list[str]:
     for name, pool, dx in runs:
         if dx not in layouts:
             layouts[dx] = artery.bilayer_layout(dict(bil, dx_um=dx))
-        if not artery.pool_sector(pool).members(layouts[dx], layer="media").size:
+        if not artery.pool_sector(pool).members(layouts[dx], layer=layouts[dx].pool_layers).size:
             out.append(
-                f"{name}: the pool holds no medial particle at dx = {dx:g} um (it is "
+                f"{name}: the pool holds no particle of a pool layer at dx = {dx:g} um (it is "
                 f"{pool['radial_extent_um']:g} um by {pool['angular_extent_deg']:g} deg): make it larger than "
                 "the particle spacing"
             )
     return sorted(set(out))
 
 
+THINNEST_LAYER = 0.1  # a layer (or sub-layer) as thin as this fraction of the spacing still gets its own ring
+
+
 def _thin_layers(config: dict) -> list[str]:
-    """Layers (and media sub-layers between ``aligned_radii_um``) thinner than half the largest particle spacing they
-    are run at: their one ring of particles would get a cell of a sliver (or, below round-off, none at all)."""
+    """Layers (and sub-layers between ``aligned_radii_um``) thinner than a tenth of the largest particle spacing they
+    are run at. Every layer gets at least one ring of particles (a lamina one particle thick is fine: the three-layer
+    wall of tests/test_bilayer.py matches its exact tube); below a tenth its cell is a sliver (or, below round-off,
+    nothing at all)."""
     out = []
     m = config.get("mean", {})
     if {"inner_radius_um", "outer_radius_um", "dx_um"} <= set(m) and m["outer_radius_um"] > m["inner_radius_um"]:
@@ -252,29 +258,74 @@ def _thin_layers(config: dict) -> list[str]:
                 f"must be at least half the particle spacing mean.dx_um = {m['dx_um']:g} um"
             )
     bil = config.get("bilayer", {})
-    if not {"inner_radius_um", "media_thickness_um", "adventitia_thickness_um", "dx_um"} <= set(bil):
+    if not {"inner_radius_um", "layers", "dx_um"} <= set(bil):
         return out
     spacings = [("bilayer.dx_um", bil["dx_um"])]
     spacings += [("swelling_convergence.dx_um", dx) for dx in config.get("swelling_convergence", {}).get("dx_um", [])]
     de_conv = config.get("delamination", {}).get("convergence", {})
     spacings += [("delamination.convergence.dx_um", dx) for dx in de_conv.get("dx_um", [])]
     source, dx = max(spacings, key=lambda item: item[1])
-    from .studies.artery import bilayer_interfaces
-
-    r0, border, _ = bilayer_interfaces(bil)
-    edges = sorted({r0, border, *(r for r in bil.get("aligned_radii_um", []) if r0 < r < border)})
-    layers = [
-        (f"bilayer.media_thickness_um / bilayer.aligned_radii_um: the media sub-layer {a:g}-{b:g} um", b - a)
-        for a, b in zip(edges, edges[1:])
-    ]
-    layers.append(("bilayer.adventitia_thickness_um", bil["adventitia_thickness_um"]))
+    r, layers = bil["inner_radius_um"], []
+    for k, band in enumerate(bil["layers"]):
+        a, b = r, r + band["thickness_um"]
+        edges = sorted({a, b, *(x for x in bil.get("aligned_radii_um", []) if a < x < b)})
+        if len(edges) <= 2:  # one edge: the band is thinner than round-off
+            layers.append((f"bilayer.layers[{k}].thickness_um ({band['name']})", band["thickness_um"]))
+        else:
+            sub = [(f"the {band['name']} sub-layer {lo:g}-{hi:g} um", hi - lo) for lo, hi in zip(edges, edges[1:])]
+            layers += [(f"bilayer.aligned_radii_um: {name}", t) for name, t in sub]
+        r = b
     for name, thickness in layers:
-        if thickness < dx / 2:
+        if thickness < THINNEST_LAYER * dx:
             out.append(
-                f"{name} = {thickness:g} um is thinner than half the largest particle spacing it is run at "
+                f"{name} = {thickness:g} um is thinner than a tenth of the largest particle spacing it is run at "
                 f"({source} = {dx:g} um)"
             )
     return out
+
+
+def _wall(bil: dict) -> list[str]:
+    """The layered wall of ``bilayer``: every layer named in ``layers`` has its mass fractions and orientations (and no
+    others are given), the pool layers are layers of the wall, a layer has at most ``MAX_FAMILIES`` fibre families,
+    and the aligned radii lie inside the wall."""
+    from .physics.materials import MAX_FAMILIES
+
+    problems, names = [], list(dict.fromkeys(band["name"] for band in bil.get("layers", [])))
+    for key in ("mass_fractions", "orientations", "pool_layers"):
+        given = bil.get(key, {})
+        for name in given:
+            if name not in names:
+                problems.append(f"bilayer.{key}.{name} is not a layer of bilayer.layers ({', '.join(names)})")
+        if key != "pool_layers":
+            problems += [
+                f"missing key 'bilayer.{key}.{n}': every layer of bilayer.layers needs it"
+                for n in names
+                if n not in given
+            ]
+    for name in names:
+        frac, beta = bil.get("mass_fractions", {}).get(name, {}), bil.get("orientations", {}).get(name, {})
+        families = 3 + int("smc" in frac) + int("circumferential" in beta)  # axial and +-diagonal collagen, ...
+        if families > MAX_FAMILIES:
+            problems.append(
+                f"bilayer.mass_fractions.{name}.smc and bilayer.orientations.{name}.circumferential: a layer "
+                f"carries at most {MAX_FAMILIES} fibre families (SMC or circumferential collagen, axial, two diagonal)"
+            )
+    r_in = bil.get("inner_radius_um", 0)
+    r_out = r_in + sum(band["thickness_um"] for band in bil.get("layers", []))
+    for k, r in enumerate(bil.get("aligned_radii_um", [])):
+        if not r_in < r < r_out:
+            problems.append(f"bilayer.aligned_radii_um[{k}] = {r} is not inside the wall ({r_in:g}-{r_out:g} um)")
+    return problems
+
+
+def _pool_span(bil: dict, lo: float, hi: float) -> str | None:
+    """``None`` if the radii ``lo``-``hi`` lie in one span of pool layers, else the spans as text."""
+    from .studies import artery
+
+    spans = artery.pool_spans(bil)
+    if any(a <= lo and hi <= b for a, b in spans):
+        return None
+    return f"the pool layers {', '.join(bil['pool_layers'])} ({'; '.join(f'{a:g}-{b:g}' for a, b in spans)} um)"
 
 
 def _pool_set_roles(de: dict) -> list[str]:
@@ -404,16 +455,13 @@ def _consistency(config: dict) -> list[str]:
     pools = {f"swelling.cases.{name}": pool for name, pool in sw.get("cases", {}).items()}
     for name, members in de.get("pool_sets", {}).items():
         pools.update({f"delamination.pool_sets.{name}[{k}]": pool for k, pool in enumerate(members)})
-    if bil:
-        r_in = bil.get("inner_radius_um", 0)
-        border = r_in + bil.get("media_thickness_um", 0)
-        for k, r in enumerate(bil.get("aligned_radii_um", [])):
-            if not r_in < r < border:
-                problems.append(f"bilayer.aligned_radii_um[{k}] = {r} is not inside the media ({r_in:g}-{border:g} um)")
+    wall = _wall(bil) if bil else []
+    problems += wall
+    if bil and not wall:
         for name, pool in pools.items():
             lo, hi = _pool_radii(pool)
-            if lo < r_in or hi > border:
-                problems.append(f"{name}: radii {lo:g}-{hi:g} um leave the media ({r_in:g}-{border:g} um)")
+            if spans := _pool_span(bil, lo, hi):
+                problems.append(f"{name}: radii {lo:g}-{hi:g} um leave {spans}")
             first, last = _pool_angles(pool)
             if first <= 0 or last >= 90:
                 problems.append(f"{name}: angles {first:g}-{last:g} deg reach a symmetry edge (0 or 90 deg)")
@@ -501,15 +549,14 @@ def _sensitivity(config: dict, schema: dict) -> list[str]:
             out.append(f"{name}: low = {r['low']} must be below high = {r['high']}")
     de, bil = config["delamination"], config["bilayer"]
     pool = de["pool_sets"][de["figures"]["fig5"]][0]
-    r_in, border = bil["inner_radius_um"], bil["inner_radius_um"] + bil["media_thickness_um"]
     radius = se["inputs"].get("pool.centre_radius_um", {})
     for end in ("low", "high"):
         if end in radius:
             lo, hi = _pool_radii(dict(pool, centre_radius_um=radius[end]))
-            if lo < r_in or hi > border:
+            if spans := _pool_span(bil, lo, hi):
                 out.append(
                     f"sensitivity.inputs.pool.centre_radius_um.{end} = {radius[end]}: the pool ({lo:g}-{hi:g} um) "
-                    f"leaves the media ({r_in:g}-{border:g} um)"
+                    f"leaves {spans}"
                 )
     widths = [("sensitivity.map.angular_extents_deg", w) for w in se["map"]["angular_extents_deg"]]
     widths += [

@@ -7,6 +7,7 @@ from pathlib import PurePosixPath
 
 from sphgag.physics.donnan import PAPER_LAW
 from sphgag.physics.materials import law_gag
+from sphgag.studies.artery import Bilayer
 from sphgag.studies.delamination.settings import Settings as DelaminationSettings
 from sphgag.studies.onset import CRITERIA
 from sphgag.studies.protocols import POOL_MODELS

@@ -115,6 +115,7 @@ rule fig1:
         mem_mb=1000,
     params:
         mass_fractions=config["bilayer"]["mass_fractions"],
+        layers=Bilayer.of(config["bilayer"]).layer_names(),
         support_factor=config["numerics"]["kernel_support_factor"],
         dx=config["bilayer"]["dx_um"],
     script:
@@ -152,6 +153,7 @@ rule fig4:
         max_concentration=config["swelling"]["max_concentration_mEq_l"],
         # the pressures of figure 3's transmural profiles: a pressure has one colour in figures 3 and 4
         pressures=config["calibration"]["transmural_pressures_mmHg"],
+        pool_layers=config["bilayer"]["pool_layers"],
     script:
         "../scripts/fig4.py"
 
@@ -225,7 +227,8 @@ rule swelling_convergence_figure:
 
 # figures 5-7: the delamination runs (rule delaminate) of the pool sets named by delamination.figures, one block per
 # charge law, one column or line style per onset criterion
-DE_MEDIA_OUTER = config["bilayer"]["inner_radius_um"] + config["bilayer"]["media_thickness_um"]
+# the wall's layers as [name, outer radius] from the lumen out: the snapshots' particles are greyed by layer
+DE_LAYERS = [[name, outer] for name, _, outer in Bilayer.of(config["bilayer"]).bands()]
 # figure 5a shows its set at critical_stress_kPa if that is one of its sigma_cr, else at the nearest one
 FIG5_SIGMA = min(DE["critical_stresses_kPa"], key=lambda s: abs(s - DE["critical_stress_kPa"]))
 DE_SIGMA = f"{DE['critical_stress_kPa']:g}"
@@ -278,7 +281,7 @@ rule fig5:
         sigma=FIG5_SIGMA,
         criteria=DE["criteria"],
         laws=LAWS,
-        media_outer=DE_MEDIA_OUTER,
+        layers=DE_LAYERS,
     script:
         "../scripts/fig5.py"
 
@@ -313,7 +316,7 @@ rule fig6:
         cases=FIG6_SETS,
         criteria=DE["criteria"],
         laws=LAWS,
-        media_outer=DE_MEDIA_OUTER,
+        layers=DE_LAYERS,
     script:
         "../scripts/fig6.py"
 
@@ -348,6 +351,6 @@ rule fig7:
         sigma=DE["critical_stress_kPa"],
         criteria=DE["criteria"],
         laws=LAWS,
-        media_outer=DE_MEDIA_OUTER,
+        layers=DE_LAYERS,
     script:
         "../scripts/fig7.py"

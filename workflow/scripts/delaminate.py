@@ -50,9 +50,10 @@ with runlog.run(run, sm.log[0]) as log:
             model, start, sectors, settings, cfg["numerics"], sm.params.gag, model.props, run=run
         )
     growth, summary = delamination.labelled(result, w.poolset, settings, cfg["bilayer"]["dx_um"])
-    if fracture_energy is not None:  # the pool as a pressurised crack in the media's elastin matrix, E' = 4 phi_e mu_e
+    if fracture_energy is not None:  # the pool as a pressurised crack in its layer's elastin matrix, E' = 4 phi_e mu_e
         bl = cfg["bilayer"]
-        modulus = 4.0 * bl["mass_fractions"]["media"]["elastin"] * bl["elastin_shear_modulus_kPa"]
+        layer = artery.layer_at(bl, sectors[0].centre_radius)
+        modulus = 4.0 * bl["mass_fractions"][layer]["elastin"] * bl["elastin_shear_modulus_kPa"]
         closed = delamination.griffith(sectors, fracture_energy, modulus, sm.params.gag, de["max_concentration_mEq_l"])
         summary = summary.assign(plane_strain_modulus_kPa=modulus, **closed)
     growth.insert(0, "charge_law", sm.params.gag["charge_law"])

@@ -13,6 +13,13 @@ with runlog.run("fig4", sm.log[0]):
     style.finite_or_raise(tips, ["tip_radial_stress_kPa", "top_circ_stress_kPa", "concentration_mEq_l"], "fig4")
     p = sm.params
     fig = swelling.fig4(
-        tips, pd.read_csv(sm.input.particles), p.cases, p.probe_length, p.laws, p.max_concentration, p.pressures
+        tips,
+        pd.read_csv(sm.input.particles),
+        p.cases,
+        p.probe_length,
+        p.laws,
+        p.max_concentration,
+        p.pressures,
+        pool_layers=p.pool_layers,
     )
     style.save(fig, [sm.output.pdf, sm.output.png], "Figure 4 (GAG pool swelling), sphgag")

@@ -19,5 +19,5 @@ with runlog.run("fig5", sm.log[0]):
     )
     keys = [(law, c) for law in p.laws for c in p.criteria]  # the order of the rule's input
     snapshots = {key: views.read_snapshots(path) for key, path in zip(keys, sm.input.snapshots)}
-    fig = views.fig5(growth, summary, snapshots, p.case, p.sigma, p.criteria, p.laws, p.media_outer)
+    fig = views.fig5(growth, summary, snapshots, p.case, p.sigma, p.criteria, p.laws, p.layers)
     style.save(fig, [sm.output.pdf, sm.output.png], "Figure 5 (delamination by a single GAG pool), sphgag")

@@ -21,5 +21,5 @@ with runlog.run("fig6", sm.log[0]):
     )
     keys = [(law, case, c) for law in p.laws for case in p.cases for c in p.criteria]  # the order of the rule's input
     snapshots = {key: views.read_snapshots(path) for key, path in zip(keys, sm.input.snapshots)}
-    fig = views.fig6(growth, summary, snapshots, p.cases, p.criteria, p.laws, p.media_outer)
+    fig = views.fig6(growth, summary, snapshots, p.cases, p.criteria, p.laws, p.layers)
     style.save(fig, [sm.output.pdf, sm.output.png], "Figure 6 (coalescence of two GAG pools at one radius), sphgag")

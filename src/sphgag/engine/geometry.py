@@ -44,6 +44,7 @@ class Layout:
     interfaces : radii of the wall surfaces and layer interfaces, inner to outer.
     layer_names : name of each layer, inner to outer.
     dx : requested particle spacing [um].
+    pool_layers : names of the layers whose particles GAG pools convert and damage delaminates (the paper's media).
     """
 
     X: np.ndarray
@@ -57,6 +58,7 @@ class Layout:
     interfaces: tuple
     layer_names: tuple
     dx: float
+    pool_layers: tuple = ()
     _ring_members: list = field(default_factory=list, repr=False, compare=False)
 
     @property
@@ -83,8 +85,16 @@ class Layout:
     def outer_surface(self) -> np.ndarray:
         return self.ring_members(len(self.ring_radius) - 1)
 
-    def layer_mask(self, name: str) -> np.ndarray:
-        return self.layer == self.layer_names.index(name)
+    def layer_mask(self, name: str | tuple | list) -> np.ndarray:
+        """Which particles belong to the layer ``name`` (or to any of several names; a name the wall lacks has none)."""
+        if isinstance(name, str):
+            return self.layer == self.layer_names.index(name)
+        return np.isin(self.layer, [k for k, n in enumerate(self.layer_names) if n in name])
+
+    @property
+    def pool_mask(self) -> np.ndarray:
+        """Which particles belong to a pool layer (``pool_layers``)."""
+        return self.layer_mask(self.pool_layers)
 
 
 def _ring_radii(interfaces, dx):
@@ -115,7 +125,7 @@ def _ring_radii(interfaces, dx):
     return np.array(radii), np.array(cells), np.array(layer_of_ring)
 
 
-def quarter_annulus(interfaces, dx, layer_names=("wall",)) -> Layout:
+def quarter_annulus(interfaces, dx, layer_names=("wall",), pool_layers=()) -> Layout:
     """Generate the particle layout of a (possibly layered) quarter annulus.
 
     Parameters
@@ -124,6 +134,7 @@ def quarter_annulus(interfaces, dx, layer_names=("wall",)) -> Layout:
     dx : target particle spacing in um (the resolution parameter ``dx_um``).
     layer_names : one name per interval, inner to outer; repeating a name splits a layer
         into sub-layers (e.g. to align cell boundaries with the radial edges of a GAG pool).
+    pool_layers : the names of the layers GAG pools may occupy (``Layout.pool_layers``).
     """
     interfaces = tuple(float(r) for r in interfaces)
     if len(layer_names) != len(interfaces) - 1:
@@ -170,6 +181,7 @@ def quarter_annulus(interfaces, dx, layer_names=("wall",)) -> Layout:
         interfaces=interfaces,
         layer_names=names,
         dx=float(dx),
+        pool_layers=tuple(pool_layers),
         _ring_members=members,
     )
 
@@ -206,7 +218,8 @@ class Sector:
         (r0, r1), (t0, t1) = self.r_range, self.theta_range
         return (radius >= r0) & (radius <= r1) & (theta >= t0) & (theta <= t1)
 
-    def members(self, layout: Layout, layer: str | None = None) -> np.ndarray:
+    def members(self, layout: Layout, layer: str | tuple | None = None) -> np.ndarray:
+        """The particles of ``layout`` in the sector (of the layer ``layer``, or of any of several names)."""
         mask = self.contains(layout.radius, layout.theta)
         if layer is not None:
             mask &= layout.layer_mask(layer)

@@ -121,15 +121,17 @@ def layer_stats(profile: pd.DataFrame) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def sector_average(ev: Evaluation, layout, sector, component: str, layer: str | None = "media") -> float:
-    """Volume-weighted mean Cauchy stress component (``rr`` or ``tt``, current polar frame) in a sector.
+def sector_average(ev: Evaluation, layout, sector, component: str, layer: str | tuple | None) -> float:
+    """Volume-weighted mean Cauchy stress component (``rr`` or ``tt``, current polar frame) in a sector, over the
+    particles of ``layer`` (a name, several names, or ``None``: every layer).
 
     Raises ``ValueError`` if no particle of ``layer`` lies in the sector (resolution too coarse).
     """
     idx = sector.members(layout, layer=layer)
     if idx.size == 0:
+        names = ", ".join([layer] if isinstance(layer, str) else layer or ())
         raise ValueError(
-            f"no {layer or ''} particle in the measurement region {sector} at dx = {layout.dx} um: "
+            f"no {names} particle in the measurement region {sector} at dx = {layout.dx} um: "
             "the region must be at least about one particle spacing in size"
         )
     srr, stt, _, _ = cauchy_polar(ev)

@@ -54,8 +54,6 @@ def mean_thick_wall(p: dict) -> analytic.ThickWallTube:
 # Bi-layered constrained-mixture model (section 2.4.2, Table 2)
 # ---------------------------------------------------------------------------
 
-LAYERS = ("media", "adventitia")
-
 
 @dataclass(frozen=True)
 class FibreConstants(Options):
@@ -92,13 +90,17 @@ class Active(Options):
 class Bilayer(Options):
     """The ``bilayer`` configuration section (section 2.4.2, Table 2): the in vivo geometry, the particle spacing,
     the constituents' moduli, mass fractions, orientations, fibre constants, pre-stretches and active tone.
-    ``mass_fractions[layer][constituent]`` and ``orientations[layer][direction]`` are read-only mappings."""
+
+    ``layers`` are the wall's bands from the lumen outwards, each a ``{name, thickness_um}`` (a name may repeat: a
+    lamellar media is ``media, lamina, media, ...``); ``pool_layers`` name the layers whose particles GAG pools convert
+    and damage delaminates (the paper's media). ``mass_fractions[layer][constituent]`` and
+    ``orientations[layer][direction]`` are read-only mappings by layer name."""
 
     SECTION = "bilayer"
 
     inner_radius_um: float
-    media_thickness_um: float
-    adventitia_thickness_um: float
+    layers: tuple
+    pool_layers: tuple
     dx_um: float
     elastin_shear_modulus_kPa: float
     lame_lambda_kPa: float
@@ -111,22 +113,58 @@ class Bilayer(Options):
     prestretch: Prestretch
     active: Active
 
+    def bands(self) -> list[tuple[str, float, float]]:
+        """``(name, R_a, R_b)`` of every band of ``layers``, from the lumen outwards (the in vivo geometry)."""
+        out, r = [], self.inner_radius_um
+        for band in self.layers:
+            out.append((band["name"], r, r + band["thickness_um"]))
+            r += band["thickness_um"]
+        return out
 
-def bilayer_interfaces(p: Bilayer | dict):
-    """Reference radii [R_in, media/adventitia border, R_out] of the in vivo (homeostatic) geometry."""
+    def layer_names(self) -> list[str]:
+        """The distinct layer names, in the order of their first band."""
+        return list(dict.fromkeys(name for name, _, _ in self.bands()))
+
+
+def bilayer_interfaces(p: Bilayer | dict) -> list[float]:
+    """Reference radii [R_in, the bands' borders, ..., R_out] of the in vivo (homeostatic) geometry."""
+    bands = Bilayer.of(p).bands()
+    return [bands[0][1]] + [b for _, _, b in bands]
+
+
+def pool_spans(p: Bilayer | dict) -> list[tuple[float, float]]:
+    """The radial spans ``(R_a, R_b)`` of ``pool_layers``: adjacent bands of pool layers join into one span (a pool
+    must lie inside one of them)."""
     p = Bilayer.of(p)
-    r0 = p.inner_radius_um
-    border = r0 + p.media_thickness_um
-    return r0, border, border + p.adventitia_thickness_um
+    out = []
+    for name, a, b in p.bands():
+        if name not in p.pool_layers:
+            continue
+        if out and out[-1][1] == a:
+            out[-1] = (out[-1][0], b)
+        else:
+            out.append((a, b))
+    return out
+
+
+def layer_at(p: Bilayer | dict, radius: float) -> str:
+    """The name of the layer at the reference radius ``radius`` (the inner band at a border)."""
+    bands = Bilayer.of(p).bands()
+    return next((name for name, _, b in bands if radius <= b), bands[-1][0])
+
+
+def has_smc(p: Bilayer | dict, layer: str) -> bool:
+    """Whether ``layer`` holds smooth muscle (an ``smc`` mass fraction): its SMC family and active tone (eq. 2.24)."""
+    return "smc" in Bilayer.of(p).mass_fractions[layer]
 
 
 def bilayer_families(p: Bilayer | dict, layer: str):
     """Fibre families of one layer as :class:`analytic.Family` (eqs. 2.22-2.23, Table 2).
 
-    Media: SMC + circumferential collagen (phi_M^s, 90 deg, SMC constants, pre-stretch G_M^2),
-    axial collagen (phi_M^c beta_M^z) and two diagonal families (phi_M^c beta_M^d / 2 each, +-alpha_0).
-    Adventitia: collagen only, axial (beta_A^z), circumferential (beta_A^theta) and diagonal
-    (beta_A^d / 2 each). All collagen has the same constants and pre-stretch in both layers.
+    A layer with an ``smc`` mass fraction (the media) has SMC + circumferential collagen (phi_M^s, 90 deg, SMC
+    constants, pre-stretch G_M^2); a layer with a ``circumferential`` orientation (the adventitia) has circumferential
+    collagen (phi_A^c beta_A^theta). Every layer has axial collagen (phi^c beta^z) and two diagonal families
+    (phi^c beta^d / 2 each, +-alpha_0). All collagen has the same constants and pre-stretch in every layer.
     """
     p = Bilayer.of(p)
     col, smc, pre = p.collagen, p.smc, p.prestretch
@@ -137,11 +175,11 @@ def bilayer_families(p: Bilayer | dict, layer: str):
         return analytic.Family(phi, alpha, col.c1_kPa, col.c2, col.c1_compression_kPa, col.c2_compression, pre.collagen)
 
     fams = []
-    if layer == "media":
+    if "smc" in frac:
         fams.append(
             analytic.Family(frac["smc"], 90.0, smc.c1_kPa, smc.c2, smc.c1_compression_kPa, smc.c2_compression, pre.smc)
         )
-    else:
+    if "circumferential" in beta:
         fams.append(collagen(frac["collagen"] * beta["circumferential"], 90.0))
     fams.append(collagen(frac["collagen"] * beta["axial"], 0.0))
     fams.append(collagen(frac["collagen"] * beta["diagonal"] / 2, a0))
@@ -167,22 +205,16 @@ def bilayer_law(p: Bilayer | dict, layer: str, active: bool) -> analytic.Mixture
         families=bilayer_families(p, layer),
         Gr=gr,
         Gt=gt,
-        tmax=act.max_stress_kPa if (active and layer == "media") else 0.0,
+        tmax=act.max_stress_kPa if (active and has_smc(p, layer)) else 0.0,
         lmax=act.stretch_max,
         lmin=act.stretch_min,
     )
 
 
 def bilayer_tube(p: Bilayer | dict, active: bool) -> analytic.ThickWallTube:
-    """Semi-analytical incompressible bi-layered tube (same constituents and pre-stretches)."""
-    r0, rb, r1 = bilayer_interfaces(p)
-    return analytic.ThickWallTube(
-        [
-            (r0, rb, bilayer_law(p, "media", active), "media"),
-            (rb, r1, bilayer_law(p, "adventitia", active), "adventitia"),
-        ],
-        lz=1.0,
-    )
+    """Semi-analytical incompressible layered tube (same layers, constituents and pre-stretches)."""
+    p = Bilayer.of(p)
+    return analytic.ThickWallTube([(a, b, bilayer_law(p, name, active), name) for name, a, b in p.bands()], lz=1.0)
 
 
 class BilayerMaterial:
@@ -198,8 +230,8 @@ class BilayerMaterial:
         self.p = p = Bilayer.of(p)
         n = layout.n
         table = materials.empty_props(n)
-        self.media = layout.layer_mask("media")
-        for layer in LAYERS:
+        self.active = np.isin(layout.layer, [k for k, name in enumerate(layout.layer_names) if has_smc(p, name)])
+        for layer in layout.layer_names:
             rows = np.flatnonzero(layout.layer_mask(layer))
             table[rows, materials.MU] = p.mass_fractions[layer]["elastin"] * p.elastin_shear_modulus_kPa
             for k, f in enumerate(bilayer_families(p, layer)):
@@ -221,7 +253,7 @@ class BilayerMaterial:
         out[:, materials.GR], out[:, materials.GT], out[:, materials.GZ] = gr, gt, gz
         for col in self._fibre_g:
             out[:, col] = 1.0 + s * (self.target[:, col] - 1.0)
-        out[self.media, materials.TACT] = a * self.p.active.max_stress_kPa
+        out[self.active, materials.TACT] = a * self.p.active.max_stress_kPa
         return out
 
 
@@ -233,13 +265,15 @@ def pool_sector(case: dict) -> geometry.Sector:
 
 
 def bilayer_layout(p: Bilayer | dict) -> geometry.Layout:
-    """Particles of the bi-layered wall: media (with ``aligned_radii_um`` as cell boundaries) and adventitia."""
+    """Particles of the layered wall: one band per entry of ``layers``, each split at the ``aligned_radii_um`` inside
+    it (cell boundaries: the radial edges of GAG pools)."""
     p = Bilayer.of(p)
-    r0, border, r1 = bilayer_interfaces(p)
-    aligned = sorted(r for r in p.aligned_radii_um if r0 < r < border)
-    return geometry.quarter_annulus(
-        [r0, *aligned, border, r1], p.dx_um, layer_names=["media"] * (len(aligned) + 1) + ["adventitia"]
-    )
+    radii, names = [p.inner_radius_um], []
+    for name, a, b in p.bands():
+        inside = sorted(r for r in p.aligned_radii_um if a < r < b)
+        radii += [*inside, b]
+        names += [name] * (len(inside) + 1)
+    return geometry.quarter_annulus(radii, p.dx_um, layer_names=names, pool_layers=p.pool_layers)
 
 
 def bilayer_model(
@@ -270,14 +304,15 @@ def bilayer_model(
 
 
 def seeding(base, layout: geometry.Layout, sectors, gag: dict) -> history.HistoryMaterial:
-    """The material path from the intact wall (``base``) to the wall with the medial particles of ``sectors``
-    seeded as GAG pools (pool k = sector k); a sector without a medial particle is an error."""
-    members = [s.members(layout, layer="media") for s in sectors]
+    """The material path from the intact wall (``base``) to the wall with the particles of ``sectors`` in its pool
+    layers (``layout.pool_layers``, the paper's media) seeded as GAG pools (pool k = sector k); a sector without such
+    a particle is an error."""
+    members = [s.members(layout, layer=layout.pool_layers) for s in sectors]
     for s, m in zip(sectors, members):
         if not m.size:
             raise ValueError(
-                f"the pool {s} holds no medial particle at dx = {layout.dx:g} um: make it larger "
-                "than the particle spacing or move it into the media"
+                f"the pool {s} holds no particle of a pool layer ({', '.join(layout.pool_layers)}) at dx = "
+                f"{layout.dx:g} um: make it larger than the particle spacing or move it into such a layer"
             )
     intact = history.ParticleHistory.intact(layout.n)
     return history.HistoryMaterial(base, intact, gag, after=intact.seed(members))

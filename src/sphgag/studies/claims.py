@@ -194,6 +194,10 @@ def c3_uniform_hoop_stress(e: Evidence) -> Claim:
     )
 
 
+# claims C4-C5 are the paper's statements about its two layers: a wall without a layer of either name has no C4-C5
+MEDIA, ADVENTITIA = "media", "adventitia"
+
+
 def _layer_mean(t: pd.DataFrame, model: str, P: float, layer: str) -> float:
     d = t[(t.model == model) & np.isclose(t.pressure_mmHg, P) & (t.layer == layer)]
     return d.circ_stress_kPa.mean()
@@ -206,11 +210,11 @@ def _profiled_pressures(t: pd.DataFrame) -> list:
 def c4_adventitia_shields(e: Evidence) -> Claim | None:
     t = _sph_profiles(e)
     pressures = _profiled_pressures(t)
-    if len(pressures) < 2:
+    if len(pressures) < 2 or not {MEDIA, ADVENTITIA} <= set(t.layer):
         return None
     lo, hi = pressures[0], pressures[-1]
-    r_lo = _layer_mean(t, "passive", lo, "adventitia") / _layer_mean(t, "passive", lo, "media")
-    r_hi = _layer_mean(t, "passive", hi, "adventitia") / _layer_mean(t, "passive", hi, "media")
+    r_lo = _layer_mean(t, "passive", lo, ADVENTITIA) / _layer_mean(t, "passive", lo, MEDIA)
+    r_hi = _layer_mean(t, "passive", hi, ADVENTITIA) / _layer_mean(t, "passive", hi, MEDIA)
     return Claim(
         "C4",
         "At elevated pressure the adventitia shields the media (passive model)",
@@ -224,14 +228,14 @@ def c4_adventitia_shields(e: Evidence) -> Claim | None:
 def c5_activation_shifts_load(e: Evidence) -> Claim | None:
     t = _sph_profiles(e)
     pressures = _profiled_pressures(t)
-    if len(pressures) < 2:
+    if len(pressures) < 2 or not {MEDIA, ADVENTITIA} <= set(t.layer):
         return None
     shares, adv = [], []
     for P in pressures:
-        sp = _layer_mean(t, "passive", P, "media") / _layer_mean(t, "passive", P, "adventitia")
-        sa = _layer_mean(t, "active", P, "media") / _layer_mean(t, "active", P, "adventitia")
+        sp = _layer_mean(t, "passive", P, MEDIA) / _layer_mean(t, "passive", P, ADVENTITIA)
+        sa = _layer_mean(t, "active", P, MEDIA) / _layer_mean(t, "active", P, ADVENTITIA)
         shares.append((P, sp, sa))
-        adv.append(_layer_mean(t, "active", P, "adventitia") < _layer_mean(t, "passive", P, "adventitia"))
+        adv.append(_layer_mean(t, "active", P, ADVENTITIA) < _layer_mean(t, "passive", P, ADVENTITIA))
     return Claim(
         "C5",
         "SMC activation shifts load to the media and lowers the adventitial hoop stress at fixed pressure",

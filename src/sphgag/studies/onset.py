@@ -34,10 +34,11 @@ def particle_stress(model: Model, ev: Evaluation, hist: ParticleHistory, cand: n
 
 
 def averaged_stress(model: Model, ev: Evaluation, hist: ParticleHistory, cand: np.ndarray, settings) -> np.ndarray:
-    """The radial stress of the intact media averaged over a disc of diameter ``settings.averaging_length_um`` around
-    the candidate (:func:`sphgag.engine.measure.averaging_matrix`): the same length at every resolution."""
+    """The radial stress of the intact pool layers (the media) averaged over a disc of diameter
+    ``settings.averaging_length_um`` around the candidate (:func:`sphgag.engine.measure.averaging_matrix`): the same
+    length at every resolution."""
     lay = model.layout
-    intact = np.flatnonzero(lay.layer_mask("media") & ~hist.gag)
+    intact = np.flatnonzero(lay.pool_mask & ~hist.gag)
     W = measure.averaging_matrix(lay, settings.averaging_length_um, intact, rows=cand)
     return W @ measure.cauchy_polar(ev)[0]
 

@@ -365,9 +365,9 @@ def pool_measurements(model: Model, ev, pool, members: np.ndarray, probe_length:
     """
     lay = model.layout
     probes = measure.pool_probes(pool, probe_length)
-    tips = [measure.sector_average(ev, lay, probes[k], "rr") for k in ("tip_low", "tip_high")]
+    tips = [measure.sector_average(ev, lay, probes[k], "rr", lay.pool_layers) for k in ("tip_low", "tip_high")]
     srr, _, _, J_all = measure.cauchy_polar(ev)
-    tip_particles = np.concatenate([probes[k].members(lay, layer="media") for k in ("tip_low", "tip_high")])
+    tip_particles = np.concatenate([probes[k].members(lay, layer=lay.pool_layers) for k in ("tip_low", "tip_high")])
     J = J_all[members] if members.size else np.array([np.nan])
     V = lay.volume[members] if members.size else np.array([1.0])
     if model.cavities:  # the contents swell uniformly: the lining's area gives the pool's volume (engine.pool_cavity)
@@ -378,8 +378,8 @@ def pool_measurements(model: Model, ev, pool, members: np.ndarray, probe_length:
         tip_low_radial_stress_kPa=tips[0],
         tip_high_radial_stress_kPa=tips[1],
         tip_peak_radial_stress_kPa=float(srr[tip_particles].max()),
-        top_circ_stress_kPa=measure.sector_average(ev, lay, probes["top"], "tt"),
-        bottom_circ_stress_kPa=measure.sector_average(ev, lay, probes["bottom"], "tt"),
+        top_circ_stress_kPa=measure.sector_average(ev, lay, probes["top"], "tt", lay.pool_layers),
+        bottom_circ_stress_kPa=measure.sector_average(ev, lay, probes["bottom"], "tt", lay.pool_layers),
         pool_particles=int(members.size),
         pool_volume_change=float(np.sum(V * J) / np.sum(V) - 1.0),
         pool_mean_jacobian=float(np.mean(J)),

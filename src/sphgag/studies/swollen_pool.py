@@ -172,9 +172,12 @@ def sector_model(walls, pool: geometry.Sector, dx: float, mat: inclusion.Materia
     r_in, r_media, r_out = (float(r) for r in walls)
     edges = (pool.centre_radius - 0.5 * pool.radial_extent, pool.centre_radius + 0.5 * pool.radial_extent)
     lay = geometry.quarter_annulus(
-        (r_in, *edges, r_media, r_out), dx, layer_names=("media", "media", "media", "adventitia")
+        (r_in, *edges, r_media, r_out),
+        dx,
+        layer_names=("media", "media", "media", "adventitia"),
+        pool_layers=("media",),
     )
-    members = pool.members(lay, layer="media")
+    members = pool.members(lay, layer=lay.pool_layers)
     numerics = Numerics.of(numerics)
     nb = kernel.for_layout(lay, numerics.kernel_support_factor)
     material = inclusion.InclusionMaterial(lay, mat, members)

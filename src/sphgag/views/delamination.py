@@ -12,7 +12,17 @@ import seaborn as sns
 from .style import GAG_CONCENTRATION, LAYER_COLOURS, _style, distinct_colours, law_blocks, palette, style_legend
 
 SEEDED, CONVERTED = 1, 2  # history origin codes (sphgag.engine.history): a seeded GAG pool, tissue converted by damage
-MATERIAL_COLOURS = {"media": "0.84", "adventitia": "0.62", SEEDED: LAYER_COLOURS["GAG"], CONVERTED: "#2166ac"}
+MATERIAL_COLOURS = {SEEDED: LAYER_COLOURS["GAG"], CONVERTED: "#2166ac"}
+INTACT_GREYS = (0.84, 0.62)  # intact tissue: the innermost layer light, the outermost dark, the others between
+
+
+def intact_colours(layers) -> dict:
+    """A grey per layer name of ``layers`` (``(name, outer radius)`` bands from the lumen out), lighter inside."""
+    names = list(dict.fromkeys(name for name, _ in layers))
+    greys = np.linspace(*INTACT_GREYS, len(names)) if len(names) > 1 else INTACT_GREYS[:1]
+    return {name: f"{g:.2f}".rstrip("0") for name, g in zip(names, greys)}
+
+
 DAMAGE_CMAP = matplotlib.colors.LinearSegmentedColormap.from_list("damage", ["#ffd300", "#f47b20", "#7f2704"])
 SIDE_COLOURS = {"interior": "#1b9e77", "exterior": "#7570b3"}
 PSEUDO_TIME = "pseudo-time (concentration levels + damage passes)"
@@ -96,18 +106,19 @@ def snapshot_status(snap: dict, k: int) -> str:
     return f"max D {d_max:.2f}, none ruptured" if d_max > 0 else "no damage onset"
 
 
-def snapshot_panel(ax, snap: dict, k: int, window, radii, media_outer_um: float, label: str):
+def snapshot_panel(ax, snap: dict, k: int, window, radii, layers, label: str):
     """Snapshot ``k`` of a run: the particles of the angular ``window`` at their current angle and radius (axis
-    limits ``window`` x ``radii``), true to scale at the pools' radius; intact tissue grey (media light, adventitia
-    dark), damaged tissue by D, seeded GAG red, GAG converted by damage blue. Marker sizes are set by
-    :func:`fit_particle_sizes` after the layout."""
+    limits ``window`` x ``radii``), true to scale at the pools' radius; intact tissue grey by layer (``layers``:
+    ``(name, outer radius)`` bands, :func:`intact_colours`: the media light, the adventitia dark), damaged tissue by
+    D, seeded GAG red, GAG converted by damage blue. Marker sizes are set by :func:`fit_particle_sizes` after the
+    layout."""
     near = in_window(snap, window)
     origin, D = snap[f"s{k}_history_origin"][near], snap[f"s{k}_history_D"][near]
     th, r = current_polar(snap, k, near)
-    media = np.hypot(*snap["X"][near].T) <= media_outer_um
-    colours = matplotlib.colors.to_rgba_array(
-        np.where(media, MATERIAL_COLOURS["media"], MATERIAL_COLOURS["adventitia"])
-    )
+    outer = [r for _, r in layers]
+    band = np.minimum(np.searchsorted(outer, np.hypot(*snap["X"][near].T)), len(layers) - 1)
+    grey = intact_colours(layers)
+    colours = matplotlib.colors.to_rgba_array([grey[layers[b][0]] for b in band])
     damaged = (origin == 0) & (D > 0)
     colours[damaged] = DAMAGE_CMAP(D[damaged])
     for code in (SEEDED, CONVERTED):
@@ -140,19 +151,15 @@ def fit_particle_sizes(fig):
             coll.set_sizes([(0.95 * dx * points_per_um) ** 2])
 
 
-def material_key(fig):
-    """The legend of the snapshot panels' colours, above the figure."""
-    key = {
-        "media": "intact media",
-        "adventitia": "intact adventitia",
-        SEEDED: "seeded GAG pool",
-        CONVERTED: "GAG converted by damage",
-    }
+def material_key(fig, layers):
+    """The legend of the snapshot panels' colours, above the figure (``layers`` as :func:`snapshot_panel`)."""
+    key = {name: (grey, f"intact {name}") for name, grey in intact_colours(layers).items()}
+    key[SEEDED] = (MATERIAL_COLOURS[SEEDED], "seeded GAG pool")
+    key[CONVERTED] = (MATERIAL_COLOURS[CONVERTED], "GAG converted by damage")
     handles = [
-        plt.Line2D([], [], marker="s", ls="none", ms=7, color=MATERIAL_COLOURS[m], label=text)
-        for m, text in key.items()
+        plt.Line2D([], [], marker="s", ls="none", ms=7, color=colour, label=text) for colour, text in key.values()
     ]
-    fig.legend(handles=handles, loc="outside upper center", ncols=4, frameon=False)
+    fig.legend(handles=handles, loc="outside upper center", ncols=len(handles), frameon=False)
 
 
 def damage_colourbar(fig, cax):
@@ -273,7 +280,7 @@ def tip_stress_panel(
     style_legend(ax, "upper left", title=None)
 
 
-def snapshot_grid(fig, spec, columns, media_outer_um):
+def snapshot_grid(fig, spec, columns, layers):
     """Snapshot panels in ``spec`` (a gridspec cell of ``fig``, a figure or a law's block): ``columns`` is a list of
     lists of ``(snapshot, k, label)``, one list per column, each column with one angular window; the damage colour
     bar beside them."""
@@ -288,7 +295,7 @@ def snapshot_grid(fig, spec, columns, media_outer_um):
     for j, (col, window) in enumerate(zip(columns, windows)):
         for i, (snap, k, label) in enumerate(col):
             ax = fig.add_subplot(grid[i, j])
-            snapshot_panel(ax, snap, k, window, radii, media_outer_um, label)
+            snapshot_panel(ax, snap, k, window, radii, layers, label)
             if i == len(col) - 1:
                 ax.set_xlabel("current angle (deg)")
             if j == 0:
@@ -296,7 +303,7 @@ def snapshot_grid(fig, spec, columns, media_outer_um):
     damage_colourbar(fig, fig.add_subplot(grid[:, -1]))
 
 
-def criterion_snapshots(block, snapshots: dict, criteria, n_snapshots: int, label: str, media_outer_um: float, rows):
+def criterion_snapshots(block, snapshots: dict, criteria, n_snapshots: int, label: str, layers, rows):
     """In ``block`` (a law's sub-figure), above: one column of ``n_snapshots`` snapshots per onset criterion
     (``snapshots``: criterion -> snapshots; titles "(a) <criterion><label>"), ``rows`` parts high; returns the
     gridspec cell left below (3 parts)."""
@@ -308,7 +315,7 @@ def criterion_snapshots(block, snapshots: dict, criteria, n_snapshots: int, labe
         for j, c in enumerate(criteria)
     ]
     gs = block.add_gridspec(2, 1, height_ratios=[rows, 3.0])
-    snapshot_grid(block, gs[0], columns, media_outer_um)
+    snapshot_grid(block, gs[0], columns, layers)
     return gs[1]
 
 
@@ -325,7 +332,7 @@ def fig5(
     sigma: float,
     criteria,
     laws,
-    media_outer_um: float,
+    layers,
     n_snapshots: int = 3,
 ):
     """Figure 5, one pool set grown alone (``case``, figure 5's set), one block per charge law (``laws``): (a)
@@ -346,7 +353,7 @@ def fig5(
             criteria,
             n_snapshots,
             f", {sigma:g} kPa: ",
-            media_outer_um,
+            layers,
             rows,
         )
         bottom = lower.subgridspec(1, len(criteria) + 1)
@@ -375,12 +382,12 @@ def fig5(
         no_growth_note(ax, own)
         ax.set(xlabel=GAG_CONCENTRATION, ylabel="delaminated length (um)", title=f"(c) growth, {case}")
         style_legend(ax, "upper left")
-    material_key(fig)
+    material_key(fig, layers)
     fit_particle_sizes(fig)
     return fig
 
 
-def fig6(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, cases, criteria, laws, media_outer_um: float):
+def fig6(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, cases, criteria, laws, layers):
     """Figure 6, pools at one radius (``cases``: figure 6's sets, e.g. low and high separation), one block per charge
     law (``laws``; ``snapshots``: (law, case, criterion) -> snapshots): (a, b, ...) the first snapshot and the last
     one of every criterion, a column per set; (c) the particles converted between the pools (interior) and away from
@@ -399,12 +406,12 @@ def fig6(growth: pd.DataFrame, summary: pd.DataFrame, snapshots: dict, cases, cr
                 for c in criteria
             ]
             columns.append(col)
-        snapshot_grid(block, gs[0], columns, media_outer_um)
+        snapshot_grid(block, gs[0], columns, layers)
         bottom = gs[1].subgridspec(1, len(cases))
         g, sm = of_law(growth, law), of_law(summary, law)
         for j, case in enumerate(cases):
             converted_panel(block.add_subplot(bottom[j]), g, sm, case, criteria, f"(c) {case}: converted particles")
-    material_key(fig)
+    material_key(fig, layers)
     fit_particle_sizes(fig)
     return fig
 
@@ -417,7 +424,7 @@ def fig7(
     sigma: float,
     criteria,
     laws,
-    media_outer_um: float,
+    layers,
     n_snapshots: int = 4,
 ):
     """Figure 7, two pools offset in radius (``case``, figure 7's set), one block per charge law (``laws``;
@@ -428,7 +435,7 @@ def fig7(
     fig, blocks = law_blocks(laws, [0.3 + rows + 3.0] * len(laws), criteria_width(criteria))
     for block, law in zip(blocks, laws):
         lower = criterion_snapshots(
-            block, {c: snapshots[law, c] for c in criteria}, criteria, n_snapshots, ": ", media_outer_um, rows
+            block, {c: snapshots[law, c] for c in criteria}, criteria, n_snapshots, ": ", layers, rows
         )
         bottom = lower.subgridspec(1, 2)
         g, sm = of_law(growth, law), of_law(summary, law)
@@ -447,6 +454,6 @@ def fig7(
         )
         no_growth_note(ax, runs)
         converted_panel(block.add_subplot(bottom[1]), g, sm, case, criteria, f"(c) {case}: converted particles")
-    material_key(fig)
+    material_key(fig, layers)
     fit_particle_sizes(fig)
     return fig

@@ -16,7 +16,7 @@ import seaborn as sns  # noqa: E402
 from ..physics import donnan  # noqa: E402
 from ..records.provenance import figure_metadata  # noqa: E402
 
-LAYER_COLOURS = {"media": "#3b6fb6", "adventitia": "#2e9e5b", "GAG": "#d1352b"}
+LAYER_COLOURS = {"media": "#3b6fb6", "adventitia": "#2e9e5b", "GAG": "#d1352b"}  # the paper's layers and the pools
 GAG_CONCENTRATION = "GAG concentration (mEq/l)"
 LAST_CONVERGED = "last converged state (run stopped)"
 
@@ -42,6 +42,14 @@ def distinct_colours(n: int, lead=()) -> list:
     dark2 = [c for c in map(matplotlib.colors.to_hex, plt.cm.Dark2.colors) if c not in have]
     colours = (list(lead) + dark2)[:n]
     return colours + sns.color_palette("husl", n - len(colours)).as_hex()
+
+
+def layer_colours(names) -> dict:
+    """A colour per layer name of ``names`` (and ``GAG``): the paper's layers keep theirs (:data:`LAYER_COLOURS`), any
+    other layer (a lamina) takes the next colour of :func:`distinct_colours` they do not use."""
+    names = list(dict.fromkeys(names))
+    spare = iter(distinct_colours(len(LAYER_COLOURS) + len(names), lead=LAYER_COLOURS.values())[len(LAYER_COLOURS) :])
+    return {**{n: LAYER_COLOURS.get(n) or next(spare) for n in names}, "GAG": LAYER_COLOURS["GAG"]}
 
 
 def pressure_colours(pressures) -> dict:

@@ -11,9 +11,9 @@ import seaborn as sns
 from .style import (
     GAG_CONCENTRATION,
     LAST_CONVERGED,
-    LAYER_COLOURS,
     PAPER_POOL,
     _style,
+    layer_colours,
     long_measures,
     pressure_colour,
     pressure_colours,
@@ -23,8 +23,9 @@ from .style import (
 )
 
 
-def pool_geometry_panel(ax, particles: pd.DataFrame, case: dict, probe_length: float, title: str):
-    """Figure 4a: the pool (red), the media and adventitia around it, and the probe regions (outlines)."""
+def pool_geometry_panel(ax, particles: pd.DataFrame, case: dict, probe_length: float, title: str, pool_layers):
+    """Figure 4a: the pool (red: its particles of ``pool_layers``), the layers around it, and the probe regions
+    (outlines)."""
     from ..engine.measure import pool_probes
     from ..studies.artery import pool_sector
 
@@ -33,8 +34,9 @@ def pool_geometry_panel(ax, particles: pd.DataFrame, case: dict, probe_length: f
     half = 0.5 * np.deg2rad(max(pool.angular_extent_deg, 3.0)) + 25.0 / pool.centre_radius
     near = particles[np.abs(particles.theta_rad - th0) < half]
     arc = (near.theta_rad - th0) * pool.centre_radius
-    in_pool = pool.contains(near.radius_um, near.theta_rad) & (near.layer == "media")
-    colours = np.where(in_pool, LAYER_COLOURS["GAG"], near.layer.map(LAYER_COLOURS).fillna("k"))
+    in_pool = pool.contains(near.radius_um, near.theta_rad) & near.layer.isin(pool_layers)
+    layer_colour = layer_colours(particles.layer.unique())
+    colours = np.where(in_pool, layer_colour["GAG"], near.layer.map(layer_colour))
     ax.scatter(arc, near.radius_um, s=6, c=colours, linewidths=0)
     for name, box in pool_probes(pool, probe_length).items():
         (r0, r1), (t0, t1) = box.r_range, box.theta_range
@@ -118,13 +120,15 @@ def fig4(
     laws,
     max_concentration,
     pressures=(),
+    *,
+    pool_layers,
 ):
     """Figure 4: (a) the pools; then for each charge law (``laws``, column ``charge_law``) and pool model (column
     ``pool_model``, the paper's first) the passive and active tip radial and top hoop stress vs concentration
     (seaborn facets of tip_stress.csv: a row per law, pool model, model and stress, a column per pool, a colour per
     pressure). A run's line ends at its last converged state (a cross if that is below ``max_concentration``). The
     colours are those of the pressures of the table and ``pressures`` together (figure 3's, so that a pressure has
-    one colour in both figures)."""
+    one colour in both figures). ``pool_layers``: the layers a pool's particles are in (``bilayer.pool_layers``)."""
     _style()
     names = sorted(cases, key=lambda k: cases[k]["angular_extent_deg"])
     tips = tips if "pool_model" in tips else tips.assign(pool_model=PAPER_POOL)
@@ -175,7 +179,12 @@ def fig4(
         )
     for ax, name in zip(grid.axes[0], names):
         pool_geometry_panel(
-            ax, particles, cases[name], probe_length, f"(a) case {name}: {cases[name]['angular_extent_deg']:g} deg"
+            ax,
+            particles,
+            cases[name],
+            probe_length,
+            f"(a) case {name}: {cases[name]['angular_extent_deg']:g} deg",
+            pool_layers,
         )
     grid.axes[0, 0].set_ylabel("radius (um)")
     grid.tight_layout()

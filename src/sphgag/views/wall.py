@@ -125,9 +125,17 @@ def normalised_position(radius, profile):
     return (radius - r.min()) / (r.max() - r.min())
 
 
+def layer_runs(profile: pd.DataFrame) -> list[tuple[str, float]]:
+    """``(layer, outermost radius)`` of each run of one layer in a profile ordered by radius, from the lumen out."""
+    p = profile.sort_values("radius_um")
+    start = p.layer.ne(p.layer.shift()).cumsum()
+    return [(g.layer.iloc[0], float(g.radius_um.max())) for _, g in p.groupby(start, sort=True)]
+
+
 def bilayer_transmural_panels(ax_r, ax_t, profiles: pd.DataFrame, colours: dict):
     """Figure 3c: passive (solid) and active (dashed) transmural stresses against the normalised wall position, a
-    colour per pressure (``colours``: :func:`~sphgag.views.style.pressure_colours`)."""
+    colour per pressure (``colours``: :func:`~sphgag.views.style.pressure_colours`); a dotted line at every border
+    between layers, each layer named beside it."""
     borders = []
     for model in ("passive", "active"):
         st = MODEL_STYLE[model]
@@ -140,12 +148,17 @@ def bilayer_transmural_panels(ax_r, ax_t, profiles: pd.DataFrame, colours: dict)
             ax_t.plot(xe, ex.circ_stress_kPa, ls=st["ls"], color=c, lw=1.0)
             ax_r.plot(xs, sph.radial_stress_kPa, st["marker"], mfc="none", color=c, ms=3.2)
             ax_t.plot(xs, sph.circ_stress_kPa, st["marker"], mfc="none", color=c, ms=3.2)
-            media = ex[ex.layer == "media"]
-            borders.append(float(normalised_position(media.radius_um.max(), ex)))
-    for ax in (ax_r, ax_t):
-        ax.axvline(np.mean(borders), color="0.3", ls=":", lw=0.9)
-    ax_t.text(np.mean(borders), 0.97, " adventitia", transform=ax_t.get_xaxis_transform(), fontsize=7, va="top")
-    ax_t.text(np.mean(borders), 0.97, "media ", transform=ax_t.get_xaxis_transform(), fontsize=7, va="top", ha="right")
+            runs = layer_runs(ex)
+            borders.append([float(normalised_position(r, ex)) for _, r in runs[:-1]])
+    names = [name for name, _ in runs]
+    for border in np.mean(borders, axis=0):
+        for ax in (ax_r, ax_t):
+            ax.axvline(border, color="0.3", ls=":", lw=0.9)
+    at = ax_t.get_xaxis_transform()
+    if len(names) > 1:
+        ax_t.text(np.mean(borders, axis=0)[-1], 0.97, f" {names[-1]}", transform=at, fontsize=7, va="top")
+    for name, border in zip(names, np.mean(borders, axis=0)):
+        ax_t.text(border, 0.97, f"{name} ", transform=at, fontsize=7, va="top", ha="right")
     ax_r.set(ylabel="radial stress (kPa)")
     ax_t.set(xlabel="normalised wall position (r - r_in)/(r_out - r_in)", ylabel="circumferential stress (kPa)")
 

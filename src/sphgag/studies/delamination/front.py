@@ -59,10 +59,9 @@ class Front:
 
     def __post_init__(self):
         lay = self.model.layout
-        self.media = lay.layer_mask("media")
         surface = np.zeros(lay.n, dtype=bool)
         surface[lay.inner_surface] = surface[lay.outer_surface] = True
-        self.interior = self.media & ~surface
+        self.interior = lay.pool_mask & ~surface
         self.bands = [(lay.radius >= s.r_range[0]) & (lay.radius <= s.r_range[1]) for s in self.sectors]
         self.centres = np.deg2rad([s.centre_angle_deg for s in self.sectors])
         self.thickness = np.array([s.radial_extent for s in self.sectors])
