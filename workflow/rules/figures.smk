@@ -226,131 +226,67 @@ rule swelling_convergence_figure:
 
 
 # figures 5-7: the delamination runs (rule delaminate) of the pool sets named by delamination.figures, one block per
-# charge law, one column or line style per onset criterion
-# the wall's layers as [name, outer radius] from the lumen out: the snapshots' particles are greyed by layer
+# charge law, one column or line style per onset criterion.
+# The wall's layers as [name, outer radius] from the lumen out: the snapshots' particles are greyed by layer
 DE_LAYERS = [[name, outer] for name, _, outer in Bilayer.of(config["bilayer"]).bands()]
 # figure 5a shows its set at critical_stress_kPa if that is one of its sigma_cr, else at the nearest one
 FIG5_SIGMA = min(DE["critical_stresses_kPa"], key=lambda s: abs(s - DE["critical_stress_kPa"]))
-DE_SIGMA = f"{DE['critical_stress_kPa']:g}"
 
 
-# the snapshot files of each figure's pool sets, ordered by law, then pool set, then criterion (the order of the keys
-# the figure scripts zip them with)
-DE_FIGURE_SNAPSHOTS = {
-    figure: [
-        rules.delaminate.output.snapshots.format(law=law, poolset=case, sigma=sigma, criterion=criterion)
-        for law in LAWS
-        for case in poolsets
-        for criterion in DE["criteria"]
-    ]
-    for figure, poolsets, sigma in (
-        ("fig5", [FIG5_SET], f"{FIG5_SIGMA:g}"),
-        ("fig6", FIG6_SETS, DE_SIGMA),
-        ("fig7", [FIG7_SET], DE_SIGMA),
-    )
-}
+# figures 5-7 (rules fig5, fig6, fig7) are one family: what differs between them is the pool sets and sigma_cr of the
+# runs whose snapshots they draw and their report label; one script draws each by the rule's name.
+# Figure 5: figure 5's pool set grown (snapshots), its tip radial stress against pseudo-time for every sigma_cr.
+# Figure 6: pools at one radius (figure 6's sets, e.g. low and high separation): snapshots, interior and exterior growth.
+# Figure 7: two pools offset in radius: four snapshots per criterion, tip stress and growth.
+DE_FIGURE_RULES = dict(
+    fig5=dict(poolsets=[FIG5_SET], sigma=FIG5_SIGMA, label="Figure 5: one pool grown by damage"),
+    fig6=dict(poolsets=FIG6_SETS, sigma=DE["critical_stress_kPa"], label="Figure 6: two pools at the same radius"),
+    fig7=dict(poolsets=[FIG7_SET], sigma=DE["critical_stress_kPa"], label="Figure 7: two pools offset in radius"),
+)
+for figure, spec in DE_FIGURE_RULES.items():
 
-
-rule fig5:
-    """Figure 5: figure 5's pool set grown (snapshots), its tip radial stress against pseudo-time for every sigma_cr."""
-    input:
-        code=VIEWS["delamination"],
-        growth=rules.delamination_growth.output[0],
-        summary=rules.delamination_summary.output[0],
-        snapshots=DE_FIGURE_SNAPSHOTS["fig5"],
-    output:
-        pdf="figures/fig5.pdf",
-        png=report(
-            "figures/fig5.png",
-            caption="../report/fig5.rst",
-            category="5 Delamination",
-            labels={"result": "Figure 5: one pool grown by damage"},
-        ),
-    log:
-        "logs/fig5.log",
-    benchmark:
-        "results/benchmarks/fig5.tsv"
-    conda:
-        "../envs/sphgag.yaml"
-    threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
-    params:
-        case=FIG5_SET,
-        sigma=FIG5_SIGMA,
-        criteria=DE["criteria"],
-        laws=LAWS,
-        layers=DE_LAYERS,
-    script:
-        "../scripts/fig5.py"
-
-
-rule fig6:
-    """Figure 6: pools at one radius (figure 6's sets, e.g. low and high separation): snapshots, interior and exterior
-    growth."""
-    input:
-        code=VIEWS["delamination"],
-        growth=rules.delamination_growth.output[0],
-        summary=rules.delamination_summary.output[0],
-        snapshots=DE_FIGURE_SNAPSHOTS["fig6"],
-    output:
-        pdf="figures/fig6.pdf",
-        png=report(
-            "figures/fig6.png",
-            caption="../report/fig6.rst",
-            category="5 Delamination",
-            labels={"result": "Figure 6: two pools at the same radius"},
-        ),
-    log:
-        "logs/fig6.log",
-    benchmark:
-        "results/benchmarks/fig6.tsv"
-    conda:
-        "../envs/sphgag.yaml"
-    threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
-    params:
-        cases=FIG6_SETS,
-        criteria=DE["criteria"],
-        laws=LAWS,
-        layers=DE_LAYERS,
-    script:
-        "../scripts/fig6.py"
-
-
-rule fig7:
-    """Figure 7: two pools offset in radius: four snapshots per criterion, tip stress and growth."""
-    input:
-        code=VIEWS["delamination"],
-        growth=rules.delamination_growth.output[0],
-        summary=rules.delamination_summary.output[0],
-        snapshots=DE_FIGURE_SNAPSHOTS["fig7"],
-    output:
-        pdf="figures/fig7.pdf",
-        png=report(
-            "figures/fig7.png",
-            caption="../report/fig7.rst",
-            category="5 Delamination",
-            labels={"result": "Figure 7: two pools offset in radius"},
-        ),
-    log:
-        "logs/fig7.log",
-    benchmark:
-        "results/benchmarks/fig7.tsv"
-    conda:
-        "../envs/sphgag.yaml"
-    threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
-    params:
-        case=FIG7_SET,
-        sigma=DE["critical_stress_kPa"],
-        criteria=DE["criteria"],
-        laws=LAWS,
-        layers=DE_LAYERS,
-    script:
-        "../scripts/fig7.py"
+    rule:
+        """Figure 5, 6 or 7 (the rule's name): the delamination runs of its pool sets (delamination.figures),
+        snapshots and growth, one block per charge law."""
+        name:
+            figure
+        input:
+            code=VIEWS["delamination"],
+            growth=rules.delamination_growth.output[0],
+            summary=rules.delamination_summary.output[0],
+            # the snapshots of the figure's runs, by law, then pool set, then criterion (the order the script reads)
+            snapshots=[
+                rules.delaminate.output.snapshots.format(
+                    law=law, poolset=poolset, sigma=f"{spec['sigma']:g}", criterion=criterion
+                )
+                for law in LAWS
+                for poolset in spec["poolsets"]
+                for criterion in DE["criteria"]
+            ],
+        output:
+            pdf=f"figures/{figure}.pdf",
+            png=report(
+                f"figures/{figure}.png",
+                caption=f"../report/{figure}.rst",
+                category="5 Delamination",
+                labels={"result": spec["label"]},
+            ),
+        log:
+            f"logs/{figure}.log",
+        benchmark:
+            f"results/benchmarks/{figure}.tsv"
+        conda:
+            "../envs/sphgag.yaml"
+        threads: 1
+        resources:
+            runtime=5,
+            mem_mb=1000,
+        params:
+            poolsets=spec["poolsets"],
+            sigma=spec["sigma"],
+            criteria=DE["criteria"],
+            laws=LAWS,
+            layers=DE_LAYERS,
+        script:
+            # one path for the whole family: Snakemake reads a rule's script path when its job runs, after the loop
+            "../scripts/delamination_figure.py"
