@@ -118,6 +118,7 @@ def test_all_problems_are_reported_at_once(full_config):
             [dict(name="media", thickness_um=28.4), dict(name="lamina", thickness_um=1.0)],
             "missing key 'bilayer.mass_fractions.lamina'",
         ),  # fmt: skip
+        (("delamination", "averaging_length_um"), 1.0, "the average of averaged would be a single particle's value"),
         (("bilayer", "aligned_radii_um"), [700.0], "bilayer.aligned_radii_um[0] = 700.0 is not inside the wall"),
         (("bilayer", "aligned_radii_um"), [646.9, 670.5], "the media sub-layer 646.8-646.9 um = 0.1 um is thinner"),
         (("mean", "outer_radius_um"), 333.0, "must be at least half the particle spacing mean.dx_um"),

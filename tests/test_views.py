@@ -203,6 +203,17 @@ def test_figure_1_shows_a_third_layer_in_the_order_of_the_wall():
     assert len(colours) == 3 and _hex(style.LAYER_COLOURS["media"]) in colours
 
 
+def test_figure_3c_finds_every_border_of_a_lamellar_wall():
+    """The layers of a transmural profile from the lumen out, a name repeating (media, lamina, media, adventitia):
+    figure 3c draws a line at each border."""
+    from sphgag.views import wall
+
+    names = ["media"] * 4 + ["lamina"] + ["media"] * 3 + ["adventitia"] * 2
+    profile = pd.DataFrame(dict(radius_um=np.arange(10.0)[::-1], layer=names[::-1]))  # rows in any order
+    runs = wall.layer_runs(profile)
+    assert runs == [("media", 3.0), ("lamina", 4.0), ("media", 7.0), ("adventitia", 9.0)]
+
+
 def _pressure_curve(scale=1.0) -> pd.DataFrame:
     """A pressure-diameter curve with its mean circumferential stretch and stress (calibrate_mean's columns)."""
     p = np.arange(0.0, 201.0, 10.0)

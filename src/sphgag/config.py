@@ -376,8 +376,9 @@ def _pool_models(pool_models: list, laws: list) -> list[str]:
     ]
 
 
-def _consistency(config: dict) -> list[str]:
-    """Relations between keys that a JSON schema cannot express."""
+def _pressures(config: dict) -> list[str]:
+    """The mean wall's radii, the calibration pressures below their sweep's top, and a saved state at every pressure a
+    later stage starts from."""
     problems = []
     m = config.get("mean", {})
     if m.get("outer_radius_um", 0) <= m.get("inner_radius_um", 0):
@@ -397,7 +398,25 @@ def _consistency(config: dict) -> list[str]:
             if p > top:
                 where = f"{section}.{key}" + (f"[{k}]" if isinstance(values, list) else "")
                 problems.append(f"{where} = {p} exceeds {section}.max_pressure_mmHg = {top}")
+    saved = config.get("bilayer_calibration", {}).get("state_pressures_mmHg", [])
+    starts = [
+        (f"swelling.pressures_mmHg[{k}]", p) for k, p in enumerate(config.get("swelling", {}).get("pressures_mmHg", []))
+    ]
+    if "pressure_mmHg" in config.get("delamination", {}):
+        starts.append(("delamination.pressure_mmHg", config["delamination"]["pressure_mmHg"]))
+    problems += [
+        f"{key} = {p} has no saved state: it must be one of bilayer_calibration.state_pressures_mmHg = {saved}"
+        for key, p in starts
+        if p not in saved
+    ]
+    return problems
+
+
+def _composition(config: dict) -> list[str]:
+    """The layered wall (:func:`_wall`), each layer's mass fractions and orientations summing to 1, and the active
+    tone's stretches in order."""
     bil = config.get("bilayer", {})
+    problems = _wall(bil) if bil else []
     for layer, beta in bil.get("orientations", {}).items():
         if abs(sum(beta.values()) - 1.0) > 1e-6:
             problems.append(
@@ -406,22 +425,31 @@ def _consistency(config: dict) -> list[str]:
     for layer, frac in bil.get("mass_fractions", {}).items():
         if abs(sum(frac.values()) - 1.0) > 1e-6:
             problems.append(f"bilayer.mass_fractions.{layer} must sum to 1, got {sum(frac.values()):.6g}")
+    act = bil.get("active", {})
+    if act and act.get("stretch_min", 0) >= act.get("stretch_max", 1):
+        problems.append(
+            f"bilayer.active.stretch_min = {act.get('stretch_min')} must be below "
+            f"bilayer.active.stretch_max = {act.get('stretch_max')}"
+        )
+    return problems
+
+
+def _swelling(config: dict) -> list[str]:
+    """The pool models carry a configured charge law, and the resolution study's cases are pools of the sweeps."""
     sw = config.get("swelling", {})
-    saved = config.get("bilayer_calibration", {}).get("state_pressures_mmHg", [])
-    for k, p in enumerate(sw.get("pressures_mmHg", [])):
-        if p not in saved:
-            problems.append(
-                f"swelling.pressures_mmHg[{k}] = {p} has no saved state: it must be one of "
-                f"bilayer_calibration.state_pressures_mmHg = {saved}"
-            )
-    problems += _pool_models(sw.get("pool_models", []), config.get("gag", {}).get("charge_laws", []))
+    problems = _pool_models(sw.get("pool_models", []), config.get("gag", {}).get("charge_laws", []))
     for k, name in enumerate(config.get("swelling_convergence", {}).get("cases", [])):
         if name not in sw.get("cases", {}):
             problems.append(
                 f"swelling_convergence.cases[{k}] = {name!r} is not a pool of swelling.cases "
                 f"({', '.join(sw.get('cases', {}))})"
             )
-    # values that name files ({pressure}mmHg, dx{dx}, {sigma}kPa) must give distinct names
+    return problems
+
+
+def _file_names(config: dict) -> list[str]:
+    """Values that name files ({pressure}mmHg, dx{dx}, {sigma}kPa) give distinct names."""
+    problems = []
     named = [
         ("bilayer_calibration", "state_pressures_mmHg"),
         ("calibration", "transmural_pressures_mmHg"),
@@ -438,43 +466,57 @@ def _consistency(config: dict) -> list[str]:
     de_dx = [f"{v:g}" for v in config.get("delamination", {}).get("convergence", {}).get("dx_um", [])]
     if len(set(de_dx)) < len(de_dx):
         problems.append(f"delamination.convergence.dx_um: {de_dx} repeat a file name (dx{{dx}}): make them differ")
+    return problems
+
+
+def _delamination(config: dict) -> list[str]:
+    """Every figure's pool set exists, and an onset criterion that averages (``OnsetCriterion.averages``) does so
+    over more than one particle at the coarsest spacing it is run at."""
+    from .studies.onset import CRITERIA
+
     de = config.get("delamination", {})
-    if de:
-        if de["pressure_mmHg"] not in saved:
-            problems.append(
-                f"delamination.pressure_mmHg = {de['pressure_mmHg']} has no saved state: it must be one "
-                f"of bilayer_calibration.state_pressures_mmHg = {saved}"
-            )
-        problems += _pool_set_roles(de)
-        coarsest = max([bil.get("dx_um", 0)] + de["convergence"]["dx_um"])
-        if "averaged" in de["criteria"] and de["averaging_length_um"] < coarsest:
-            problems.append(
-                f"delamination.averaging_length_um = {de['averaging_length_um']} is below the coarsest "
-                f"particle spacing ({coarsest:g} um): the average would be a single particle's value"
-            )
-    pools = {f"swelling.cases.{name}": pool for name, pool in sw.get("cases", {}).items()}
-    for name, members in de.get("pool_sets", {}).items():
-        pools.update({f"delamination.pool_sets.{name}[{k}]": pool for k, pool in enumerate(members)})
-    wall = _wall(bil) if bil else []
-    problems += wall
-    if bil and not wall:
-        for name, pool in pools.items():
-            lo, hi = _pool_radii(pool)
-            if spans := _pool_span(bil, lo, hi):
-                problems.append(f"{name}: radii {lo:g}-{hi:g} um leave {spans}")
-            first, last = _pool_angles(pool)
-            if first <= 0 or last >= 90:
-                problems.append(f"{name}: angles {first:g}-{last:g} deg reach a symmetry edge (0 or 90 deg)")
-    problems += _thin_layers(config)
-    problems += _circular_pool(config.get("verification", {}).get("circular_pool", {}))
-    if not problems and bil:
-        problems += _empty_pools(config)
-    act = bil.get("active", {})
-    if act and act.get("stretch_min", 0) >= act.get("stretch_max", 1):
+    if not de:
+        return []
+    problems = _pool_set_roles(de)
+    coarsest = max([config.get("bilayer", {}).get("dx_um", 0)] + de["convergence"]["dx_um"])
+    averaging = [c for c in de["criteria"] if c in CRITERIA and CRITERIA[c].averages]
+    if averaging and de["averaging_length_um"] < coarsest:
         problems.append(
-            f"bilayer.active.stretch_min = {act.get('stretch_min')} must be below "
-            f"bilayer.active.stretch_max = {act.get('stretch_max')}"
+            f"delamination.averaging_length_um = {de['averaging_length_um']} is below the coarsest "
+            f"particle spacing ({coarsest:g} um): the average of {', '.join(averaging)} would be a single "
+            "particle's value"
         )
+    return problems
+
+
+def _pool_placement(config: dict) -> list[str]:
+    """Every pool (figure 4's cases, the delamination sets) lies inside one span of pool layers and off the symmetry
+    edges (once the wall itself is sound)."""
+    bil = config.get("bilayer", {})
+    if not bil or _wall(bil):
+        return []
+    pools = {f"swelling.cases.{name}": pool for name, pool in config.get("swelling", {}).get("cases", {}).items()}
+    for name, members in config.get("delamination", {}).get("pool_sets", {}).items():
+        pools.update({f"delamination.pool_sets.{name}[{k}]": pool for k, pool in enumerate(members)})
+    problems = []
+    for name, pool in pools.items():
+        lo, hi = _pool_radii(pool)
+        if spans := _pool_span(bil, lo, hi):
+            problems.append(f"{name}: radii {lo:g}-{hi:g} um leave {spans}")
+        first, last = _pool_angles(pool)
+        if first <= 0 or last >= 90:
+            problems.append(f"{name}: angles {first:g}-{last:g} deg reach a symmetry edge (0 or 90 deg)")
+    return problems
+
+
+def _consistency(config: dict) -> list[str]:
+    """Relations between keys that a JSON schema cannot express, one check per concern; the pools' particles are
+    counted (which builds layouts) only for a configuration the other checks vouch for."""
+    checks = (_pressures, _composition, _swelling, _file_names, _delamination, _pool_placement, _thin_layers)
+    problems = [p for check in checks for p in check(config)]
+    problems += _circular_pool(config.get("verification", {}).get("circular_pool", {}))
+    if not problems and config.get("bilayer"):
+        problems += _empty_pools(config)
     return problems
 
 

@@ -21,11 +21,13 @@ from ..engine.model import Evaluation, Model
 class OnsetCriterion:
     """``measure(model, ev, history, candidates, settings)``: the radial Cauchy stress (eq. 2.10, current polar
     frame) at the ``candidates`` that the onset test of eq. (2.28) compares with sigma_cr (``settings``: the run's
-    :class:`sphgag.studies.delamination.settings.Settings`)."""
+    :class:`sphgag.studies.delamination.settings.Settings`). ``averages``: the measure averages over
+    ``settings.averaging_length_um`` (the configuration then asks that length to exceed the particle spacing)."""
 
     name: str
     description: str
     measure: Callable[[Model, Evaluation, ParticleHistory, np.ndarray, object], np.ndarray]
+    averages: bool = False
 
 
 def particle_stress(model: Model, ev: Evaluation, hist: ParticleHistory, cand: np.ndarray, settings) -> np.ndarray:
@@ -48,7 +50,10 @@ CRITERIA = {
     for c in (
         OnsetCriterion("particle", "the candidate particle's own radial stress (the paper's)", particle_stress),
         OnsetCriterion(
-            "averaged", "the intact media's radial stress averaged over a disc of averaging_length_um", averaged_stress
+            "averaged",
+            "the intact media's radial stress averaged over a disc of averaging_length_um",
+            averaged_stress,
+            averages=True,
         ),
     )
 }
