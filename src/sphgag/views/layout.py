@@ -50,6 +50,8 @@ def fig1(particles: pd.DataFrame, mass_fractions: dict, support_factor: float, d
         axc.bar(layers, vals, bottom=bottom, color=colours[constituent], label=constituent)
         bottom += vals
     axc.set(ylabel="mass fraction", title="(c) composition")
+    if len(layers) > 2:  # more names than fit side by side
+        axc.tick_params(axis="x", labelrotation=45)
     axc.legend(frameon=False, fontsize=7, loc="upper left", bbox_to_anchor=(1.0, 1.0))
     fig.tight_layout()
     return fig

@@ -44,11 +44,16 @@ def distinct_colours(n: int, lead=()) -> list:
     return colours + sns.color_palette("husl", n - len(colours)).as_hex()
 
 
+EXTRA_LAYER_COLOURS = ("#7570b3", "#e6ab02", "#a6761d", "#e7298a", "#666666")  # Dark2 without its greens and orange
+
+
 def layer_colours(names) -> dict:
     """A colour per layer name of ``names`` (and ``GAG``): the paper's layers keep theirs (:data:`LAYER_COLOURS`), any
-    other layer (a lamina) takes the next colour of :func:`distinct_colours` they do not use."""
+    other layer (a lamina) takes the next of :data:`EXTRA_LAYER_COLOURS` (none near the media's blue, the
+    adventitia's green or the pools' red), then evenly spaced hues."""
     names = list(dict.fromkeys(names))
-    spare = iter(distinct_colours(len(LAYER_COLOURS) + len(names), lead=LAYER_COLOURS.values())[len(LAYER_COLOURS) :])
+    extra = [n for n in names if n not in LAYER_COLOURS]
+    spare = iter(distinct_colours(len(extra), lead=EXTRA_LAYER_COLOURS[: len(extra)]))
     return {**{n: LAYER_COLOURS.get(n) or next(spare) for n in names}, "GAG": LAYER_COLOURS["GAG"]}
 
 
