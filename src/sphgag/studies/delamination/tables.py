@@ -22,14 +22,10 @@ from ...physics import fracture, materials
 from .front import Islands
 from .settings import Settings
 
+# the labels of a run (:func:`labelled`), the first columns of both tables
+RUN_LABELS = ["case", "sigma_cr_kPa", "criterion", "candidates", "dx_um", "damage_law", "fracture_energy_J_m2"]
 GROWTH_COLUMNS = [
-    "case",
-    "sigma_cr_kPa",
-    "criterion",
-    "candidates",
-    "dx_um",
-    "damage_law",
-    "fracture_energy_J_m2",
+    *RUN_LABELS,
     "step",
     "pseudo_time",
     "concentration_mEq_l",
@@ -45,13 +41,7 @@ GROWTH_COLUMNS = [
     "snap",
 ]
 SUMMARY_COLUMNS = [
-    "case",
-    "sigma_cr_kPa",
-    "criterion",
-    "candidates",
-    "dx_um",
-    "damage_law",
-    "fracture_energy_J_m2",
+    *RUN_LABELS,
     "onset_concentration_mEq_l",
     "final_length_um",
     "islands",
@@ -253,7 +243,7 @@ def labelled(result: Result, case: str, settings: Settings, dx: float) -> tuple[
         dx_um=float(dx),
         damage_law=settings.damage_law,
         fracture_energy_J_m2=settings.fracture_energy_J_m2,
-    )
+    )  # the keys of RUN_LABELS
     growth = result.growth.assign(**labels)[GROWTH_COLUMNS]
     summary = pd.DataFrame([dict(labels, **result.summary)])
     return growth, summary[SUMMARY_COLUMNS + [c for c in summary.columns if c not in SUMMARY_COLUMNS]]
