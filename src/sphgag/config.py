@@ -265,16 +265,16 @@ def _thin_layers(config: dict) -> list[str]:
     de_conv = config.get("delamination", {}).get("convergence", {})
     spacings += [("delamination.convergence.dx_um", dx) for dx in de_conv.get("dx_um", [])]
     source, dx = max(spacings, key=lambda item: item[1])
-    r, layers = bil["inner_radius_um"], []
-    for k, band in enumerate(bil["layers"]):
-        a, b = r, r + band["thickness_um"]
+    from .studies.artery import Bilayer
+
+    layers = []
+    for k, (name, a, b) in enumerate(Bilayer.of(bil).bands()):
         edges = sorted({a, b, *(x for x in bil.get("aligned_radii_um", []) if a < x < b)})
         if len(edges) <= 2:  # one edge: the band is thinner than round-off
-            layers.append((f"bilayer.layers[{k}].thickness_um ({band['name']})", band["thickness_um"]))
+            layers.append((f"bilayer.layers[{k}].thickness_um ({name})", bil["layers"][k]["thickness_um"]))
         else:
-            sub = [(f"the {band['name']} sub-layer {lo:g}-{hi:g} um", hi - lo) for lo, hi in zip(edges, edges[1:])]
-            layers += [(f"bilayer.aligned_radii_um: {name}", t) for name, t in sub]
-        r = b
+            sub = [(f"the {name} sub-layer {lo:g}-{hi:g} um", hi - lo) for lo, hi in zip(edges, edges[1:])]
+            layers += [(f"bilayer.aligned_radii_um: {text}", t) for text, t in sub]
     for name, thickness in layers:
         if thickness < THINNEST_LAYER * dx:
             out.append(
@@ -310,8 +310,10 @@ def _wall(bil: dict) -> list[str]:
                 f"bilayer.mass_fractions.{name}.smc and bilayer.orientations.{name}.circumferential: a layer "
                 f"carries at most {MAX_FAMILIES} fibre families (SMC or circumferential collagen, axial, two diagonal)"
             )
-    r_in = bil.get("inner_radius_um", 0)
-    r_out = r_in + sum(band["thickness_um"] for band in bil.get("layers", []))
+    from .studies.artery import bilayer_interfaces
+
+    edges = bilayer_interfaces(bil)
+    r_in, r_out = edges[0], edges[-1]
     for k, r in enumerate(bil.get("aligned_radii_um", [])):
         if not r_in < r < r_out:
             problems.append(f"bilayer.aligned_radii_um[{k}] = {r} is not inside the wall ({r_in:g}-{r_out:g} um)")

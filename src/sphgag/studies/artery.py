@@ -230,7 +230,7 @@ class BilayerMaterial:
         self.p = p = Bilayer.of(p)
         n = layout.n
         table = materials.empty_props(n)
-        self.active = np.isin(layout.layer, [k for k, name in enumerate(layout.layer_names) if has_smc(p, name)])
+        self.active = layout.layer_mask([name for name in layout.layer_names if has_smc(p, name)])
         for layer in layout.layer_names:
             rows = np.flatnonzero(layout.layer_mask(layer))
             table[rows, materials.MU] = p.mass_fractions[layer]["elastin"] * p.elastin_shear_modulus_kPa

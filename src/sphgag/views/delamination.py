@@ -20,7 +20,7 @@ def intact_colours(layers) -> dict:
     """A grey per layer name of ``layers`` (``(name, outer radius)`` bands from the lumen out), lighter inside."""
     names = list(dict.fromkeys(name for name, _ in layers))
     greys = np.linspace(*INTACT_GREYS, len(names)) if len(names) > 1 else INTACT_GREYS[:1]
-    return {name: f"{g:.2f}".rstrip("0") for name, g in zip(names, greys)}
+    return {name: f"{g:.2f}" for name, g in zip(names, greys)}
 
 
 DAMAGE_CMAP = matplotlib.colors.LinearSegmentedColormap.from_list("damage", ["#ffd300", "#f47b20", "#7f2704"])

@@ -148,16 +148,16 @@ def bilayer_transmural_panels(ax_r, ax_t, profiles: pd.DataFrame, colours: dict)
             ax_t.plot(xe, ex.circ_stress_kPa, ls=st["ls"], color=c, lw=1.0)
             ax_r.plot(xs, sph.radial_stress_kPa, st["marker"], mfc="none", color=c, ms=3.2)
             ax_t.plot(xs, sph.circ_stress_kPa, st["marker"], mfc="none", color=c, ms=3.2)
-            runs = layer_runs(ex)
+            runs = layer_runs(ex)  # the same layers in every profile
             borders.append([float(normalised_position(r, ex)) for _, r in runs[:-1]])
-    names = [name for name, _ in runs]
-    for border in np.mean(borders, axis=0):
+    names, mean_borders = [name for name, _ in runs], np.mean(borders, axis=0)
+    for border in mean_borders:
         for ax in (ax_r, ax_t):
             ax.axvline(border, color="0.3", ls=":", lw=0.9)
     at = ax_t.get_xaxis_transform()
     if len(names) > 1:
-        ax_t.text(np.mean(borders, axis=0)[-1], 0.97, f" {names[-1]}", transform=at, fontsize=7, va="top")
-    for name, border in zip(names, np.mean(borders, axis=0)):
+        ax_t.text(mean_borders[-1], 0.97, f" {names[-1]}", transform=at, fontsize=7, va="top")
+    for name, border in zip(names, mean_borders):
         ax_t.text(border, 0.97, f"{name} ", transform=at, fontsize=7, va="top", ha="right")
     ax_r.set(ylabel="radial stress (kPa)")
     ax_t.set(xlabel="normalised wall position (r - r_in)/(r_out - r_in)", ylabel="circumferential stress (kPa)")
