@@ -47,6 +47,7 @@ include: "workflow/rules/delamination.smk"
 include: "workflow/rules/figures.smk"
 include: "workflow/rules/sensitivity.smk"
 include: "workflow/rules/views.smk"
+include: "workflow/rules/variants.smk"
 
 
 # Targets by purpose. `all` (the default) regenerates the paper: figures 1 and 3-7 and the claims table, for every
@@ -77,10 +78,12 @@ rule all:
 
 
 rule resolution:
-    """The resolution studies: the pools' swelling (figure 4) and figure 5's delamination at every spacing."""
+    """The resolution studies: the pools' swelling (figure 4) and the delamination at every spacing, with the grid
+    convergence index of the delamination's event concentrations."""
     input:
         rules.swelling_convergence_figure.output,
         rules.delamination_convergence.output,
+        rules.delamination_gci.output,
 
 
 rule verification:
@@ -108,6 +111,13 @@ rule sensitivity:
         rules.delamination_map_figure.output,
 
 
+rule variants:
+    """The numerical variants beside the default: eq. (2.14) as printed and its energy form, on figure 4's first pool
+    and figure 5's pool, with the figure that compares them."""
+    input:
+        rules.variants_figure.output,
+
+
 rule views:
     """A ParaView series of every swelling and delamination run, and an animation of every delamination run."""
     input:
@@ -122,4 +132,5 @@ rule everything:
         rules.verification.input,
         rules.fracture_energy.input,
         rules.sensitivity.input,
+        rules.variants.input,
         rules.views.input,

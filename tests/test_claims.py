@@ -98,7 +98,9 @@ def delamination_tables(names: dict):
             )
         summary.append(
             dict(case=case, sigma_cr_kPa=sigma, criterion="averaged", merged=case == names["fig7"], merge_step=2.0)
-            | dict(final_length_um=2.0, growth_rate_um_per_pseudo_time=1.0, growth_rate_um_per_mEq_l=0.1)
+            | dict(final_length_um=2.0, arrested_length_um=0.0, merge_concentration_mEq_l=95.0)
+            | dict(stop_kind="merged" if case == names["fig7"] else "unstable")
+            | dict(onset_concentration_mEq_l=50.0 + sigma, runaway_concentration_mEq_l=60.0 + sigma)
         )
     return pd.DataFrame(growth), pd.DataFrame(summary)
 
@@ -112,7 +114,8 @@ def test_delamination_claims_follow_the_pool_sets_roles():
     assert [c.holds for c in a] == [c.holds for c in b]
     assert [c.our_value.replace("pair_2deg", "low_separation") for c in b] == [c.our_value for c in a]
     assert {c.claim_id: c.holds for c in a}["C17"] == "yes"  # figure 7's set, found by its role
-    assert "2 rupture passes" in a[0].our_value  # figure 5's set, found by its role
+    assert "30 kPa unstable (onset 80.0, runaway 90.0 mEq/l" in a[0].our_value  # figure 5's set, by its role
+    assert {c.claim_id: c.holds for c in a}["C13"] == "yes" and {c.claim_id: c.holds for c in a}["C15"] == "yes"
 
 
 def test_each_claim_is_one_function_of_the_list_in_the_tables_order():

@@ -149,8 +149,14 @@ CONTRACT = {
         "dx_um",
         "damage_law",
         "fracture_energy_J_m2",
+        "stop_kind",
         "onset_concentration_mEq_l",
+        "runaway_concentration_mEq_l",
+        "merge_concentration_mEq_l",
+        "limit_concentration_mEq_l",
+        "arrested_length_um",
         "final_length_um",
+        "passes",
         "islands",
         "island_particles",
         "island_distance_um",
@@ -167,10 +173,13 @@ CONTRACT = {
         "sigma_cr_kPa",
         "criterion",
         "dx_um",
+        "stop_kind",
         "onset_concentration_mEq_l",
+        "runaway_concentration_mEq_l",
         "final_length_um",
         "max_residual",
     ],
+    "results/delamination/gci.csv": delamination.GCI_COLUMNS,
     "results/sensitivity/indices.csv": [
         "method",
         "charge_law",
@@ -209,6 +218,7 @@ FIGURES = [
         "fig7",
         "sensitivity",
         "delamination_map",
+        "variants_hourglass",
     )
     for ext in ("pdf", "png")
 ]
@@ -223,6 +233,7 @@ REPORT_TABLES = [
     "results/verification/elliptic_pool.csv",
     "results/delamination/summary.csv",
     "results/delamination/convergence.csv",
+    "results/delamination/gci.csv",
     "results/sensitivity/indices.csv",
     "results/sensitivity/delamination_map.csv",
 ]
@@ -235,57 +246,6 @@ def edited_config(tmp_path, ci_config, section, key, value):
     path = tmp_path / "edited.yaml"
     path.write_text(yaml.safe_dump(cfg, sort_keys=False))
     return path
-
-
-def test_pool_states_that_converged_before_issue_15_are_unchanged(workdir):
-    """Snaps, volume control and the Newton changes of issue 15 leave every figure 4 state the earlier code reached
-    (both laws; tests/data, from the CI run of that code) to its printed digits, and the conserved-law
-    delamination runs (no snap in them) as they were."""
-    before = pd.read_csv(ROOT / "tests/data/ci_figure4_before_issue15.csv")
-    key = ["charge_law", "model", "case", "pressure_mmHg", "stage", "concentration_mEq_l"]
-    now = pd.read_csv(workdir / "results/swelling/tip_stress.csv")
-    now = now[now.pool_model == "particles"].set_index(key)  # the states of the paper's pool (the cavity is new)
-    before = before.set_index(key)
-    assert before.index.isin(now.index).all(), before.index[~before.index.isin(now.index)].tolist()
-    now = now.loc[before.index]
-    for column, digits in (
-        ("tip_radial_stress_kPa", 0.05),
-        ("top_circ_stress_kPa", 0.05),
-        ("pool_volume_change", 5e-4),
-    ):
-        assert np.abs(now[column] - before[column]).max() < digits, column
-    runs = ["case", "sigma_cr_kPa", "criterion"]
-    was = pd.read_csv(ROOT / "tests/data/ci_delamination_before_issue15.csv").set_index(runs)
-    summary = pd.read_csv(workdir / "results/delamination/summary.csv")
-    summary = summary[summary.damage_law == "paper"]
-    now = summary[summary.charge_law == "conserved"].set_index(runs).loc[was.index]
-    assert np.allclose(now.final_length_um, was.final_length_um, atol=0.05)
-    assert now.onset_concentration_mEq_l.equals(was.onset_concentration_mEq_l) and now.merged.equals(was.merged)
-
-
-def test_the_papers_damage_law_gives_every_delamination_result_it_gave_before_issue_16(workdir):
-    """With ``damage_law: paper`` (eq. 2.28 as printed), the fracture-energy law and the onset energy in the histories
-    leave every delamination run of the CI config (both charge laws) as the code before them left it (tests/data,
-    from its CI run): the conserved law's to the printed digits, the prescribed law's onset and outcome."""
-    runs = ["charge_law", "case", "sigma_cr_kPa", "criterion"]
-    was = pd.read_csv(ROOT / "tests/data/ci_delamination_before_issue16.csv").set_index(runs)
-    # under the prescribed law the swollen, damaged pools' paths depend on the machine's BLAS kernels (snaps, and
-    # bridges with more than one equilibrium: docs/physics.md): those runs are compared by what they do, the
-    # conserved law's to the printed digits
-    chaotic = was.index.get_level_values("charge_law") == "prescribed"
-    summary = pd.read_csv(workdir / "results/delamination/summary.csv")
-    assert set(summary.damage_law) == {"paper"}  # the fracture-energy runs have a table of their own
-    now = summary.set_index(runs)
-    assert now.index.is_unique and now.index.isin(was.index).all()
-    now = now.loc[was.index]
-    assert np.allclose(now.onset_concentration_mEq_l, was.onset_concentration_mEq_l, equal_nan=True)
-    assert now.outcome.equals(was.outcome) and now.merged.equals(was.merged)
-    now, was = now[~chaotic], was[~chaotic]
-    for column in was.columns:
-        if pd.api.types.is_numeric_dtype(was[column]) and not pd.api.types.is_bool_dtype(was[column]):
-            assert np.allclose(now[column], was[column], rtol=5e-4, atol=1e-3, equal_nan=True), column
-        else:
-            assert now[column].astype(str).tolist() == was[column].astype(str).tolist(), column
 
 
 def test_fracture_energy_runs_are_rows_of_their_tables_beside_their_closed_form(workdir, ci_config):
@@ -858,6 +818,7 @@ def test_the_nominal_sample_reruns_the_pipelines_runs_of_figure_5s_pool_to_the_b
         summary = pd.read_csv(path, dtype=str).iloc[0]
         assert nominal.final_length_um == summary.final_length_um, law
         assert (nominal.outcome, nominal.delamination_stop) == (summary.outcome, summary.stop), law
+        assert nominal.delamination_stop_kind == summary.stop_kind, law
         if pd.isna(summary.onset_concentration_mEq_l):  # censored one step above the ramp
             assert nominal.onset_censored == "True"
             censored = de["max_concentration_mEq_l"] + de["concentration_step_mEq_l"]

@@ -171,9 +171,9 @@ def test_the_swelling_ramp_is_cut_at_the_stated_concentration_on_the_pipelines_s
 # -- the delamination map's classes -----------------------------------------------------------------------------------
 
 
-def run(rows, stop, stop_level, onset):
+def run(rows, stop_kind, stop_level, onset):
     growth = pd.DataFrame(rows, columns=["concentration_mEq_l", "delaminated_length_um"])
-    summary = dict(stop=stop, stop_level_mEq_l=stop_level, onset_concentration_mEq_l=onset)
+    summary = dict(stop_kind=stop_kind, stop_level_mEq_l=stop_level, onset_concentration_mEq_l=onset)
     return delamination.level_classes(growth, summary, [10.0, 20.0, 30.0, 40.0]).state.tolist()
 
 
@@ -185,12 +185,12 @@ def test_map_classes_of_a_run_that_arrests_at_the_top_of_the_ramp():
 
 def test_map_classes_of_a_run_that_ends_growing_in_a_level():
     rows = [(10, 0), (20, 0), (30, 0), (30, 5), (30, 12)]
-    classes = run(rows, "no stable state after a snap (...)", 30.0, 20.0)
+    classes = run(rows, "numerical", 30.0, 20.0)
     assert classes == ["no onset", "onset, arrested", "propagation", "propagation"]
-    assert run(rows, "maximum extent", 30.0, 20.0)[2:] == ["propagation", "propagation"]
+    assert run(rows, "unstable", 30.0, 20.0)[2:] == ["propagation", "propagation"]
 
 
 def test_map_classes_of_a_ramp_that_cannot_reach_a_level():
     rows = [(10, 0), (20, 0), (30, 0)]  # raising 30 -> 40 finds no stable state, before any new damage
-    classes = run(rows, "no stable state after a snap (...)", 40.0, 30.0)
+    classes = run(rows, "limit point", 40.0, 30.0)
     assert classes == ["no onset", "no onset", "onset, arrested", "no equilibrium"]

@@ -540,10 +540,12 @@ def _growth(laws, cases, sigmas, criteria, steps=6):
                             sigma_cr_kPa=sigma,
                             criterion=criterion,
                             onset_concentration_mEq_l=100.0,
+                            runaway_concentration_mEq_l=104.5,
                             final_length_um=6.0 * converted[-1],
                             merged=j == 0,
                             merge_step=4.0,
                             snaps=1,
+                            stop_kind="merged" if j == 0 else "unstable",
                             stop="arrested",
                         )
                     )
@@ -566,8 +568,8 @@ def test_figures_5_to_7_draw_three_onset_criteria():
                      laws, WALL_LAYERS)  # fmt: skip
     titles = _titles(fig)
     assert [f"(b) {c} onset measure, single" in titles for c in criteria] == [True] * 3
-    assert "(c) growth, single" in titles
-    (growth_ax,) = [ax for ax in fig.axes if ax.get_title() == "(c) growth, single"]
+    assert "(c) growth, single: onset (triangles), runaway (lines)" in titles
+    (growth_ax,) = [ax for ax in fig.axes if ax.get_title().startswith("(c) growth, single")]
     assert set(criteria) <= set(growth_ax.get_legend_handles_labels()[1])  # a line style per criterion
     (key,) = fig.legends
     assert [t.get_text() for t in key.get_texts()][:3] == ["intact media", "intact lamina", "intact adventitia"]

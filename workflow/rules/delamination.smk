@@ -146,7 +146,7 @@ rule fracture_energy_summary:
 
 rule delamination_convergence_dx:
     """Resolution study of delamination, one particle spacing (dx = {dedx} um), {law} charge, {criterion} onset:
-    figure 5's pool set."""
+    the pool sets of delamination.convergence.pool_sets."""
     input:
         code=SPHGAG,
     output:
@@ -169,7 +169,7 @@ rule delamination_convergence_dx:
         delamination=lambda wildcards: dict(
             DE_SETTINGS,
             criteria=[wildcards.criterion],
-            pool_sets={FIG5_SET: DE["pool_sets"][FIG5_SET]},
+            pool_sets={name: DE["pool_sets"][name] for name in DE["convergence"]["pool_sets"]},
             critical_stress_kPa=DE["critical_stress_kPa"],
             pressure_mmHg=DE["pressure_mmHg"],
         ),
@@ -197,3 +197,26 @@ rule delamination_convergence:
         "../envs/sphgag.yaml"
     script:
         "../scripts/concat_tables.py"
+
+
+rule delamination_gci:
+    """The discretisation error of the onset, runaway and merge concentrations: observed order, extrapolated value and
+    grid convergence index of the three finest spacings (Celik et al. 2008)."""
+    input:
+        code=MODULES["studies/gci.py"],
+        convergence=rules.delamination_convergence.output[0],
+    output:
+        report(
+            "results/delamination/gci.csv",
+            caption="../report/delamination_gci.rst",
+            category="5 Delamination",
+            labels={"result": "Resolution study of delamination: GCI (table)"},
+        ),
+    log:
+        "logs/delamination_gci.log",
+    benchmark:
+        "results/benchmarks/delamination_gci.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    script:
+        "../scripts/delamination_gci.py"

@@ -36,6 +36,7 @@ with runlog.run(run, sm.log[0]) as log:
     table = table.assign(
         onset_concentration_mEq_l=s["onset_concentration_mEq_l"],
         stop_level_mEq_l=s["stop_level_mEq_l"],
+        stop_kind=s["stop_kind"],
         stop=s["stop"],
         max_residual=s["max_residual"],
     )

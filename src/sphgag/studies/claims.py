@@ -423,33 +423,41 @@ def _per_criterion(e: Evidence, fn) -> str:
     return "; ".join(f"{c}: {fn(c)}" for c in e.criteria)
 
 
-def _spontaneous(e: Evidence, criterion: str) -> dict:
-    """Per sigma_cr of figure 5's set: (rupture passes, the most at one concentration)."""
-    found = {}
-    for sigma, g in _runs(e.growth, e.figures["fig5"], criterion).items():
-        r = _ruptures(g)
-        levels = r.groupby("concentration_mEq_l").size()
-        found[sigma] = (len(r), int(levels.max()) if len(levels) else 0)
-    return found
+def _single_runs(e: Evidence, criterion: str) -> pd.DataFrame:
+    """The summary rows of figure 5's set under one criterion, by sigma_cr."""
+    s = e.delamination
+    return s[(s.case == e.figures["fig5"]) & (s.criterion == criterion)].sort_values("sigma_cr_kPa")
+
+
+def _concentration(c: float) -> str:
+    return f"{c:.1f}" if np.isfinite(c) else "-"
+
+
+def _events_text(runs: pd.DataFrame) -> str:
+    """Per sigma_cr: how the run ended and the concentrations of its onset and runaway."""
+    return ", ".join(
+        f"{r.sigma_cr_kPa:g} kPa {r.stop_kind} (onset {_concentration(r.onset_concentration_mEq_l)}, runaway "
+        f"{_concentration(r.runaway_concentration_mEq_l)} mEq/l, arrested {r.arrested_length_um:.3g} um, "
+        f"final {r.final_length_um:.3g} um)"
+        for r in runs.itertuples()
+    )
 
 
 def c13_spontaneous_propagation(e: Evidence) -> Claim:
-    def text(c):
-        return ", ".join(
-            f"{s:g} kPa {n} rupture passes (at most {m} at one concentration)"
-            for s, (n, m) in _spontaneous(e, c).items()
-        )
-
-    grew = [v for v in _spontaneous(e, e.criteria[0]).values() if v[0] > 0]
+    runs = _single_runs(e, e.criteria[0])
+    unstable = len(runs) and all(
+        r.stop_kind in ("unstable", "edge", "layer") and np.isfinite(r.runaway_concentration_mEq_l)
+        for r in runs.itertuples()
+    )
     return Claim(
         "C13",
-        "Propagation is spontaneous: once the tip stress first exceeds sigma_cr, the pool keeps growing at "
-        "fixed concentration",
-        "section 3, figure 5",
-        _per_criterion(e, text),
-        _yes(grew and all(m >= 2 for _, m in grew)),
-        "in every single-pool run (default criterion) the pool grows, "
-        "and ruptures recur at least twice at one concentration",
+        "Propagation is spontaneous: once the tip stress first exceeds sigma_cr, the pool grows catastrophically",
+        '"the propagation of a single GAG pool is spontaneous; once the radial stress exceeds the critical value, the '
+        'GAG pool grows catastrophically within the otherwise homogeneous media" (section 3, figure 5)',
+        _per_criterion(e, lambda c: _events_text(_single_runs(e, c))),
+        _yes(unstable),
+        "our reading: every single-pool run (default criterion) ends with growth at a fixed concentration that does "
+        "not arrest (stop unstable, edge or layer), at a runaway concentration found by bisection",
     )
 
 
@@ -474,53 +482,27 @@ def c14_sawtooth(e: Evidence) -> Claim:
     )
 
 
-def _rates(e: Evidence, criterion: str) -> pd.DataFrame:
-    s = e.delamination
-    return s[(s.case == e.figures["fig5"]) & (s.criterion == criterion)].set_index("sigma_cr_kPa")
-
-
-def _rate_text(e: Evidence, criterion: str) -> str:
-    s = _rates(e, criterion)
-    text = ", ".join(
-        f"{k:g} kPa {r.growth_rate_um_per_pseudo_time:.3g} um/pass, {r.growth_rate_um_per_mEq_l:.3g} um/(mEq/l)"
-        for k, r in s.iterrows()
-    )
-    if len(s) > 1 and s.index.min() < s.index.max():
-        a, b = s.loc[s.index.min()], s.loc[s.index.max()]
-
-        def ratio(x, y):
-            return f"{x / y:.3g}" if y > 0 else ("inf" if x > 0 else "-")
-
-        text += (
-            f" (ratio {s.index.min():g}/{s.index.max():g} kPa: "
-            f"{ratio(a.growth_rate_um_per_pseudo_time, b.growth_rate_um_per_pseudo_time)} per pass, "
-            f"{ratio(a.growth_rate_um_per_mEq_l, b.growth_rate_um_per_mEq_l)} per mEq/l)"
-        )
-    return text
-
-
 def c15_sigma_cr_slows_growth(e: Evidence) -> Claim:
-    s = _rates(e, e.criteria[0])
-    lo, hi = (s.index.min(), s.index.max()) if len(s) else (None, None)
-    if lo is not None and lo < hi:
-        a, b = s.loc[lo], s.loc[hi]
-        slows = all(
-            x > 0 and (y == 0 or x / y > 2)
-            for x, y in (
-                (a.growth_rate_um_per_pseudo_time, b.growth_rate_um_per_pseudo_time),
-                (a.growth_rate_um_per_mEq_l, b.growth_rate_um_per_mEq_l),
-            )
-        )
-        holds = _yes(slows)
-    else:
-        holds = "n/a"
+    runs = _single_runs(e, e.criteria[0])
+    holds = "n/a"
+    if len(runs) > 1 and runs.sigma_cr_kPa.min() < runs.sigma_cr_kPa.max():
+        lo, hi = runs.iloc[0], runs.iloc[-1]
+        later = [
+            hi[k] > lo[k] or (np.isnan(hi[k]) and np.isfinite(lo[k]))
+            for k in ("onset_concentration_mEq_l", "runaway_concentration_mEq_l")
+        ]
+        holds = _yes(all(later))
     return Claim(
         "C15",
         "Raising sigma_cr from 30 to 60 kPa slows propagation more than twofold",
-        "section 3, figure 5",
-        _per_criterion(e, lambda c: _rate_text(e, c)),
+        '"increases from sigma_cr = 30 kPa to 60 kPa reduce the rate of GAG propagation by more than two-fold" '
+        "(section 3, figure 5b)",
+        _per_criterion(e, lambda c: _events_text(_single_runs(e, c))),
         holds,
-        "rate at the lowest sigma_cr > 2 x the rate at the highest, per pass and per mEq/l (default criterion)",
+        "our reading: at equilibrium growth either arrests or runs away at a fixed concentration, so a rate per pass "
+        "is set by the pass, not the physics; a higher sigma_cr slows propagation if it raises both the onset and the "
+        "runaway concentration (lowest against highest sigma_cr, default criterion; none at the highest counts as "
+        "raised). The twofold factor has no converged counterpart",
     )
 
 
@@ -536,7 +518,7 @@ def _pair_runs(e: Evidence, criterion: str):
 def c16_pairs_merge(e: Evidence) -> Claim:
     def text(c):
         return ", ".join(
-            f"{r.case} {f'merged at pass {r.merge_step:.0f}' if r.merged else 'not merged'}, converted "
+            f"{r.case} {f'merged at {r.merge_concentration_mEq_l:.1f} mEq/l' if r.merged else r.stop_kind}, converted "
             f"interior {at.converted_interior:.0f} / exterior {at.converted_exterior:.0f}"
             for r, at in _pair_runs(e, c)
         )
@@ -562,7 +544,7 @@ def c17_offset_pools_link(e: Evidence) -> Claim:
         _per_criterion(
             e,
             lambda c: ", ".join(
-                f"{f'merged at pass {r.merge_step:.0f}' if r.merged else 'not merged'} "
+                f"{f'merged at {r.merge_concentration_mEq_l:.1f} mEq/l' if r.merged else r.stop_kind} "
                 f"({r.final_length_um:.1f} um delaminated)"
                 for r in off[off.criterion == c].itertuples()
             ),

@@ -34,7 +34,7 @@ log = logging.getLogger("sphgag")
 #: the figure 4 quantities at the stated concentration (``pool_table`` columns; eqs. 2.10, 2.27)
 SWELLING_OUTPUTS = ("tip_radial_stress_kPa", "top_circ_stress_kPa", "pool_volume_change")
 #: the delamination quantities (section 2.7)
-DELAMINATION_OUTPUTS = ("onset_concentration_mEq_l", "final_length_um", "propagated")
+DELAMINATION_OUTPUTS = ("onset_concentration_mEq_l", "runaway_concentration_mEq_l", "final_length_um", "propagated")
 OUTPUTS = SWELLING_OUTPUTS + DELAMINATION_OUTPUTS
 
 
@@ -144,7 +144,8 @@ def outputs(response: Response) -> dict:
 
     * the figure 4 quantities at the stated concentration (NaN where the swelling path ended before it: a limit
       point or no equilibrium, named in ``swelling_end``);
-    * the onset concentration, censored at one step above the ramp where damage never began (``onset_censored``);
+    * the onset and runaway concentrations (bisected between levels), each censored at one step above the ramp where
+      the event never happened (``onset_censored``, ``runaway_censored``);
     * the delaminated length up to the run's last equilibrium, and ``propagated`` (1: the run ended growing or
       merged, i.e. the pool did not arrest; 0 otherwise).
     """
@@ -153,16 +154,20 @@ def outputs(response: Response) -> dict:
     at = sw[(sw.stage == "converted") & (np.abs(sw.concentration_mEq_l - s["concentration_mEq_l"]) < 1e-9)]
     row = {k: (float(at[k].iloc[0]) if len(at) else np.nan) for k in SWELLING_OUTPUTS}
     summary = response.summary.iloc[0]
-    onset = float(summary.onset_concentration_mEq_l)
+    onset, runaway = float(summary.onset_concentration_mEq_l), float(summary.runaway_concentration_mEq_l)
     censored = bool(np.isnan(onset))
+    beyond = de["max_concentration_mEq_l"] + de["concentration_step_mEq_l"]
     row.update(
-        onset_concentration_mEq_l=de["max_concentration_mEq_l"] + de["concentration_step_mEq_l"] if censored else onset,
+        onset_concentration_mEq_l=beyond if censored else onset,
+        runaway_concentration_mEq_l=beyond if np.isnan(runaway) else runaway,
         final_length_um=float(summary.final_length_um),
         propagated=float(summary.outcome in ("grows", "merges")),
         swelling_end=str(sw.path_end.iloc[-1]),
         delamination_stop=str(summary.stop),
         outcome=str(summary.outcome),
         onset_censored=censored,
+        runaway_censored=bool(np.isnan(runaway)),
+        delamination_stop_kind=str(summary.stop_kind),
         max_residual=float(max(sw.residual.max(), summary.max_residual)),
     )
     return row

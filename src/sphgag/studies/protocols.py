@@ -26,6 +26,7 @@ from ..engine.numerics import Numerics
 from ..physics import analytic
 from ..physics.donnan import CHARGE_LAWS, LAWS
 from ..physics.materials import Gag, swelling_pressure
+from . import artery
 
 log = logging.getLogger("sphgag")
 
@@ -272,6 +273,16 @@ def pressurise(
         on_state=on_state,
         **numerics.solver_options(),
     )[-1]
+
+
+def pressurised_wall(bilayer: dict, numerics: Numerics, homeostasis_settings: dict, pressure_mmHg: float, name: str):
+    """``(model, state)``: the passive wall of ``bilayer`` at its homeostatic state moved to ``pressure_mmHg``
+    (:func:`homeostasis`, :func:`pressurise`), the state without
+    its evaluation (a start for a run)."""
+    wall = artery.bilayer_model(bilayer, numerics, name=name)
+    h = homeostasis(wall, numerics, homeostasis_settings)
+    start = pressurise(wall, h.state, pressure_mmHg, numerics)
+    return wall, solver.State(start.load, start.x, None, None)
 
 
 def bilayer_pressure_diameter(

@@ -169,7 +169,8 @@ def damage_colourbar(fig, cax):
 
 
 def run_note(summary: pd.DataFrame, **labels) -> str:
-    """Onset, growth, merging and an early stop of the run with these labels (summary.csv), in a few words."""
+    """How the run with these labels (summary.csv) ended, in a few words: its stop (``stop_kind``), the concentrations
+    of its onset and runaway (bisected between levels) and what it delaminated."""
     sel = np.logical_and.reduce([summary[k] == v for k, v in labels.items()])
     if not sel.any():
         return "not run"
@@ -177,11 +178,22 @@ def run_note(summary: pd.DataFrame, **labels) -> str:
     if not np.isfinite(s.onset_concentration_mEq_l):
         note = "no damage onset"
     else:
-        note = f"damage onset at {s.onset_concentration_mEq_l:g} mEq/l, {s.final_length_um:.3g} um delaminated"
-        note += f", merged at pass {s.merge_step:g}" if bool(s.merged) else ""
-    note += f", {s.snaps:g} snap{'s' if s.snaps != 1 else ''}" if s.get("snaps", 0) else ""
-    # the stop's kind, without its details (those are in summary.csv), on a second line of the legend
-    return note + (f"\n    stop: {s.stop.split(' (')[0]}" if s.stop != "arrested" else "")
+        note = f"onset {s.onset_concentration_mEq_l:.1f} mEq/l"
+        if np.isfinite(s.runaway_concentration_mEq_l):
+            note += f", runaway {s.runaway_concentration_mEq_l:.1f}"
+        note += f", {s.final_length_um:.3g} um"
+    return f"{note}\n    stop: {s.stop_kind}" + (f" at pass {s.merge_step:g}" if bool(s.merged) else "")
+
+
+def event_marks(ax, summary: pd.DataFrame, colour, dashes=""):
+    """The onset (a triangle on the axis) and runaway (a vertical line) concentrations of the runs of ``summary``."""
+    for s in summary.itertuples():
+        if np.isfinite(s.onset_concentration_mEq_l):
+            ax.plot([s.onset_concentration_mEq_l], [0.0], marker="^", ms=6, color=colour, clip_on=False, zorder=5)
+        if np.isfinite(s.runaway_concentration_mEq_l):
+            ax.axvline(
+                s.runaway_concentration_mEq_l, color=colour, lw=0.9, ls=(0, (1, 2)) if dashes else "-", alpha=0.8
+            )
 
 
 def no_growth_note(ax, runs: pd.DataFrame):
@@ -379,8 +391,16 @@ def fig5(
             hue="sigma_cr",
             palette=palette(sigmas, colours, "{:g} kPa".format),
         )
+        for j, criterion in enumerate(criteria):
+            for sig in sigmas:
+                ended = notes_of[(notes_of.case == case) & (notes_of.criterion == criterion)]
+                event_marks(ax, ended[ended.sigma_cr_kPa == sig], colours[sig], dashes=j > 0)
         no_growth_note(ax, own)
-        ax.set(xlabel=GAG_CONCENTRATION, ylabel="delaminated length (um)", title=f"(c) growth, {case}")
+        ax.set(
+            xlabel=GAG_CONCENTRATION,
+            ylabel="delaminated length (um)",
+            title=f"(c) growth, {case}: onset (triangles), runaway (lines)",
+        )
         style_legend(ax, "upper left")
     material_key(fig, layers)
     fit_particle_sizes(fig)

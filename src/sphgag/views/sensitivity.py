@@ -15,6 +15,7 @@ SENSITIVITY_OUTPUTS = {  # results/sensitivity/indices.csv output -> axis label
     "top_circ_stress_kPa": "top hoop stress (kPa)",
     "pool_volume_change": "pool volume change",
     "onset_concentration_mEq_l": "onset concentration (mEq/l)",
+    "runaway_concentration_mEq_l": "runaway concentration (mEq/l)",
     "final_length_um": "delaminated length (um)",
     "propagated": "propagated (0/1)",
 }

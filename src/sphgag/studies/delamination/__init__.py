@@ -15,17 +15,20 @@ One module per concept:
 The names the pipeline, the tests and the benchmarks use are imported here.
 """
 
-from .convergence import convergence_study
+from .convergence import CONVERGED_QUANTITIES, GCI_COLUMNS, convergence_study, gci_table
 from .front import CONTACT_DX, Front, Islands
-from .growth import DamageUpdate, GrowthRun, grow, intact_energy, onset_measure, seeded_only
+from .growth import DamageUpdate, GrowthRun, LimitPoint, grow, intact_energy, onset_measure, seeded_only
 from .settings import Settings
 from .snapshots import load_snapshot, save_snapshots
 from .tables import (
     GROWTH_COLUMNS,
     LEVEL_CLASSES,
+    STOP_KINDS,
     SUMMARY_COLUMNS,
+    Critical,
     Pass,
     Result,
+    Stop,
     first_level_growth,
     griffith,
     growth_rates,
@@ -39,6 +42,13 @@ from .tables import (
 
 __all__ = [
     "CONTACT_DX",
+    "CONVERGED_QUANTITIES",
+    "GCI_COLUMNS",
+    "STOP_KINDS",
+    "Critical",
+    "LimitPoint",
+    "Stop",
+    "gci_table",
     "GROWTH_COLUMNS",
     "LEVEL_CLASSES",
     "SUMMARY_COLUMNS",

@@ -1,16 +1,32 @@
-"""The resolution study of delamination (``results/delamination/convergence.csv``): figure 5's pool grown from the
-passive wall pressurised at each particle spacing, under every onset criterion (eq. 2.28, section 2.7)."""
+"""The resolution study of delamination (``results/delamination/convergence.csv``): the study's pool sets (figure 5's
+pool and a pair) grown from the passive wall pressurised at each particle spacing, under every onset criterion (eq.
+2.28, section 2.7), and the discretisation error of the concentrations of their events (``gci.csv``,
+:func:`gci_table`)."""
 
 from __future__ import annotations
 
+import numpy as np
 import pandas as pd
 
-from ...engine import solver
 from ...engine.numerics import Numerics
-from .. import artery, protocols
+from .. import artery, gci, protocols
 from .growth import grow
 from .settings import Settings
 from .tables import labelled
+
+#: the concentrations of a run's events whose convergence the study measures (summary.csv columns)
+CONVERGED_QUANTITIES = ("onset_concentration_mEq_l", "runaway_concentration_mEq_l", "merge_concentration_mEq_l")
+GCI_COLUMNS = [
+    "charge_law",
+    "criterion",
+    "case",
+    "quantity",
+    "dx_um",
+    "value",
+    "observed_order",
+    "extrapolated",
+    "gci_fine",
+]
 
 
 def convergence_study(
@@ -22,23 +38,47 @@ def convergence_study(
     gag: dict,
     name: str = "delamination_convergence",
 ) -> pd.DataFrame:
-    """Rows of ``results/delamination/convergence.csv`` for one particle spacing: the one pool set of
-    ``de["pool_sets"]`` (figure 5's, by any name) at ``critical_stress_kPa``, every onset criterion, from the passive
-    wall pressurised at this spacing."""
-    if len(de["pool_sets"]) != 1:
-        raise ValueError(f"the resolution study runs one pool set, got {', '.join(de['pool_sets'])}")
-    [(case, pools)] = de["pool_sets"].items()
+    """Rows of ``results/delamination/convergence.csv`` for one particle spacing: every pool set of ``de["pool_sets"]``
+    at ``critical_stress_kPa``, every onset criterion, from the passive wall pressurised at this spacing."""
     p = dict(bilayer, dx_um=float(dx))
-    wall = artery.bilayer_model(p, numerics, name=name)
-    h = protocols.homeostasis(wall, numerics, homeostasis)
-    start = protocols.pressurise(wall, h.state, de["pressure_mmHg"], numerics)
-    sectors = [artery.pool_sector(s) for s in pools]
+    _, start = protocols.pressurised_wall(p, numerics, homeostasis, de["pressure_mmHg"], name)
     rows = []
-    for criterion in de["criteria"]:
-        settings = Settings.from_config(de, de["critical_stress_kPa"], criterion)
-        model = artery.bilayer_model(p, numerics, name=name if len(de["criteria"]) == 1 else f"{name}_{criterion}")
-        result = grow(
-            model, solver.State(start.load, start.x, None, None), sectors, settings, numerics, gag, model.props
-        )
-        rows.append(labelled(result, case, settings, dx)[1].assign(particles=model.n))
+    for case, pools in de["pool_sets"].items():
+        sectors = [artery.pool_sector(s) for s in pools]
+        for criterion in de["criteria"]:
+            settings = Settings.from_config(de, de["critical_stress_kPa"], criterion)
+            model = artery.bilayer_model(p, numerics, name=f"{name}_{case}_{criterion}")
+            result = grow(model, start, sectors, settings, numerics, gag, model.props)
+            rows.append(labelled(result, case, settings, dx)[1].assign(particles=model.n))
     return pd.concat(rows, ignore_index=True)
+
+
+def gci_table(convergence: pd.DataFrame) -> pd.DataFrame:
+    """``results/delamination/gci.csv``: per charge law, criterion, case and event concentration
+    (:data:`CONVERGED_QUANTITIES`), its value at every spacing of the resolution study, and, where there are three
+    spacings, the observed order, the extrapolated value and the fine-grid convergence index of the three finest
+    (:func:`sphgag.studies.gci.estimate`; NaN where the event did not happen at all three)."""
+    rows = []
+    keys = ["charge_law", "criterion", "case"]
+    for (law, criterion, case), runs in convergence.groupby(keys, sort=False):
+        runs = runs.sort_values("dx_um")
+        for quantity in CONVERGED_QUANTITIES:
+            if quantity not in runs or runs[quantity].isna().all():
+                continue
+            finest = runs.iloc[:3]
+            e = gci.estimate(finest.dx_um, finest[quantity]) if len(finest) == 3 else None
+            for r in runs.itertuples():
+                rows.append(
+                    dict(
+                        charge_law=law,
+                        criterion=criterion,
+                        case=case,
+                        quantity=quantity,
+                        dx_um=float(r.dx_um),
+                        value=float(getattr(r, quantity)),
+                        observed_order=e.order if e else np.nan,
+                        extrapolated=e.extrapolated if e else np.nan,
+                        gci_fine=e.gci_fine if e else np.nan,
+                    )
+                )
+    return pd.DataFrame(rows, columns=GCI_COLUMNS)

@@ -105,6 +105,12 @@ class Front:
         th = np.rad2deg(self.model.layout.theta[hist.gag])
         return bool(th.min() <= self.window_deg or th.max() >= 90.0 - self.window_deg)
 
+    def at_layer(self, hist: ParticleHistory) -> bool:
+        """A particle converted by damage touches (within the contact distance, reference positions) a particle
+        outside the pool layers' interior: another layer or a free surface."""
+        damaged = (hist.origin == DAMAGED).astype(np.int64)
+        return bool(np.any((self.adjacent @ damaged > 0) & ~self.interior))
+
     def converted(self, hist: ParticleHistory):
         """``(total, interior, exterior)`` particles converted by damage (islands included); interior: on the side
         of its pool's seeded centre that faces the other pools (two or more pools; NaN for one)."""

@@ -43,12 +43,13 @@ value whatever the stress.
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from ...engine import forces, measure, snap, solver
+from ...engine import forces, measure, pool_volume, snap, solver
 from ...engine.geometry import Sector
 from ...engine.history import HistoryMaterial, ParticleHistory
 from ...engine.loading import MMHG_TO_KPA, Load
@@ -59,7 +60,7 @@ from .. import artery, protocols
 from ..onset import CRITERIA
 from .front import Front
 from .settings import Settings
-from .tables import Pass, Result, growth_table, run_summary
+from .tables import RUNAWAY_KINDS, Critical, Pass, Result, Stop, growth_table, run_summary
 
 log = logging.getLogger("sphgag")
 
@@ -116,7 +117,8 @@ class GrowthRun:
     rows: list = field(default_factory=list)
     snapshots: list = field(default_factory=list)
     dissipated: float = 0.0  # kPa um^2 per unit axial length
-    onset_c: float = np.nan
+    onset_c: float = np.nan  # the ramp's level of the first onset
+    limit_c: float = np.nan  # the limit point's concentration, where the run ends at one
     merge_step: int | None = None
     max_residual: float = 0.0
     snaps: int = 0
@@ -203,8 +205,26 @@ class GrowthRun:
         try:
             state = solver.follow_path(self.model, self.state.x, self.state.load, [load], **self.opts)[-1]
         except solver.NotConverged as exc:
-            state = self.follow_snap(load, f"c = {self.concentration:g} -> {c:g} mEq/l", exc)
+            state = self._volume_control(load, exc)
         self._accept(state)
+
+    def _volume_control(self, load: Load, exc: solver.SimulationError) -> solver.State:
+        """The concentration step to ``load`` has no equilibrium on its path: trace the pools' path with their volume
+        as the control and the damage frozen (:func:`sphgag.engine.pool_volume.continue_path`). Raises
+        :class:`LimitPoint` where the concentration the pools hold has a maximum below the step's; returns the state
+        at the step's concentration where volume control reaches it; else follows the step as a snap."""
+        c = float(load.material_value("concentration"))
+        what = f"c = {self.concentration:g} -> {c:g} mEq/l"
+        log.info("[%s] %s has no equilibrium on its path (%s): volume control", self.run_name, what, exc.reason)
+        members = np.flatnonzero(self.hist.gag)
+        options = {k: v for k, v in self.opts.items() if k != "run"}
+        path, reached = pool_volume.continue_path(self.model, self.state, members, [c], run=self.run_name, **options)
+        if path.end == "limit point":
+            raise LimitPoint(self.run_name, load, path.reason, path.limit_concentration)
+        if reached:
+            return reached[-1]
+        log.info("[%s] %s: %s", self.run_name, what, path.reason)
+        return self.follow_snap(load, what, exc)
 
     def next_history(self) -> DamageUpdate:
         """The damage update (eq. 2.28) from the current state (:class:`DamageUpdate`): the history it makes and the
@@ -228,7 +248,8 @@ class GrowthRun:
             if not np.array_equal(dmg.onset_stretch, hist.onset_stretch, equal_nan=True):
                 onsets = hist.with_damage(hist.D, dmg.onset_stretch, dmg.onset_energy)
             return DamageUpdate(None, onsets=onsets, begun=begun)
-        released = float(np.sum((dmg.D - hist.D) * W0 * lay.volume))
+        changed = dmg.D > hist.D  # W_0 of a GAG particle need not be finite (its base material is not its own)
+        released = float(np.sum((dmg.D[changed] - hist.D[changed]) * W0[changed] * lay.volume[changed]))
         new = hist.with_damage(dmg.D, dmg.onset_stretch, dmg.onset_energy)
         if ruptured.size:
             owner = np.full(lay.n, -1)
@@ -304,52 +325,112 @@ class GrowthRun:
         self.snaps += 1
         return state
 
-    def level(self, c: float) -> str:
-        """Damage passes at concentration ``c`` until the pools arrest (``arrested``) or the run must end (its
-        reason: ``merged``, ``maximum extent``, ``symmetry edge``, ``pass limit``)."""
+    def level(self, c: float) -> tuple[str, str]:
+        """Damage passes at concentration ``c`` until the pools arrest or the run must end: ``(kind, what)``, the kind
+        of :data:`sphgag.studies.delamination.tables.STOP_KINDS` (``arrested`` where the level ends at rest) and what
+        ended it. Raises :class:`LimitPoint` where ``c`` has no equilibrium and
+        :class:`sphgag.engine.snap.NoStableState` where a snap comes to rest at none."""
         self.raise_concentration(c)
         self._record(first_of_level=True)
         while self.damage_pass():
             if self.merge_step is not None:
-                return "merged"
+                return "merged", "the pools merged"
             if self.step >= self.settings.max_passes:
-                return "pass limit"
+                return "numerical", f"the pass limit ({self.settings.max_passes}) ended growth that had not arrested"
             if self.front.extent_deg(self.hist).max() >= self.settings.max_extent_deg:
-                return "maximum extent"
+                return "unstable", (
+                    f"growth at a fixed concentration did not arrest; stopped at the maximum extent "
+                    f"({self.settings.max_extent_deg:g} deg)"
+                )
             if self.front.at_symmetry_edge(self.hist):
-                return "symmetry edge"
-        return "arrested"
+                return "edge", "the front reached a symmetry edge"
+            if self.front.at_layer(self.hist):
+                return "layer", "the front reached another layer or a free surface"
+        return "arrested", "arrested"
+
+    def settle_level(self, c: float) -> tuple[str, str]:
+        """:meth:`level` at ``c``, its loss of equilibrium a kind of its own: ``limit point`` (with
+        :attr:`limit_c`) or ``numerical`` (no stable state after a snap); the model is left at the run's material."""
+        try:
+            return self.level(c)
+        except LimitPoint as exc:
+            self.limit_c = exc.limit
+            kind, what = "limit point", f"no equilibrium: {exc.reason}"
+        except snap.NoStableState as exc:
+            kind, what = "numerical", f"no stable state after a snap in pass {self.step + 1} ({exc.reason})"
+        self.model.set_props(self.material)
+        return kind, what
 
     def run(self) -> Result:
-        """Walk the concentration ramp from the current concentration; the run ends where a level does not arrest,
-        or where a snap finds no stable state (``stop`` names the step and the load)."""
-        stop, level = "arrested", self.concentration  # the level the run stops in
+        """Walk the concentration ramp from the current concentration to where a level does not arrest (its
+        :class:`Stop`, which names the level and the pass), then find the concentrations of its events between the
+        levels (:meth:`critical`)."""
+        before, before_onset = self.branch(), None  # the last state at rest; the one before the onset's level
+        stop = Stop("arrested", "arrested", self.concentration)
         for c in self.settings.levels[self.settings.levels >= self.concentration - 1e-9]:
-            level = float(c)
-            try:
-                stop = self.level(float(c))
-            except snap.NoStableState as exc:
-                stop = f"no stable state after a snap ({exc.reason})"
-                log.warning(
-                    "[%s] c = %g mEq/l, pass %d: %s; the run ends at its last equilibrium",
-                    self.run_name,
-                    c,
-                    self.step + 1,
-                    stop,
-                )
-                self.model.set_props(self.material)
-                break
-            log.info(
-                "[%s] c = %g mEq/l: %s after %d passes, %d converted",
+            had_onset = not np.isnan(self.onset_c)
+            kind, what = self.settle_level(float(c))
+            if not had_onset and not np.isnan(self.onset_c):
+                before_onset = before
+            stop = Stop(kind, what if kind == "arrested" else f"{what}; c = {c:g} mEq/l, {self.step} passes", float(c))
+            log.log(
+                logging.INFO if kind in ("arrested", "merged", "unstable") else logging.WARNING,
+                "[%s] c = %g mEq/l: %s (%d converted)",
                 self.run_name,
                 c,
-                stop,
-                self.step,
+                stop.reason,
                 self.rows[-1].converted[0],
             )
-            if stop != "arrested":
+            if kind != "arrested":
                 break
-        return self.result(stop, level)
+            before = self.branch()
+        return self.result(stop, self.critical(stop, before, before_onset))
+
+    # -- the concentrations of the run's events, between the ramp's levels ------------------------------------------
+    def branch(self) -> GrowthRun:
+        """A run that continues from this one's current state without changing it (its own rows, no snapshots)."""
+        return dataclasses.replace(
+            self, rows=list(self.rows[-1:]), snapshots=[], wanted=frozenset(), opts=dict(self.opts)
+        )
+
+    def critical(self, stop: Stop, before: GrowthRun, before_onset: GrowthRun | None) -> Critical:
+        """The concentrations of the run's events (:class:`Critical`), each bisected between the last level below
+        it (the run at rest there: ``before_onset`` for the onset, ``before`` for the runaway) and the level it
+        happened in; the run is unchanged."""
+        onset = runaway = np.nan
+        if before_onset is not None:
+            onset = self._bisect(before_onset, self.onset_c, _reaches_onset, "onset")
+        if stop.kind in RUNAWAY_KINDS:
+            runaway = self._bisect(before, stop.level, _runs_away, "runaway")
+        self.model.set_props(self.material)
+        solver.factorisation_cache(self.model).reset()
+        return Critical(
+            onset=onset,
+            runaway=runaway,
+            merge=runaway if stop.kind == "merged" else np.nan,
+            limit=self.limit_c,
+            arrested_length=before.rows[-1].length if before.rows else 0.0,
+        )
+
+    def _bisect(self, below: GrowthRun, above: float, happens, what: str) -> float:
+        """The concentration between ``below``'s (at rest, the event not yet happened) and ``above`` (where it
+        happened) at which ``happens(probe, c)`` first holds, bisected to ``bisection_tolerance_mEq_l``: the middle of
+        the last bracket. Each probe continues from the highest state at rest below it (:meth:`branch`)."""
+        lo, hi = below.concentration, float(above)
+        while hi - lo > self.settings.bisection_tolerance_mEq_l:
+            c = 0.5 * (lo + hi)
+            probe = below.branch()
+            probe.opts["run"] = f"{self.run_name} ({what} probe)"
+            self.model.set_props(below.material)
+            solver.factorisation_cache(self.model).reset()
+            if happens(probe, c):
+                hi = c
+            else:
+                lo, below = c, probe
+        log.info(
+            "[%s] %s concentration %.2f mEq/l (between %.2f and %.2f)", self.run_name, what, 0.5 * (lo + hi), lo, hi
+        )
+        return 0.5 * (lo + hi)
 
     # -- bookkeeping ----------------------------------------------------------------------------------------------
     def _settle(self, material: HistoryMaterial) -> None:
@@ -398,16 +479,16 @@ class GrowthRun:
             # solver's path must be the same)
             solver.factorisation_cache(self.model).reset()
 
-    def result(self, stop: str, level: float) -> Result:
-        """The run's rows and summary (:func:`sphgag.studies.delamination.tables.run_summary`); it stopped (``stop``)
-        in the ramp's level ``level`` [mEq/l]."""
+    def result(self, stop: Stop, critical: Critical) -> Result:
+        """The run's rows and summary (:func:`sphgag.studies.delamination.tables.run_summary`): where it stopped and
+        the concentrations of its events."""
         growth = growth_table(self.rows)
         summary = run_summary(
             growth,
             self.rows[-1],
             stop,
-            level,
-            onset_concentration=self.onset_c,
+            critical,
+            onset_level=self.onset_c,
             merge_step=self.merge_step,
             dissipated=self.dissipated,
             passes=self.step,
@@ -422,6 +503,30 @@ class GrowthRun:
         if not any(s[0] == self.step and s[1].load == state.load for s in snapshots):
             snapshots.append((self.step, state, self.hist))
         return Result(growth, summary, snapshots, (state, self.hist))
+
+
+class LimitPoint(solver.SimulationError):
+    """A concentration step past the largest concentration the pools hold with their damage frozen (``limit``,
+    mEq/l, found by volume control: :func:`sphgag.engine.pool_volume.continue_path`)."""
+
+    def __init__(self, run: str, load: Load, reason: str, limit: float):
+        super().__init__(run, load, reason)
+        self.limit = float(limit)
+
+
+def _reaches_onset(probe: GrowthRun, c: float) -> bool:
+    """At ``c`` (history fixed, no damage yet) the onset measure reaches sigma_cr at a candidate (eq. 2.28); a
+    concentration without equilibrium counts as reached."""
+    try:
+        probe.raise_concentration(c)
+    except (LimitPoint, snap.NoStableState):
+        return True
+    return probe.next_history().begun
+
+
+def _runs_away(probe: GrowthRun, c: float) -> bool:
+    """Growth from the probe's state at rest, at ``c``, does not arrest (or ``c`` has no equilibrium)."""
+    return probe.settle_level(c)[0] != "arrested"
 
 
 def grow(
@@ -464,4 +569,4 @@ def seeded_only(
     log.warning("[%s] %s: the run ends where its pools are seeded", run or model.name, stop)
     seeded = GrowthRun.seed(model, start, sectors, settings, numerics, gag, base, run=run)
     seeded._record(first_of_level=True)  # the seeded wall is the run's one row (and its snapshot)
-    return seeded.result(stop, 0.0)
+    return seeded.result(Stop("not run", stop, 0.0), Critical())

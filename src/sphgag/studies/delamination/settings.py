@@ -28,6 +28,7 @@ class Settings:
     max_passes: int
     max_extent_deg: float
     conversion_steps: int
+    bisection_tolerance_mEq_l: float = 0.5  # onset, runaway and merge concentrations are bisected to this bracket
     damage_law: str = "paper"  # damage.LAWS: eq. (2.28) as printed, or with a fracture energy
     fracture_energy_J_m2: float = np.nan  # G_c of the fracture_energy law
     candidates: str = "contact"  # candidates.RULES: the particles touching the pool (the paper), or the window

@@ -42,8 +42,14 @@ GROWTH_COLUMNS = [
 ]
 SUMMARY_COLUMNS = [
     *RUN_LABELS,
+    "stop_kind",
     "onset_concentration_mEq_l",
+    "runaway_concentration_mEq_l",
+    "merge_concentration_mEq_l",
+    "limit_concentration_mEq_l",
+    "arrested_length_um",
     "final_length_um",
+    "passes",
     "islands",
     "island_particles",
     "island_distance_um",
@@ -58,6 +64,47 @@ SUMMARY_COLUMNS = [
     "dissipated_energy_J_m2",
     "max_residual",
 ]
+
+
+#: how a growth run ends (``stop_kind`` of summary.csv), each a result of the run except ``numerical``:
+#: ``arrested`` (the pools came to rest at every level up to the ramp's end), ``merged`` (two pools joined),
+#: ``unstable`` (growth at a fixed concentration did not arrest: the run stopped at ``max_extent_deg``), ``edge`` (the
+#: front reached a symmetry edge), ``layer`` (the front reached another layer or a free surface), ``limit point``
+#: (the pool has no equilibrium at the level: the concentration it holds, with the damage frozen, has a maximum below
+#: it, found by volume control), ``numerical`` (the solver found no stable state, or the run's pass budget ended) and
+#: ``not run`` (the run had no damage law to grow by, e.g. no G_c to match: its pools were seeded only)
+STOP_KINDS = ("arrested", "merged", "unstable", "edge", "layer", "limit point", "numerical", "not run")
+#: the stops at which growth at a fixed concentration did not arrest (their level has a runaway concentration)
+RUNAWAY_KINDS = ("merged", "unstable", "edge", "layer")
+
+
+@dataclass(frozen=True)
+class Stop:
+    """Where a run ended: ``kind`` (one of :data:`STOP_KINDS`), ``reason`` (what happened, at which level of the ramp
+    and after which pass) and ``level``, the ramp's concentration it stopped in [mEq/l]."""
+
+    kind: str
+    reason: str
+    level: float
+
+    def __post_init__(self):
+        if self.kind not in STOP_KINDS:
+            raise ValueError(f"stop kind must be one of {', '.join(STOP_KINDS)}, got {self.kind!r}")
+
+
+@dataclass(frozen=True)
+class Critical:
+    """The concentrations [mEq/l] at which a run's events happen, found by bisection between the ramp's levels to
+    ``bisection_tolerance_mEq_l`` (NaN where the event did not happen): ``onset`` (the onset measure reaches sigma_cr,
+    eq. 2.28), ``runaway`` (growth at a fixed concentration no longer arrests), ``merge`` (that growth ends with two
+    pools joined) and ``limit`` (the largest concentration the pool holds with its damage frozen, from volume
+    control); ``arrested_length``: the delaminated length [um] at the last level that arrested."""
+
+    onset: float = np.nan
+    runaway: float = np.nan
+    merge: float = np.nan
+    limit: float = np.nan
+    arrested_length: float = 0.0
 
 
 @dataclass
@@ -112,10 +159,10 @@ def growth_table(rows: list[Pass]) -> pd.DataFrame:
 def run_summary(
     growth: pd.DataFrame,
     last: Pass,
-    stop: str,
-    stop_level: float,
+    stop: Stop,
+    critical: Critical,
     *,
-    onset_concentration: float,
+    onset_level: float,
     merge_step: int | None,
     dissipated: float,
     passes: int,
@@ -126,8 +173,8 @@ def run_summary(
     concentration_step: float,
 ) -> dict:
     """The summary of a run (summary.csv before the run's labels) from its rows ``growth`` (:func:`growth_table`), its
-    last row ``last``, why it stopped (``stop``) and in which level of the ramp (``stop_level`` [mEq/l]), and its
-    tallies: the concentration of the first onset, the pass at which the pools merged (None if they did not), the
+    last row ``last``, where it stopped (:class:`Stop`), the concentrations of its events (:class:`Critical`) and its
+    tallies: the ramp's level of the first onset, the pass at which the pools merged (None if they did not), the
     energy damage released [kPa um^2 per unit axial length], the passes, the snaps and the length they gained [um],
     the largest residual, the lumen pressure carried at the end [mmHg]; ``concentration_step`` of the ramp
     (:func:`growth_rates`)."""
@@ -135,12 +182,20 @@ def run_summary(
     length = last.length
     first_c, first_length = first_level_growth(growth)
     return dict(
-        onset_concentration_mEq_l=onset_concentration,
+        stop_kind=stop.kind,
+        onset_concentration_mEq_l=critical.onset,
+        runaway_concentration_mEq_l=critical.runaway,
+        merge_concentration_mEq_l=critical.merge,
+        limit_concentration_mEq_l=critical.limit,
+        arrested_length_um=critical.arrested_length,
         final_length_um=length,
+        passes=passes,
         islands=last.islands.count,
         island_particles=last.islands.particles,
         island_distance_um=last.islands.distance_um,
-        outcome=outcome(stop, length, merge_step is not None),
+        outcome=outcome(stop.kind, length),
+        stop=stop.reason,
+        onset_level_mEq_l=onset_level,
         first_growth_concentration_mEq_l=first_c,
         first_level_length_um=first_length,
         max_tip_radial_stress_kPa=float(growth.tip_radial_stress_kPa.max()),
@@ -150,9 +205,7 @@ def run_summary(
         merge_step=merge_step if merge_step is not None else np.nan,
         dissipated_energy_J_m2=1e-3 * dissipated / length if length > 0 else np.nan,
         dissipated_energy_kPa_um2=dissipated,
-        stop=stop,
-        stop_level_mEq_l=stop_level,
-        passes=passes,
+        stop_level_mEq_l=stop.level,
         snaps=snaps,
         snap_length_um=snap_length,
         max_residual=max_residual,
@@ -188,14 +241,14 @@ def first_level_growth(growth: pd.DataFrame) -> tuple[float, float]:
     return c, float(level.iloc[-1] - level.iloc[0])
 
 
-def outcome(stop: str, length: float, merged: bool) -> str:
-    """What a run did: ``merges``, ``grows`` (it ended growing, for the reason in ``stop``), ``arrests`` (it grew and
-    stopped at the highest concentration) or ``no growth``."""
-    if merged:
+def outcome(stop_kind: str, length: float) -> str:
+    """What a run did: ``merges``, ``grows`` (it ended growing: its growth did not arrest, or the run could not follow
+    it), ``arrests`` (it grew and came to rest at the ramp's end) or ``no growth``."""
+    if stop_kind == "merged":
         return "merges"
     if length <= 0.0:
         return "no growth"
-    return "arrests" if stop == "arrested" else "grows"
+    return "arrests" if stop_kind == "arrested" else "grows"
 
 
 #: what a pool does at one level of the concentration ramp (the delamination map, :func:`level_classes`)
@@ -216,14 +269,14 @@ def level_classes(growth: pd.DataFrame, summary: dict, levels) -> pd.DataFrame:
     Rows: ``concentration_mEq_l``, ``state``, ``delaminated_length_um`` (at the level's last equilibrium; NaN beyond
     the run).
     """
-    stop_level, stop = float(summary["stop_level_mEq_l"]), str(summary["stop"])
+    stop_level, kind = float(summary["stop_level_mEq_l"]), str(summary["stop_kind"])
     onset = float(summary["onset_concentration_mEq_l"])
     reached = growth.concentration_mEq_l.to_numpy()
     beyond = "propagation" if np.any(np.abs(reached - stop_level) < 1e-9) else "no equilibrium"
     rows = []
     for c in levels:
         at = growth[np.abs(reached - c) < 1e-9]
-        stable = c < stop_level - 1e-9 or (stop == "arrested" and c <= stop_level + 1e-9)
+        stable = c < stop_level - 1e-9 or (kind == "arrested" and c <= stop_level + 1e-9)
         if stable:
             state = "onset, arrested" if onset <= c + 1e-9 else "no onset"
         else:

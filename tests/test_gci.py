@@ -1,0 +1,37 @@
+"""The grid convergence index (Celik et al. 2008): exact on values with a known order."""
+
+import numpy as np
+import pytest
+
+from sphgag.studies import gci
+
+
+@pytest.mark.parametrize("p", [0.7, 1.0, 1.7, 2.0])
+@pytest.mark.parametrize("spacings", [(2.0, 2.83, 4.0), (1.0, 1.3, 2.1), (4.0, 2.0, 3.0)])
+def test_a_known_order_and_limit_are_recovered_exactly(p, spacings):
+    """phi(h) = phi_0 + C h^p at three spacings, uneven ratios and any order given: the observed order is p and the
+    extrapolated value phi_0, to round-off; the GCI is 1.25 times the true relative error of the finest value."""
+    phi0, C = 123.7, -4.2
+    values = [phi0 + C * h**p for h in spacings]
+    e = gci.estimate(spacings, values)
+    h1 = min(spacings)
+    assert e.h1 == h1 and e.order == pytest.approx(p, rel=1e-9) and not e.oscillatory
+    assert e.extrapolated == pytest.approx(phi0, rel=1e-10)
+    true = abs((phi0 + C * h1**p) - phi0) / abs(phi0 + C * h1**p)
+    assert e.gci_fine == pytest.approx(1.25 * true, rel=1e-8)
+    # the spacing the order says reaches a tenth of the GCI: (1/10)^(1/p) of the finest
+    assert e.spacing_for(e.gci_fine / 10) == pytest.approx(h1 * 0.1 ** (1 / p), rel=1e-9)
+
+
+def test_oscillatory_convergence_is_flagged():
+    e = gci.estimate([1.0, 1.5, 2.25], [10.0, 10.3, 9.9])
+    assert e.oscillatory
+
+
+def test_equal_fine_values_have_no_error_and_bad_inputs_are_refused():
+    assert gci.estimate([1, 2, 4], [5.0, 5.0, 5.0]).gci_fine == 0.0
+    assert np.isnan(gci.estimate([1, 2, 4], [5.0, np.nan, 6.0]).order)
+    with pytest.raises(ValueError, match="three"):
+        gci.estimate([1, 2], [1.0, 2.0])
+    with pytest.raises(ValueError, match="differ"):
+        gci.estimate([1, 1, 2], [1.0, 2.0, 3.0])

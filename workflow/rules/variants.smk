@@ -1,0 +1,75 @@
+# Numerical variants of the study (target variants): figure 4's first pool and figure 5's pool under each form of the
+# hourglass control, eq. (2.14) as printed beside its energy form (the default), each from a wall of its own.
+
+from sphgag.engine.hourglass import FORMS as HOURGLASS_FORMS
+
+# the key of a variant run: one hourglass form, the paper's charge law
+VARIANT_NAME = "hourglass_{form}"
+
+
+rule variant:
+    """Figure 4's first pool and figure 5's pool with the hourglass control's {form} form (the paper's charge law), from
+    a passive wall of its own at the delamination pressure."""
+    input:
+        code=SPHGAG,
+    output:
+        swelling=f"results/variants/{VARIANT_NAME}_swelling.csv",
+        growth=f"results/variants/{VARIANT_NAME}_growth.csv",
+        summary=f"results/variants/{VARIANT_NAME}_summary.csv",
+        provenance=f"results/provenance/variant_{VARIANT_NAME}.json",
+    log:
+        f"logs/variants/{VARIANT_NAME}.log",
+    benchmark:
+        f"results/benchmarks/variant_{VARIANT_NAME}.tsv"
+    wildcard_constraints:
+        form="|".join(HOURGLASS_FORMS),
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=30,
+        mem_mb=2000,
+    params:
+        bilayer=config["bilayer"],
+        numerics=lambda wildcards: dict(config["numerics"], hourglass=wildcards.form),
+        homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
+        swelling=config["swelling"],
+        delamination=dict(
+            DE_SETTINGS,
+            **{k: DE[k] for k in ("pressure_mmHg", "critical_stress_kPa", "criteria", "pool_sets", "figures")},
+        ),
+        gag=GAG[PAPER_LAW],
+    script:
+        "../scripts/variant.py"
+
+
+rule variants_figure:
+    """The hourglass control's forms side by side: figure 4's first pool and figure 5's pool under each."""
+    input:
+        code=VIEWS["variants"],
+        swelling=expand(rules.variant.output.swelling, form=HOURGLASS_FORMS),
+        growth=expand(rules.variant.output.growth, form=HOURGLASS_FORMS),
+        summary=expand(rules.variant.output.summary, form=HOURGLASS_FORMS),
+    output:
+        pdf="figures/variants_hourglass.pdf",
+        png=report(
+            "figures/variants_hourglass.png",
+            caption="../report/variants_hourglass.rst",
+            category="6 Variants",
+            labels={"result": "The hourglass control: eq. (2.14) as printed beside its energy form"},
+        ),
+    log:
+        "logs/variants_figure.log",
+    benchmark:
+        "results/benchmarks/variants_figure.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
+    params:
+        forms=list(HOURGLASS_FORMS),
+        default=config["numerics"]["hourglass"],
+    script:
+        "../scripts/variants_figure.py"
