@@ -318,8 +318,8 @@ def test_a_settings_candidate_rule_must_be_a_registered_one(ci_config):
 def test_growth_by_contact_leaves_no_island_and_the_window_does(ci_config, wall):
     """A real growth run at the CI spacing: with the paper's candidates (contact) the pool grows (by 5 particles in
     its 3 passes, from 300 mEq/l on) and never leaves an island; with the authors' window (the same settings: its
-    pass limit comes at 150 mEq/l) the damage converts particles ahead of the pool that are not connected to it, and those are not
-    delaminated length."""
+    pass limit comes at 150 mEq/l) the damage converts particles ahead of the pool that are not connected to it, and
+    those are not delaminated length."""
     st = settings(ci_config, critical_stress_kPa=1.0, max_concentration_mEq_l=500.0)
     model, result = grow(ci_config, wall, [sector(51.5)], st)
     g = result.growth
