@@ -475,7 +475,8 @@ def c14_sawtooth(e: Evidence) -> Claim:
     return Claim(
         "C14",
         "The tip stress rises and drops repeatedly (a sawtooth)",
-        "figure 5b",
+        '"delamination can progress within a medial layer as stresses build up and then drop as the pool expands, '
+        'only to potentially build up again and repeat (figure 5)" (section 4, figure 5b)',
         _per_criterion(e, lambda c: ", ".join(f"{s:g} kPa {n} drops" for s, n in _sawtooth(e, c).items())),
         _yes(saw and all(n >= 2 for n in saw.values())),
         "at least two drops by > 10 % of sigma_cr in every single-pool run (default criterion)",
@@ -528,7 +529,8 @@ def c16_pairs_merge(e: Evidence) -> Claim:
     return Claim(
         "C16",
         "Two nearby pools grow and merge, and at merging their exterior growth exceeds their interior growth",
-        "figure 6",
+        '"The model predicts that the pools grow in both interior and exterior regions, though the rate of the '
+        'exterior growth is faster" (figure 6)',
         _per_criterion(e, text),
         _yes(ok) if len(pairs) else "n/a",
         "a pool pair merges and has more exterior than interior converted particles at the merge (default criterion)",
@@ -540,7 +542,8 @@ def c17_offset_pools_link(e: Evidence) -> Claim:
     return Claim(
         "C17",
         "Radially offset pools link up",
-        "figure 7",
+        '"the same mechanism underlies the extension and coalescence of two pools of GAGs with or without radial '
+        'offset" (section 3, figure 7)',
         _per_criterion(
             e,
             lambda c: ", ".join(

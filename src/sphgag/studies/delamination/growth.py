@@ -16,17 +16,20 @@ the fixed-charge concentration ``c`` is raised level by level to
 3. the level ends when a pass changes no ``D`` by more than ``damage_tolerance`` and
    ruptures nothing.
 
-**Snaps.** A damage pass whose new history cannot be reached along its transition, or a
-concentration step with no equilibrium on its path (after bisection), has lost
-equilibrium: the wall snaps. The run follows the snap to where the overdamped
-pseudo-dynamics come to rest (:mod:`sphgag.engine.snap`), records that state (converged below
-the tolerance, ``snap`` in growth.csv) and keeps growing from it at the same
-concentration. A run ends where a level arrests at the highest concentration
-(``arrested``), where the pools merge (``merged``), where a pool spans ``max_extent_deg``
-(``maximum extent``) or comes within the candidate window of a symmetry edge
-(``symmetry edge``), after ``max_passes`` (``pass limit``), or where a snap comes to rest at
-no equilibrium (``no stable state after a snap``, with the step and load): always at its
-last equilibrium.
+**Snaps and limit points.** A damage pass whose new history cannot be reached along its transition has lost
+equilibrium: the wall snaps. The run follows the snap to where the overdamped pseudo-dynamics come to rest
+(:mod:`sphgag.engine.snap`), records that state (converged below the tolerance, ``snap`` in growth.csv) and keeps
+growing from it at the same concentration. A concentration step with no equilibrium on its path is first followed
+by volume control with the damage frozen (:func:`sphgag.engine.pool_volume.continue_path`): if the concentration the
+pools hold has a maximum below the step's, the run ends at that ``limit point``; otherwise the state volume control
+reaches, or the snap, is the next state.
+
+**Stops** (:data:`sphgag.studies.delamination.tables.STOP_KINDS`, ``stop_kind`` in summary.csv): ``arrested`` (every
+level up to the ramp's end came to rest), ``merged``, ``unstable`` (growth at a fixed concentration did not arrest
+before a pool spanned ``max_extent_deg``, a cap on the run), ``edge`` (the candidate window of a symmetry edge),
+``layer`` (another layer or a free surface), ``limit point`` and ``numerical`` (a snap came to rest at no
+equilibrium, or ``max_passes`` ended growth); the run always ends at its last equilibrium. Then the concentrations of
+its events, onset, runaway and merge, are bisected between the ramp's levels (:meth:`GrowthRun.critical`).
 
 **Pseudo-time** is the number of damage-and-relax passes. The paper's normalised time
 is that of its explicit dynamics, in which every time step is one damage update with
@@ -124,6 +127,7 @@ class GrowthRun:
     snaps: int = 0
     snap_length: float = 0.0  # delaminated length gained through snaps [um]
     tip: float = np.nan  # largest onset measure of the current state (the last row's tip stress)
+    _snapping: str = ""  # the step whose snap is being followed (a concentration step or a damage pass)
     _front: tuple = ()  # (candidates, their pools, their onset measures) of the current state
 
     @property
@@ -321,6 +325,7 @@ class GrowthRun:
             load.material_value("concentration"),
             exc.reason,
         )
+        self._snapping = what
         state = snap.follow(self.model, self.state.x, load, **self.opts)
         self.snaps += 1
         return state
@@ -357,7 +362,7 @@ class GrowthRun:
             self.limit_c = exc.limit
             kind, what = "limit point", f"no equilibrium: {exc.reason}"
         except snap.NoStableState as exc:
-            kind, what = "numerical", f"no stable state after a snap in pass {self.step + 1} ({exc.reason})"
+            kind, what = "numerical", f"no stable state after the snap of {self._snapping} ({exc.reason})"
         self.model.set_props(self.material)
         return kind, what
 
