@@ -398,3 +398,15 @@ def test_a_stop_kind_must_be_a_known_one():
     assert delamination.Stop("edge", "x", 1.0).kind == "edge"
     with pytest.raises(ValueError, match="stop kind must be one of arrested, merged"):
         delamination.Stop("no stable state", "x", 1.0)
+
+
+def test_a_pool_that_grows_into_a_symmetry_edge_stops_there(ci_config, wall):
+    """The same unstable growth started 15 deg from the symmetry edge at 0 deg reaches the edge's candidate window
+    before the cap: the stop is ``edge``, and its level has a runaway concentration too."""
+    st = runaway_settings(ci_config, max_extent_deg=60.0)
+    _, result = grow(ci_config, wall, [sector(15.0)], st)
+    s = result.summary
+    assert s["stop_kind"] == "edge" and "symmetry edge" in s["stop"]
+    assert (
+        s["stop_level_mEq_l"] - st.concentration_step_mEq_l < s["runaway_concentration_mEq_l"] <= s["stop_level_mEq_l"]
+    )

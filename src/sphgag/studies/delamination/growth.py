@@ -529,8 +529,16 @@ def _reaches_onset(probe: GrowthRun, c: float) -> bool:
     return probe.next_history().begun
 
 
+#: a probe of the runaway concentration counts as runaway once growth at its concentration has taken a pool to this
+#: many times the largest extent at rest it started from (or to ``max_extent_deg``, the run's own cap, if smaller)
+PROBE_EXTENT_FACTOR = 2.0
+
+
 def _runs_away(probe: GrowthRun, c: float) -> bool:
-    """Growth from the probe's state at rest, at ``c``, does not arrest (or ``c`` has no equilibrium)."""
+    """Growth from the probe's state at rest, at ``c``, does not arrest (or ``c`` has no equilibrium): it merges,
+    reaches an edge or a layer, or takes a pool to :data:`PROBE_EXTENT_FACTOR` times its extent at rest."""
+    cap = min(probe.settings.max_extent_deg, PROBE_EXTENT_FACTOR * float(probe.front.extent_deg(probe.hist).max()))
+    probe.settings = dataclasses.replace(probe.settings, max_extent_deg=cap)
     return probe.settle_level(c)[0] != "arrested"
 
 

@@ -6,8 +6,9 @@ pools do at each level of the ramp (:func:`level_classes`, the delamination map)
 
 **Dissipated energy**: raising ``D`` at fixed deformation releases ``dD W_0 V`` (``W_0``
 the intact strain energy density of eq. 2.23, ``V`` the particle's reference area), per
-unit axial length; divided by the delaminated length it is an energy per unit
-delaminated area (J/m^2).
+unit axial length (``dissipated_energy_kPa_um2``, finite for every run: a sum over the particles whose D grew); divided
+by the delaminated length it is an energy per unit delaminated area (``dissipated_energy_J_m2``, J/m^2; NaN where
+nothing was delaminated: there is no area to divide by).
 """
 
 from __future__ import annotations
