@@ -203,7 +203,7 @@ rule delamination_gci:
     """The discretisation error of the onset, runaway and merge concentrations: observed order, extrapolated value and
     grid convergence index of the three finest spacings (Celik et al. 2008)."""
     input:
-        code=MODULES["studies/gci.py"],
+        code=SPHGAG,  # studies/gci.py and the delamination package it is read through
         convergence=rules.delamination_convergence.output[0],
     output:
         report(
