@@ -35,3 +35,24 @@ def test_equal_fine_values_have_no_error_and_bad_inputs_are_refused():
         gci.estimate([1, 2], [1.0, 2.0])
     with pytest.raises(ValueError, match="differ"):
         gci.estimate([1, 1, 2], [1.0, 2.0, 3.0])
+
+
+def test_the_delamination_gci_table_has_a_row_per_spacing_and_the_estimate_of_the_three_finest():
+    import pandas as pd
+
+    from sphgag.studies import delamination
+
+    dx = [4.0, 2.83, 2.0]
+    rows = [
+        dict(charge_law="prescribed", criterion="averaged", case="single", dx_um=h, onset_concentration_mEq_l=100 + h,
+             runaway_concentration_mEq_l=110 + 2 * h**2, merge_concentration_mEq_l=np.nan)
+        for h in dx
+    ]  # fmt: skip
+    table = delamination.gci_table(pd.DataFrame(rows))
+    assert list(table.columns) == delamination.GCI_COLUMNS
+    assert set(table.quantity) == {"onset_concentration_mEq_l", "runaway_concentration_mEq_l"}  # merge: never
+    onset = table[table.quantity == "onset_concentration_mEq_l"]
+    assert sorted(onset.dx_um) == sorted(dx) and onset.observed_order.iloc[0] == pytest.approx(1.0)
+    assert onset.extrapolated.iloc[0] == pytest.approx(100.0)
+    runaway = table[table.quantity == "runaway_concentration_mEq_l"]
+    assert runaway.observed_order.iloc[0] == pytest.approx(2.0) and runaway.extrapolated.iloc[0] == pytest.approx(110)
