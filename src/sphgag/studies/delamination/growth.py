@@ -128,6 +128,7 @@ class GrowthRun:
     snap_length: float = 0.0  # delaminated length gained through snaps [um]
     tip: float = np.nan  # largest onset measure of the current state (the last row's tip stress)
     _snapping: str = ""  # the step whose snap is being followed (a concentration step or a damage pass)
+    _rest_extent: float = np.nan  # the pools' largest angular extent at rest before the current level [deg]
     _front: tuple = ()  # (candidates, their pools, their onset measures) of the current state
 
     @property
@@ -335,6 +336,7 @@ class GrowthRun:
         of :data:`sphgag.studies.delamination.tables.STOP_KINDS` (``arrested`` where the level ends at rest) and what
         ended it. Raises :class:`LimitPoint` where ``c`` has no equilibrium and
         :class:`sphgag.engine.snap.NoStableState` where a snap comes to rest at none."""
+        self._rest_extent = float(self.front.extent_deg(self.hist).max())
         self.raise_concentration(c)
         self._record(first_of_level=True)
         while self.damage_pass():
@@ -363,6 +365,15 @@ class GrowthRun:
             kind, what = "limit point", f"no equilibrium: {exc.reason}"
         except snap.NoStableState as exc:
             kind, what = "numerical", f"no stable state after the snap of {self._snapping} ({exc.reason})"
+            extent = float(self.front.extent_deg(self.hist).max())
+            if extent >= RUNAWAY_EXTENT_FACTOR * self._rest_extent:  # the level had run away before the solver failed
+                kind, what = (
+                    "unstable",
+                    (
+                        f"growth at a fixed concentration did not arrest (a pool grew from {self._rest_extent:.3g} to "
+                        f"{extent:.3g} deg); then {what}"
+                    ),
+                )
         self.model.set_props(self.material)
         return kind, what
 
@@ -529,15 +540,16 @@ def _reaches_onset(probe: GrowthRun, c: float) -> bool:
     return probe.next_history().begun
 
 
-#: a probe of the runaway concentration counts as runaway once growth at its concentration has taken a pool to this
-#: many times the largest extent at rest it started from (or to ``max_extent_deg``, the run's own cap, if smaller)
-PROBE_EXTENT_FACTOR = 2.0
+#: growth at a fixed concentration has run away once it has taken a pool to this many times the largest extent at rest
+#: it started the level from: a probe of the runaway concentration stops there (or at ``max_extent_deg``, the run's own
+#: cap, if smaller), and a run whose level got that far before a snap came to rest at no equilibrium is ``unstable``
+RUNAWAY_EXTENT_FACTOR = 2.0
 
 
 def _runs_away(probe: GrowthRun, c: float) -> bool:
     """Growth from the probe's state at rest, at ``c``, does not arrest (or ``c`` has no equilibrium): it merges,
-    reaches an edge or a layer, or takes a pool to :data:`PROBE_EXTENT_FACTOR` times its extent at rest."""
-    cap = min(probe.settings.max_extent_deg, PROBE_EXTENT_FACTOR * float(probe.front.extent_deg(probe.hist).max()))
+    reaches an edge or a layer, or takes a pool to :data:`RUNAWAY_EXTENT_FACTOR` times its extent at rest."""
+    cap = min(probe.settings.max_extent_deg, RUNAWAY_EXTENT_FACTOR * float(probe.front.extent_deg(probe.hist).max()))
     probe.settings = dataclasses.replace(probe.settings, max_extent_deg=cap)
     return probe.settle_level(c)[0] != "arrested"
 
