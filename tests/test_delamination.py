@@ -7,9 +7,10 @@ import numpy as np
 import pytest
 from scipy.spatial import cKDTree
 
-from sphgag.engine import geometry
+from sphgag.engine import geometry, solver
 from sphgag.engine.history import DAMAGED, SEEDED, HistoryMaterial, ParticleHistory
 from sphgag.engine.loading import Load
+from sphgag.physics import materials
 from sphgag.records import state
 from sphgag.studies import artery, delamination, protocols
 
@@ -410,3 +411,36 @@ def test_a_pool_that_grows_into_a_symmetry_edge_stops_there(ci_config, wall):
     assert (
         s["stop_level_mEq_l"] - st.concentration_step_mEq_l < s["runaway_concentration_mEq_l"] <= s["stop_level_mEq_l"]
     )
+
+
+def test_a_pool_past_the_limit_point_of_its_frozen_state_ends_at_that_limit_point(ci_config):
+    """A long pool (12 deg) in a wall 90 times softer than the artery's (elastin alone, mu = 1 kPa, no pre-stretch,
+    0.05 mmHg in the lumen), no damage: the pool's contents are what holds it, and eq. (2.27) under a prescribed
+    Donnan pressure has a largest pressure, where ``mu_g (1 - 1/J) + lam_g ln J / J`` peaks (ln J = 1 + mu_g/lam_g).
+    Raising the concentration past it, volume control finds the maximum concentration the pool holds, and the run
+    ends at that ``limit point``: between the contents' own limit (the closed form) and 2 mEq/l above it (what the
+    soft wall adds), between the last level reached and the first that was not."""
+    bl = dict(ci_config["bilayer"], elastin_shear_modulus_kPa=1.0, lame_lambda_kPa=100.0, hourglass_modulus_kPa=1.0)
+    bl["prestretch"] = dict(bl["prestretch"], elastin_circumferential=1.0, elastin_axial=1.0, smc=1.0, collagen=1.0)
+    bl["mass_fractions"] = {
+        "media": {"elastin": 1.0, "smc": 0.0, "collagen": 0.0},
+        "adventitia": {"elastin": 1.0, "collagen": 0.0},
+    }
+    gag = dict(law_gag(ci_config, "prescribed"), hourglass_modulus_kPa=1.0)
+    numerics = ci_config["numerics"]
+    model = artery.bilayer_model(bl, numerics, name="test-limit-point")
+    home = protocols.homeostasis(model, numerics, ci_config["homeostasis"])
+    start = protocols.pressurise(model, home.state, 0.05, numerics)
+    st = settings(ci_config, critical_stress_kPa=1e6, max_concentration_mEq_l=40.0, concentration_step_mEq_l=10.0)
+    result = delamination.grow(
+        model, solver.State(start.load, start.x, None, None), [sector(45.0, 12.0)], st, numerics, gag, model.props
+    )
+    s = result.summary
+    assert s["stop_kind"] == "limit point" and s["stop_level_mEq_l"] == 40.0, s["stop"]
+    mu, lam = gag["shear_modulus_kPa"], gag["lame_lambda_kPa"]
+    J = np.exp(1.0 + mu / lam)
+    own = materials.concentration_for_pressure(
+        mu * (1 - 1 / J) + lam * np.log(J) / J, gag["bath_concentration_mEq_l"], gag["temperature_K"]
+    )
+    assert own < s["limit_concentration_mEq_l"] < own + 2.0 and 30.0 <= s["limit_concentration_mEq_l"] < 40.0
+    assert result.growth.concentration_mEq_l.max() == 30.0 and s["final_length_um"] == 0.0
