@@ -56,3 +56,11 @@ def test_the_delamination_gci_table_has_a_row_per_spacing_and_the_estimate_of_th
     assert onset.extrapolated.iloc[0] == pytest.approx(100.0)
     runaway = table[table.quantity == "runaway_concentration_mEq_l"]
     assert runaway.observed_order.iloc[0] == pytest.approx(2.0) and runaway.extrapolated.iloc[0] == pytest.approx(110)
+
+
+def test_values_whose_differences_grow_with_refinement_have_no_order():
+    """The onset concentrations 116.7, 108.3 and 95.5 mEq/l at dx = 4, 2.83 and 2 um differ more between the finer
+    pair: eq. 3 with absolute values would report a positive order; there is none."""
+    e = gci.estimate([4.0, 2.83, 2.0], [116.72, 108.28, 95.47])
+    assert e.diverging and np.isnan(e.order) and np.isnan(e.extrapolated) and np.isnan(e.gci_fine)
+    assert not gci.estimate([4.0, 2.83, 2.0], [100 + 4.0, 100 + 2.83, 100 + 2.0]).diverging

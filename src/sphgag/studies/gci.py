@@ -10,7 +10,10 @@ With spacings ``h1 < h2 < h3`` (fine, medium, coarse), ratios ``r21 = h2/h1`` an
 with ``eps32 = phi3 - phi2``, ``eps21 = phi2 - phi1`` and ``s = sign(eps32 / eps21)`` (``s < 0``: oscillatory
 convergence), by fixed-point iteration. The extrapolated value is ``phi_ext = (r21^p phi1 - phi2) / (r21^p - 1)``
 (eq. 6), the relative error ``e21 = |(phi1 - phi2) / phi1|`` and the fine-grid convergence index
-``GCI21 = 1.25 e21 / (r21^p - 1)`` (eq. 8; the safety factor of three grids).
+``GCI21 = 1.25 e21 / (r21^p - 1)`` (eq. 8; the safety factor of three grids). Where monotone values have
+``|eps32 / eps21| <= ln r32 / ln r21`` (the limit of ``phi0 + C h^p`` as p -> 0: the finer pair differs too much),
+no positive order fits them: they are not in their asymptotic range, and no order is reported (``diverging``),
+rather than the positive order the absolute values of eq. 3 would give.
 """
 
 from __future__ import annotations
@@ -33,6 +36,7 @@ class Estimate:
     extrapolated: float
     gci_fine: float
     oscillatory: bool = False
+    diverging: bool = False  # the finer pair differs more than the coarser one: the values do not converge (yet)
 
     def spacing_for(self, gci: float) -> float:
         """The spacing at which the observed order says the fine-grid convergence index would be ``gci``."""
@@ -60,6 +64,10 @@ def estimate(spacings, values, max_iter: int = 200, tol: float = 1e-12) -> Estim
     if eps32 == 0.0:
         return Estimate(h1, phi1, np.nan, np.nan, np.nan)
     s = float(np.sign(eps32 / eps21))
+    # phi = phi0 + C h^p with p > 0 has |eps32 / eps21| > ln r32 / ln r21 (its limit as p -> 0): below that the
+    # differences do not shrink with the spacing as any positive order makes them
+    if s > 0 and abs(eps32 / eps21) <= np.log(r32) / np.log(r21):
+        return Estimate(h1, phi1, np.nan, np.nan, np.nan, False, diverging=True)
     p = abs(np.log(abs(eps32 / eps21))) / np.log(r21)
     for _ in range(max_iter):
         a, b = r21**p - s, r32**p - s
