@@ -212,7 +212,13 @@ def test_pool_sets_with_any_name_are_valid(ci_config):
     de["pool_sets"]["alone"] = de["pool_sets"].pop("single")
     de["pool_sets"]["extra"] = de["pool_sets"]["high_separation"]
     de["figures"] = dict(fig5="alone", fig6=["pair_2deg", "high_separation"], fig7="radial_offset")
+    de["convergence"]["pool_sets"] = ["alone", "pair_2deg"]
     config.validate(cfg, SCHEMA)
+
+
+def test_a_resolution_set_that_is_not_a_pool_set_is_rejected_by_name(ci_config):
+    message = bad(ci_config, ["delamination", "convergence", "pool_sets"], ["single", "pair_2deg"])
+    assert "delamination.convergence.pool_sets[1] = 'pair_2deg' is not a pool set of delamination.pool_sets" in message
 
 
 def test_figure_5s_set_is_checked_at_the_resolution_studys_spacings(ci_config):

@@ -739,6 +739,7 @@ def renamed(ci_config, old="low_separation", new="pair_2deg"):
     de["figures"] = {
         k: [new if n == old else n for n in v] if isinstance(v, list) else v for k, v in de["figures"].items()
     }
+    de["convergence"]["pool_sets"] = [new if n == old else n for n in de["convergence"]["pool_sets"]]
     return cfg
 
 

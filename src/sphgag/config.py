@@ -331,8 +331,9 @@ def _pool_span(bil: dict, lo: float, hi: float) -> str | None:
 
 
 def _pool_set_roles(de: dict) -> list[str]:
-    """Every figure's pool set (``delamination.figures``) exists in ``delamination.pool_sets``, and a set that figures
-    6-7 share with figure 5 is run at their sigma_cr (figure 5's set runs at ``critical_stresses_kPa`` only)."""
+    """Every figure's pool set (``delamination.figures``) and every set of the resolution study
+    (``delamination.convergence.pool_sets``) exists in ``delamination.pool_sets``, and a set that figures 6-7 share
+    with figure 5 is run at their sigma_cr (figure 5's set runs at ``critical_stresses_kPa`` only)."""
     out, sets = [], de.get("pool_sets", {})
     fig5 = de.get("figures", {}).get("fig5")
     for role, names in de.get("figures", {}).items():
@@ -349,6 +350,12 @@ def _pool_set_roles(de: dict) -> list[str]:
                     f"delamination.critical_stresses_kPa = {de['critical_stresses_kPa']}, not at "
                     f"delamination.critical_stress_kPa = {de['critical_stress_kPa']}: give the figure a set of its own"
                 )
+    for k, name in enumerate(de.get("convergence", {}).get("pool_sets", [])):
+        if name not in sets:
+            out.append(
+                f"delamination.convergence.pool_sets[{k}] = {name!r} is not a pool set of delamination.pool_sets "
+                f"({', '.join(sets)}): the resolution study would have no such set to grow"
+            )
     return out
 
 

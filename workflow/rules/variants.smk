@@ -38,7 +38,7 @@ rule variant:
             DE_SETTINGS,
             **{k: DE[k] for k in ("pressure_mmHg", "critical_stress_kPa", "criteria", "pool_sets", "figures")},
         ),
-        gag=GAG[PAPER_LAW],
+        gag=canonical(law_gag(config["gag"], PAPER_LAW)),  # the paper's law, whether or not the study runs it
     script:
         "../scripts/variant.py"
 
