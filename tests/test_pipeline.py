@@ -895,7 +895,9 @@ HEAVY = {
     "animation",
 }
 PAPER = {"fig1", "fig3a_mean", "fig3b", "fig3", "fig4", "fig5", "fig6", "fig7", "verification_pool_figure", "claims"}
-TARGET_RULES = ("all", "resolution", "verification", "fracture_energy", "sensitivity", "views", "everything")
+TARGET_RULES = (
+    "all", "resolution", "verification", "fracture_energy", "sensitivity", "variants", "views", "everything"
+)  # fmt: skip
 
 
 def planned(out: str) -> set:
@@ -944,7 +946,8 @@ def test_everything_plans_every_job_the_configuration_defines(fresh_copy):
         (  # a delamination key: which onset measures run; the other measure's runs and every study that reads only
             # the default measure stay
             lambda cfg: cfg["delamination"].update(criteria=["averaged"]),
-            {"delamination_growth", "delamination_summary", "delamination_convergence", "fig5", "fig6", "fig7"},
+            {"delamination_growth", "delamination_summary", "delamination_convergence", "delamination_gci"}
+            | {"fig5", "fig6", "fig7"},
         ),
         (  # a swelling key: the steps of the pools' conversion; read by the swelling runs (figure 4, the resolution
             # study, the sensitivity samples) and the measurements that check their states, not by the delamination
@@ -952,7 +955,7 @@ def test_everything_plans_every_job_the_configuration_defines(fresh_copy):
             {"swell", "pool_stresses", "tip_stress", "fig4", "paraview_swelling", "swelling_convergence_dx"}
             | {"swelling_convergence_stresses", "swelling_convergence", "swelling_convergence_figure"}
             | {"sensitivity_batch", "sensitivity_method", "sobol_design", "sensitivity_tables", "sensitivity_figure"}
-            | {"delamination_map_figure"},
+            | {"delamination_map_figure", "variant", "variants_figure"},
         ),
         (  # a sensitivity key: the bootstrap of the Sobol intervals; read by the Sobol indices alone
             lambda cfg: cfg["sensitivity"]["sobol"].update(resamples=50),

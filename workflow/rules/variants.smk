@@ -33,10 +33,15 @@ rule variant:
         bilayer=config["bilayer"],
         numerics=lambda wildcards: dict(config["numerics"], hourglass=wildcards.form),
         homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
-        swelling=config["swelling"],
+        # figure 4's first pool and figure 5's pool, with what their runs read (not every case, set or figure role)
+        swelling=dict(SWELL_SETTINGS, probe_length_um=SW["probe_length_um"], case=CASES[0], pool=SW["cases"][CASES[0]]),
         delamination=dict(
             DE_SETTINGS,
-            **{k: DE[k] for k in ("pressure_mmHg", "critical_stress_kPa", "criteria", "pool_sets", "figures")},
+            pressure_mmHg=DE["pressure_mmHg"],
+            critical_stress_kPa=DE["critical_stress_kPa"],
+            criterion=DE["criteria"][0],
+            case=FIG5_SET,
+            pools=DE["pool_sets"][FIG5_SET],
         ),
         gag=canonical(law_gag(config["gag"], PAPER_LAW)),  # the paper's law, whether or not the study runs it
     script:

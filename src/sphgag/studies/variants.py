@@ -37,28 +37,21 @@ def run_variant(
     gag: dict,
     name: str = "variant",
 ) -> Variant:
-    """Figure 4's first pool and figure 5's pool (``de["figures"]["fig5"]``) at the numerics ``numerics``, from a
-    wall of their own at ``de["pressure_mmHg"]`` (also the pressure figure 4's pool is swollen at here)."""
+    """Figure 4's first pool (``swelling``: the swelling settings with ``case`` and its ``pool``) and figure 5's pool
+    set (``de``: the run settings with ``case``, its ``pools``, ``critical_stress_kPa`` and the default ``criterion``)
+    at the numerics ``numerics``, from a wall of their own at ``de["pressure_mmHg"]`` (also the pressure figure 4's
+    pool is swollen at here)."""
     _, start = protocols.pressurised_wall(bilayer, numerics, homeostasis, de["pressure_mmHg"], name)
-    case, spec = next(iter(swelling["cases"].items()))
-    pool = artery.pool_sector(spec)
+    pool = artery.pool_sector(swelling["pool"])
     model = artery.bilayer_model(bilayer, numerics, name=f"{name}_swell", pool=pool, gag=gag)
-    settings = {k: v for k, v in swelling.items() if k not in ("cases", "models", "pool_models", "pressures_mmHg")}
+    settings = {k: v for k, v in swelling.items() if k not in ("case", "pool", "probe_length_um")}
     states = protocols.swell_pool(model, start, numerics, dict(settings, pool_model="particles"))
     table = protocols.pool_table(model, states, pool, swelling["probe_length_um"], gag)
-    table.insert(0, "case", case)
-    fig5 = de["figures"]["fig5"]
-    st = delamination.Settings.from_config(de, de["critical_stress_kPa"], de["criteria"][0])
+    table.insert(0, "case", swelling["case"])
+    st = delamination.Settings.from_config(de, de["critical_stress_kPa"], de["criterion"])
     grower: Model = artery.bilayer_model(bilayer, numerics, name=f"{name}_grow")
     result = delamination.grow(
-        grower,
-        start,
-        [artery.pool_sector(s) for s in de["pool_sets"][fig5]],
-        st,
-        numerics,
-        gag,
-        grower.props,
-        run=f"{name}_grow",
+        grower, start, [artery.pool_sector(s) for s in de["pools"]], st, numerics, gag, grower.props, run=f"{name}_grow"
     )
-    growth, summary = delamination.labelled(result, fig5, st, bilayer["dx_um"])
+    growth, summary = delamination.labelled(result, de["case"], st, bilayer["dx_um"])
     return Variant(table, growth, summary)
