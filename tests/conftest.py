@@ -106,6 +106,14 @@ def coarse_mean_model(ci_config):
     return artery.mean_model(ci_config["mean"], ci_config["numerics"], name="test-mean")
 
 
+@pytest.fixture(scope="session")
+def printed_mean_model(ci_config):
+    """The same model with eq. (2.14) as printed (``numerics.hourglass: paper``): the tests of the directed pair
+    formula compare the kernel with it entry by entry."""
+    numerics = dict(ci_config["numerics"], hourglass="paper")
+    return artery.mean_model(ci_config["mean"], numerics, name="test-mean-printed")
+
+
 def lattice(n=14, spacing=1.0):
     """A free square patch of particles on a uniform lattice (for patch tests)."""
     g = np.arange(n) * spacing

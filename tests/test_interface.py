@@ -25,9 +25,10 @@ def with_gag(model, rows, partial=(), fixed_charge=None):
 
 
 @pytest.fixture
-def gag_mean_model(coarse_mean_model):
-    """The coarse mean model with a GAG band (conserved fixed charge) and a half-converted rim."""
-    m = coarse_mean_model
+def gag_mean_model(printed_mean_model):
+    """The coarse mean model (eq. 2.14 as printed: the directed pair formula these tests check) with a GAG band
+    (conserved fixed charge) and a half-converted rim."""
+    m = printed_mean_model
     r = np.linalg.norm(m.layout.X, axis=1)
     band = np.flatnonzero((r > 370) & (r < 400) & (m.layout.theta < 0.6))
     rim = np.flatnonzero((r > 355) & (r < 415) & (m.layout.theta < 0.7) & ~np.isin(np.arange(m.n), band))

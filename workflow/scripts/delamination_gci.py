@@ -2,10 +2,12 @@
 
 import pandas as pd
 
+from sphgag import threads
 from sphgag.records import runlog
 from sphgag.studies import delamination
 
 sm = snakemake  # noqa: F821
+threads.use(sm.threads)
 with runlog.run("delamination_gci", sm.log[0]) as log:
     table = delamination.gci_table(pd.read_csv(sm.input.convergence))
     table.to_csv(sm.output[0], index=False)
