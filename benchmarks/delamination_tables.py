@@ -1,6 +1,6 @@
 """The README's delamination numbers, generated from a finished run's tables (nothing typed by hand).
 
-Reads ``results/delamination/summary.csv`` (figures 5-7, every charge law and onset measure), and, where they exist,
+Reads, where they exist, ``results/delamination/summary.csv`` (figures 5-7, every charge law and onset measure),
 ``results/delamination/gci.csv`` (the resolution study's event concentrations with their uncertainty) and
 ``results/variants/hourglass_*_summary.csv`` (target ``variants``), and writes each as a Markdown table between the
 README's markers ``<!-- delamination-runs -->``, ``<!-- delamination-gci -->`` and ``<!-- hourglass-variants -->``.
@@ -18,11 +18,17 @@ import numpy as np
 import pandas as pd
 from rule_resources import replace_block
 
+from sphgag.studies import gci
+
 ROOT = Path(__file__).resolve().parents[1]
 
 
 def _c(value: float) -> str:
     return f"{value:.1f}" if np.isfinite(value) else "-"
+
+
+def _um(value: float) -> str:
+    return f"{value:.2g} um" if np.isfinite(value) else "-"
 
 
 def runs_table(summary: pd.DataFrame) -> str:
@@ -43,24 +49,34 @@ def runs_table(summary: pd.DataFrame) -> str:
     return "\n".join(rows)
 
 
-def gci_table(gci: pd.DataFrame) -> str:
+def gci_table(table: pd.DataFrame) -> str:
     """Per event concentration: its value at every spacing, the observed order, the extrapolated value and the GCI."""
-    spacings = sorted(gci.dx_um.unique(), reverse=True)
+    spacings = sorted(table.dx_um.unique(), reverse=True)
     head = (
         "| law | onset measure | pool set | quantity | "
         + " | ".join(f"dx = {dx:g} um" for dx in spacings)
-        + " | observed order | extrapolated | GCI (finest) |"
+        + " | observed order | extrapolated | GCI (finest) | spacing for a GCI of 10 % |"
     )
-    rows = [head, "|" + " --- |" * (7 + len(spacings))]
-    for (law, criterion, case, quantity), g in gci.groupby(["charge_law", "criterion", "case", "quantity"], sort=False):
+    rows = [head, "|" + " --- |" * (8 + len(spacings))]
+    groups = table.groupby(["charge_law", "criterion", "case", "quantity"], sort=False)
+    for (law, criterion, case, quantity), g in groups:
         values = g.set_index("dx_um").value
         first = g.iloc[0]
         cells = " | ".join(_c(values.get(dx, np.nan)) for dx in spacings)
+        finest = values.sort_index().iloc[:3]
+        e = gci.estimate(finest.index, finest.to_numpy()) if len(finest) == 3 else None
         order = f"{first.observed_order:.2f}" if np.isfinite(first.observed_order) else "-"
+        if e is not None and e.diverging:
+            order = "none: the differences grow"
+        elif e is not None and e.oscillatory and np.isfinite(first.observed_order):
+            order += " (oscillating)"
         gci_fine = f"{100 * first.gci_fine:.1f} %" if np.isfinite(first.gci_fine) else "-"
         name = quantity.removesuffix("_concentration_mEq_l")
+        target = e.spacing_for(0.1) if e is not None and not e.diverging else np.nan
+        target = "reached" if np.isfinite(first.gci_fine) and first.gci_fine <= 0.1 else _um(target)
         rows.append(
-            f"| {law} | {criterion} | {case} | {name} | {cells} | {order} | {_c(first.extrapolated)} | {gci_fine} |"
+            f"| {law} | {criterion} | {case} | {name} | {cells} | {order} | {_c(first.extrapolated)} | {gci_fine} | "
+            f"{target} |"
         )
     return "\n".join(rows)
 
@@ -78,10 +94,13 @@ def variants_table(summary: pd.DataFrame) -> str:
 
 def blocks(results: Path) -> dict[str, str]:
     """The tables that this run's results give, by the name of their README markers."""
-    out = {"delamination-runs": runs_table(pd.read_csv(results / "delamination" / "summary.csv"))}
-    gci = results / "delamination" / "gci.csv"
-    if gci.exists():
-        out["delamination-gci"] = gci_table(pd.read_csv(gci))
+    out = {}
+    summary = results / "delamination" / "summary.csv"
+    if summary.exists():
+        out["delamination-runs"] = runs_table(pd.read_csv(summary))
+    uncertainty = results / "delamination" / "gci.csv"
+    if uncertainty.exists():
+        out["delamination-gci"] = gci_table(pd.read_csv(uncertainty))
     variants = sorted((results / "variants").glob("hourglass_*_summary.csv"))
     if variants:
         out["hourglass-variants"] = variants_table(pd.concat([pd.read_csv(p) for p in variants], ignore_index=True))
