@@ -441,8 +441,8 @@ class GrowthRun:
             solver.factorisation_cache(self.model).reset()
             if happens(probe, c):
                 hi = c
-            else:
-                lo, below = c, probe
+            else:  # the next probes start from this one, with the run's own settings (a probe may narrow its cap)
+                lo, below = c, dataclasses.replace(probe, settings=self.settings)
         log.info(
             "[%s] %s concentration %.2f mEq/l (between %.2f and %.2f)", self.run_name, what, 0.5 * (lo + hi), lo, hi
         )
