@@ -441,8 +441,8 @@ class GrowthRun:
             solver.factorisation_cache(self.model).reset()
             if happens(probe, c):
                 hi = c
-            else:  # the next probes start from this one, with the run's own settings (a probe may narrow its cap)
-                lo, below = c, dataclasses.replace(probe, settings=self.settings)
+            else:
+                lo, below = c, probe
         log.info(
             "[%s] %s concentration %.2f mEq/l (between %.2f and %.2f)", self.run_name, what, 0.5 * (lo + hi), lo, hi
         )
@@ -549,9 +549,13 @@ RUNAWAY_EXTENT_FACTOR = 2.0
 def _runs_away(probe: GrowthRun, c: float) -> bool:
     """Growth from the probe's state at rest, at ``c``, does not arrest (or ``c`` has no equilibrium): it merges,
     reaches an edge or a layer, or takes a pool to :data:`RUNAWAY_EXTENT_FACTOR` times its extent at rest."""
-    cap = min(probe.settings.max_extent_deg, RUNAWAY_EXTENT_FACTOR * float(probe.front.extent_deg(probe.hist).max()))
-    probe.settings = dataclasses.replace(probe.settings, max_extent_deg=cap)
-    return probe.settle_level(c)[0] != "arrested"
+    settings = probe.settings
+    cap = min(settings.max_extent_deg, RUNAWAY_EXTENT_FACTOR * float(probe.front.extent_deg(probe.hist).max()))
+    probe.settings = dataclasses.replace(settings, max_extent_deg=cap)
+    try:
+        return probe.settle_level(c)[0] != "arrested"
+    finally:  # a probe that arrests is where the next probes start, with the run's own cap
+        probe.settings = settings
 
 
 def grow(
