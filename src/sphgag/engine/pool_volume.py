@@ -53,10 +53,12 @@ class VolumeState:
     load: Load
     volume: float  # pool volume per unit axial length [um^2]
     convergence: solver.Convergence
+    parameter: str = "concentration"  # the load's material value that holds the volume
 
     @property
     def concentration(self) -> float:
-        return float(self.load.material_value("concentration"))
+        """The value of the controlling parameter (the concentration, or a prescribed swelling pressure)."""
+        return float(self.load.material_value(self.parameter))
 
 
 @dataclass
@@ -117,23 +119,52 @@ class CavityVolume:
         return g
 
 
-def _at(load: Load, c: float) -> Load:
-    return load.with_material(concentration=float(c))
+LABELS = {"concentration": ("c", "mEq/l"), "swelling_pressure": ("Pi", "kPa")}  # the parameter as the log names it
 
 
-def concentration_slope(model: Model, x: np.ndarray, load: Load, h: float = 1e-3) -> np.ndarray:
-    """``dr/dc`` by a central difference (``h`` in mEq/l)."""
-    c = float(load.material_value("concentration"))
-    up = model.evaluate(x, _at(load, c + h)).residual_vector
-    down = model.evaluate(x, _at(load, max(c - h, 0.0))).residual_vector
+def _at(load: Load, c: float, parameter: str = "concentration") -> Load:
+    return load.with_material(**{parameter: float(c)})
+
+
+def concentration_slope(
+    model: Model, x: np.ndarray, load: Load, h: float = 1e-3, parameter: str = "concentration"
+) -> np.ndarray:
+    """``dr/dc`` by a central difference (``h`` in the parameter's unit: mEq/l, or kPa for a swelling pressure)."""
+    c = float(load.material_value(parameter))
+    up = model.evaluate(x, _at(load, c + h, parameter)).residual_vector
+    down = model.evaluate(x, _at(load, max(c - h, 0.0), parameter)).residual_vector
     return (up - down) / (c + h - max(c - h, 0.0))
 
 
+def _admissible(ev) -> bool:
+    return bool(ev.min_det > 0.0 and ev.finite)
+
+
+def _bordered_step(model: Model, pool, ev, target: float, parameter: str, run: str) -> tuple[np.ndarray, float]:
+    """The Newton step ``(dx, dc)`` of the bordered system at the evaluation ``ev`` (module docstring)."""
+    x, load = ev.x, ev.load
+    fac = solver.factorise(model, ev, model.jacobian(ev), 0.0, run)
+    a = -fac.step(ev).ravel()  # K^-1 r
+    b = fac.solve(concentration_slope(model, x, load, parameter=parameter).ravel())
+    g = pool.gradient(x, load).ravel()
+    dc = ((pool(ev) - target) - g @ a) / (g @ b)
+    return (-a - b * dc).reshape(-1, 2), float(dc)
+
+
 def solve_at_volume(
-    model: Model, pool: PoolVolume, x0: np.ndarray, load0: Load, target: float, tol: float, max_iter: int, run: str
+    model: Model,
+    pool: PoolVolume,
+    x0: np.ndarray,
+    load0: Load,
+    target: float,
+    tol: float,
+    max_iter: int,
+    run: str,
+    parameter: str = "concentration",
 ) -> VolumeState:
-    """The equilibrium whose pool volume is ``target``, with the concentration as the unknown (bordered Newton with a
-    backtracking line search on the residual and the volume error)."""
+    """The equilibrium whose pool volume is ``target``, with the concentration (or the load's material value
+    ``parameter``, e.g. a prescribed ``swelling_pressure``) as the unknown (bordered Newton with a backtracking line
+    search on the residual and the volume error, and a watchdog step: :func:`_bordered_step`)."""
     x, load = x0.copy(), load0
     ev = model.evaluate(x, load)
     solver.check(model, ev, run)
@@ -147,29 +178,33 @@ def solve_at_volume(
         rel = solver.relative_residual(model, ev)
         err = (pool(ev) - target) / target
         if rel < tol and abs(err) < 1e-8:
-            return VolumeState(x, load, pool(ev), solver.Convergence(rel, it, n_eval, n_jac, 0.0))
+            return VolumeState(x, load, pool(ev), solver.Convergence(rel, it, n_eval, n_jac, 0.0), parameter)
         if it == max_iter:
             break
         if merit(ev) < 0.5 * progress[0]:
             progress = (merit(ev), it)
         elif it - progress[1] >= solver.STALL_ITERATIONS:
             raise solver.NotConverged(run, load, f"volume control stagnated (residual {rel:.3g})")
-        fac = solver.factorise(model, ev, model.jacobian(ev), 0.0, run)
-        n_jac += 1
-        a = -fac.step(ev).ravel()  # K^-1 r
-        b = fac.solve(concentration_slope(model, x, load).ravel())
-        g = pool.gradient(x, load).ravel()
-        n_eval += 3
-        dc = ((pool(ev) - target) - g @ a) / (g @ b)
-        dx = (-a - b * dc).reshape(-1, 2)
+        dx, dc = _bordered_step(model, pool, ev, target, parameter, run)
+        n_jac, n_eval = n_jac + 1, n_eval + 3
         m0, step = merit(ev), 1.0
-        c = float(load.material_value("concentration"))
+        c = float(load.material_value(parameter))
         while step > 1e-4:
-            trial_load = _at(load, max(c + step * dc, 0.0))
+            trial_load = _at(load, max(c + step * dc, 0.0), parameter)
             trial = model.evaluate(x + step * dx, trial_load)
             n_eval += 1
-            if trial.min_det > 0.0 and trial.finite and merit(trial) < (1.0 - 1e-4 * step) * m0:
+            if _admissible(trial) and merit(trial) < (1.0 - 1e-4 * step) * m0:
                 break
+            if step == 1.0 and _admissible(trial):
+                # watchdog (Chamberlain et al. 1982): where the path bends, a full step can raise the merit that the
+                # next full step brings below where it started; take both then, else backtrack from here
+                dx2, dc2 = _bordered_step(model, pool, trial, target, parameter, run)
+                second_load = _at(trial_load, max(c + dc + dc2, 0.0), parameter)
+                second = model.evaluate(trial.x + dx2, second_load)
+                n_jac, n_eval = n_jac + 1, n_eval + 4
+                if _admissible(second) and merit(second) < (1.0 - 1e-4) * m0:
+                    trial, trial_load = second, second_load
+                    break
             step *= 0.5
         else:
             raise solver.NotConverged(run, load, f"volume control: line search failed (residual {rel:.3g})")
@@ -187,6 +222,7 @@ def continue_path(
     growth: float = 0.05,
     max_ratio: float = 100.0,
     min_growth: float = 1e-3,
+    parameter: str = "concentration",
     **options,
 ) -> tuple[Path, list[solver.State]]:
     """Trace the pool's path from the converged state ``last`` with its volume as the control.
@@ -195,7 +231,8 @@ def continue_path(
     ``c`` passes one of ``targets`` (concentrations the concentration-controlled path could not reach) while it
     rises, the state at exactly that concentration is solved by concentration control from the bracketing state
     and returned too. Stops at a limit point, when the targets are done, when the volume reaches ``max_ratio``
-    times the pool's reference volume, or where volume control fails. ``options``: the solver options of the path
+    times the pool's reference volume, or where volume control fails. ``parameter``: the load's material value that
+    plays ``c`` (``concentration``, or ``swelling_pressure`` for a prescribed pressure). ``options``: the solver options of the path
     (:class:`sphgag.engine.solver.PathOptions`; Newton's ``tol`` and ``max_iter`` are used); an option they do not
     know raises ``ValueError`` naming it.
     """
@@ -206,48 +243,52 @@ def continue_path(
     reference = float(np.sum(pool.V))
     states, reached = [], []
     x, load = last.x, last.load
-    c = float(load.material_value("concentration"))
+    name, unit = LABELS[parameter]
+    c = float(load.material_value(parameter))
     volume = pool(last.evaluation if last.evaluation is not None else model.evaluate(x, load))
     todo = sorted(t for t in targets if t > c)
     points = [(volume, c)]
     step = growth
     while todo:
         if volume / reference > max_ratio:
-            return Path(states, "no equilibrium", np.nan, f"the pool reached {max_ratio:g} times its volume"), reached
+            reason = f"the pool reached {max_ratio:g} times its volume, {name} = {c:.4g} {unit} still rising"
+            return Path(states, "no equilibrium", np.nan, reason), reached
         try:
-            s = solve_at_volume(model, pool, x, load, volume * (1.0 + step), tol, max_iter, run)
+            s = solve_at_volume(model, pool, x, load, volume * (1.0 + step), tol, max_iter, run, parameter)
         except solver.SimulationError as exc:
             step *= 0.5
             if step < min_growth:
                 reason = (
-                    f"volume control stops at c = {c:.4g} mEq/l, pool volume {volume / reference:.3g} times its "
-                    f"reference, c still rising ({exc.reason})"
+                    f"volume control stops at {name} = {c:.4g} {unit}, pool volume {volume / reference:.3g} times its "
+                    f"reference, {name} still rising ({exc.reason})"
                 )
                 return Path(states, "no equilibrium", np.nan, reason), reached
             continue
         states.append(s)
         log.info(
-            "[%s] volume control: pool at %.3g times its reference volume holds c = %.4g mEq/l (residual %.2e)",
+            "[%s] volume control: pool at %.3g times its reference volume holds %s = %.4g %s (residual %.2e)",
             run,
             s.volume / reference,
+            name,
             s.concentration,
+            unit,
             s.convergence.residual,
         )
         points.append((s.volume, s.concentration))
         if s.concentration < c:  # past the largest concentration: a limit point
             c_lim = _limit(points)
-            log.info("[%s] limit point of the pool's pressure-volume path at c = %.4g mEq/l", run, c_lim)
-            return Path(states, "limit point", c_lim, f"limit point at c = {c_lim:.4g} mEq/l"), reached
+            log.info("[%s] limit point of the pool's pressure-volume path at %s = %.4g %s", run, name, c_lim, unit)
+            return Path(states, "limit point", c_lim, f"limit point at {name} = {c_lim:.4g} {unit}"), reached
         while todo and s.concentration >= todo[0]:
-            target = _at(s.load, todo.pop(0))
+            target = _at(s.load, todo.pop(0), parameter)
             try:
                 reached.append(
                     solver.follow_path(model, s.x, s.load, [target], tol=tol, max_iter=max_iter, run=run)[-1]
                 )
             except solver.SimulationError as exc:
                 reason = (
-                    f"c = {s.concentration:.4g} mEq/l was held at volume control, but concentration control from "
-                    f"there does not reach c = {target.material_value('concentration'):g} mEq/l ({exc.reason})"
+                    f"{name} = {s.concentration:.4g} {unit} was held at volume control, but load control from "
+                    f"there does not reach {name} = {target.material_value(parameter):g} {unit} ({exc.reason})"
                 )
                 return Path(states, "no equilibrium", np.nan, reason), reached
         x, load, c, volume = s.x, s.load, s.concentration, s.volume
