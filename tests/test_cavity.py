@@ -80,6 +80,38 @@ def test_field_is_in_equilibrium_with_free_outer_surface_and_continuous_traction
         assert pool.swelling_kPa < pi
 
 
+@pytest.mark.parametrize("ratio", [2.0, 4.0])
+def test_hole_in_a_nearly_incompressible_annulus_is_the_closed_form(ratio):
+    # an empty hole (no contents) in lam = 1e4 mu: the incompressible closed form to the compressibility's O(mu/lam)
+    m, hole, B = cavity.Solid(1.0, 1e4), cavity.Solid(0.0), ratio * A
+    for J in (2.0, 5.0, 20.0, 100.0):
+        p = cavity.pressure_for_volume_ratio(J, A, B, m, hole)
+        np.testing.assert_allclose(p, cavity.annulus_pressure_incompressible(np.sqrt(J), A, B, 1.0), rtol=2e-3)
+
+
+def test_incompressible_annulus_saturates_at_mu_ln_B_over_A():
+    la = np.geomspace(1.01, 1e4, 200)
+    p = cavity.annulus_pressure_incompressible(la, A, 3.0 * A, 2.0)
+    assert np.all(np.diff(p) > 0) and np.all(p < 2.0 * np.log(3.0))
+    assert p[-1] == pytest.approx(2.0 * np.log(3.0), rel=1e-7)
+
+
+@pytest.mark.parametrize("ratio", [2.0, 4.0])
+def test_limit_pressure_of_a_hole_is_the_saturation_and_of_a_pool_a_maximum(ratio):
+    m, B = cavity.Solid(1.0, 100.0), ratio * A
+    hole = cavity.limit_pressure(A, B, m, cavity.Solid(0.0))
+    assert hole.kind == "saturation"
+    assert hole.pressure_kPa == pytest.approx(np.log(ratio), rel=1e-6)  # compressibility leaves mu ln(B/A) in place
+    g = cavity.Solid(1e-3, 0.1)  # contents with a bulk term: the curve has a maximum
+    pool = cavity.limit_pressure(A, B, m, g)
+    assert pool.kind == "limit point"
+    for J in (0.9 * pool.volume_ratio, 1.1 * pool.volume_ratio):
+        assert cavity.pressure_for_volume_ratio(J, A, B, m, g) < pool.pressure_kPa
+    cavity.circular_pool(A, B, m, g, (1.0 - 1e-6) * pool.pressure_kPa)
+    with pytest.raises(ValueError, match="limit pressure"):
+        cavity.circular_pool(A, B, m, g, (1.0 + 1e-6) * pool.pressure_kPa)
+
+
 @pytest.mark.parametrize("law", donnan.CHARGE_LAWS)
 @pytest.mark.parametrize("J", [4.0, 25.0, 100.0])
 @pytest.mark.parametrize("ratio", [10.0, 1000.0])

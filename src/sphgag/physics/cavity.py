@@ -92,6 +92,16 @@ def fixed_charge(pressure_kPa, solid: Solid):
     return np.sqrt(q * q - solid.bath_mEq_l**2)
 
 
+def annulus_pressure_incompressible(stretch, A, B, mu):
+    """Pressure in a hole of reference radius ``A`` expanded to ``a = stretch A`` in an incompressible neo-Hookean
+    annulus ``A < R < B`` with a free outer surface (plane strain; exact):
+    ``p / mu = 1/2 [ln(la^2 / lb^2) + lb^-2 - la^-2]``, ``la = a/A``, ``lb = b/B``, ``b^2 = B^2 + a^2 - A^2``.
+    It rises monotonically to the saturation pressure ``mu ln(B/A)`` and never reaches it."""
+    la = np.asarray(stretch, dtype=float)
+    lb2 = 1.0 + (la * la - 1.0) * (A / B) ** 2
+    return 0.5 * mu * (np.log(la * la / lb2) + 1.0 / lb2 - la**-2)
+
+
 def infinite_cavity_pressure(stretch, mu):
     """Pressure in a cylindrical cavity expanded to ``a = stretch A`` in an infinite incompressible neo-Hookean solid
     (plane strain; exact): ``p = mu (ln l + (1 - l^-2)/2)``."""
@@ -233,6 +243,43 @@ def circular_pool(A, B, matrix, gag, pressure_kPa, law=PAPER_LAW) -> CircularPoo
     lp = float(np.exp(_stable_root(residual)))
     ode = _shoot(m, A, B, lp, cauchy(lp, lp, g, swelling(lp))[0], dense=True)[1]
     return CircularPool(A, B, m, g, law, pressure_kPa, lp, swelling(lp), ode)
+
+
+@dataclass(frozen=True)
+class LimitPressure:
+    """The largest pressure a pool of reference radius ``A`` in the annulus ``A < R < B`` holds in equilibrium:
+    ``pressure_kPa`` at the pool volume ratio ``volume_ratio``; ``kind``: ``limit point`` (the pressure-volume curve
+    has a maximum: beyond it the stable branch ends) or ``saturation`` (the curve rises to an asymptote it never
+    reaches, as the incompressible annulus to ``mu ln(B/A)``: then ``pressure_kPa`` is its value at
+    ``volume_ratio`` = :data:`SATURATION_VOLUME_RATIO`, within a relative 1e-6 of the asymptote for these laws)."""
+
+    pressure_kPa: float
+    volume_ratio: float
+    kind: str
+
+
+SATURATION_VOLUME_RATIO = 1e8  # where the pressure-volume curve is taken to have reached a saturation pressure
+
+
+def limit_pressure(A, B, matrix, gag) -> LimitPressure:
+    """The :class:`LimitPressure` of the prescribed law (eq. 2.27): the maximum over ``ln J`` of
+    :func:`pressure_for_volume_ratio`, scanned in steps of 0.25 up to :data:`SATURATION_VOLUME_RATIO` and refined by
+    a bounded scalar search around the largest sample. ``gag = Solid(0)``: an empty hole."""
+    m, g = Solid.of(matrix), Solid.of(gag)
+
+    def pressure(s):
+        return pressure_for_volume_ratio(np.exp(s), A, B, m, g)
+
+    top = np.log(SATURATION_VOLUME_RATIO)
+    s = np.arange(0.0, top + 0.125, 0.25)
+    p = np.array([pressure(x) for x in s])
+    k = int(np.argmax(p))
+    if p[-1] >= p[k] * (1.0 - 1e-9):  # still rising at the top, to round-off: an asymptote
+        return LimitPressure(float(p[-1]), SATURATION_VOLUME_RATIO, "saturation")
+    peak = minimize_scalar(
+        lambda x: -pressure(x), bounds=(s[max(k - 1, 0)], s[k + 1]), method="bounded", options=dict(xatol=1e-10)
+    )
+    return LimitPressure(float(-peak.fun), float(np.exp(peak.x)), "limit point")
 
 
 def pressure_for_volume_ratio(J_target, A, B, matrix, gag, law=PAPER_LAW) -> float:
