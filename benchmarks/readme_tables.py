@@ -1,0 +1,215 @@
+"""The README's result tables, generated from a finished run's tables (nothing typed by hand).
+
+Reads, where they exist (:data:`SOURCES`: README marker -> the table it is made from):
+
+* ``results/delamination/summary.csv`` (figures 5-7, every charge law and onset measure): ``delamination-runs``;
+* ``results/delamination/gci.csv`` (the resolution study's event concentrations with their uncertainty):
+  ``delamination-gci``;
+* ``results/variants/hourglass_*_summary.csv`` (target ``variants``): ``hourglass-variants``;
+* ``results/sensitivity/morris/indices.csv`` (Morris screening): ``morris-ranking``, the inputs ranked by mu* per
+  output and charge law, with the numerics' share of the top input's mu*;
+* ``results/verification/annulus.csv`` (the pressurised annulus): ``annulus-verification``;
+
+and writes each as a Markdown table between the README's markers ``<!-- name -->`` and ``<!-- /name -->``.
+
+    python benchmarks/readme_tables.py                    # print the tables
+    python benchmarks/readme_tables.py --readme README.md # rewrite them in the README
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+from rule_resources import replace_block
+
+from sphgag.studies import annulus, gci
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _c(value: float) -> str:
+    return f"{value:.1f}" if np.isfinite(value) else "-"
+
+
+def _um(value: float) -> str:
+    return f"{value:.2g} um" if np.isfinite(value) else "-"
+
+
+def runs_table(summary: pd.DataFrame) -> str:
+    """One row per run of figures 5-7: how it ended and the concentrations of its events [mEq/l]."""
+    head = (
+        "| law | onset measure | pool set | sigma_cr (kPa) | stop | onset | runaway | merge | limit | "
+        "arrested length (um) | final length (um) | passes | largest residual |"
+    )
+    rows = [head, "|" + " --- |" * 13]
+    order = summary.sort_values(["charge_law", "criterion", "case", "sigma_cr_kPa"], kind="stable")
+    for r in order.itertuples():
+        rows.append(
+            f"| {r.charge_law} | {r.criterion} | {r.case} | {r.sigma_cr_kPa:g} | {r.stop_kind} | "
+            f"{_c(r.onset_concentration_mEq_l)} | {_c(r.runaway_concentration_mEq_l)} | "
+            f"{_c(r.merge_concentration_mEq_l)} | {_c(r.limit_concentration_mEq_l)} | {r.arrested_length_um:.1f} | "
+            f"{r.final_length_um:.1f} | {r.passes:.0f} | {r.max_residual:.1e} |"
+        )
+    return "\n".join(rows)
+
+
+def gci_table(table: pd.DataFrame) -> str:
+    """Per event concentration: its value at every spacing, the observed order, the extrapolated value and the GCI."""
+    spacings = sorted(table.dx_um.unique(), reverse=True)
+    head = (
+        "| law | onset measure | pool set | quantity | "
+        + " | ".join(f"dx = {dx:g} um" for dx in spacings)
+        + " | observed order | extrapolated | GCI (finest) | spacing for a GCI of 10 % |"
+    )
+    rows = [head, "|" + " --- |" * (8 + len(spacings))]
+    groups = table.groupby(["charge_law", "criterion", "case", "quantity"], sort=False)
+    for (law, criterion, case, quantity), g in groups:
+        values = g.set_index("dx_um").value
+        first = g.iloc[0]
+        cells = " | ".join(_c(values.get(dx, np.nan)) for dx in spacings)
+        finest = values.sort_index().iloc[:3]
+        e = gci.estimate(finest.index, finest.to_numpy()) if len(finest) == 3 else None
+        order = f"{first.observed_order:.2f}" if np.isfinite(first.observed_order) else "-"
+        if e is not None and e.diverging:
+            order = "none: the differences grow"
+        elif e is not None and e.oscillatory and np.isfinite(first.observed_order):
+            order += " (oscillating)"
+        gci_fine = f"{100 * first.gci_fine:.1f} %" if np.isfinite(first.gci_fine) else "-"
+        name = quantity.removesuffix("_concentration_mEq_l")
+        target = e.spacing_for(0.1) if e is not None and not e.diverging else np.nan
+        target = "reached" if np.isfinite(first.gci_fine) and first.gci_fine <= 0.1 else _um(target)
+        rows.append(
+            f"| {law} | {criterion} | {case} | {name} | {cells} | {order} | {_c(first.extrapolated)} | {gci_fine} | "
+            f"{target} |"
+        )
+    return "\n".join(rows)
+
+
+def variants_table(summary: pd.DataFrame) -> str:
+    """Figure 5's pool under each form of the hourglass control."""
+    rows = ["| hourglass | stop | onset | runaway | final length (um) | passes | stop text |", "|" + " --- |" * 7]
+    for r in summary.itertuples():
+        rows.append(
+            f"| {r.hourglass} | {r.stop_kind} | {_c(r.onset_concentration_mEq_l)} | "
+            f"{_c(r.runaway_concentration_mEq_l)} | {r.final_length_um:.1f} | {r.passes:.0f} | {r.stop} |"
+        )
+    return "\n".join(rows)
+
+
+NUMERICS = "numerics."  # the sensitivity inputs that are numerical choices, not physics
+SHOWN_INPUTS = 5
+
+
+def morris_table(indices: pd.DataFrame) -> str:
+    """Per output and charge law: the inputs ranked by Morris mu* (with the bootstrap interval of the first), and the
+    numerics' share: the largest mu* of a numerical input over the top input's mu*."""
+    mu = indices[(indices.method == "morris") & (indices["index"] == "mu_star")]
+    head = (
+        "| output | law | samples used (failed) | inputs by mu* (per full range), largest first | "
+        "numerics' share of the top mu* |"
+    )
+    rows = [head, "|" + " --- |" * 5]
+    for (output, law), g in mu.groupby(["output", "charge_law"], sort=False):
+        g = g[np.isfinite(g.value)].sort_values("value", ascending=False)
+        used = f"{g.samples_used.iloc[0]:.0f} ({g.samples_failed.iloc[0]:.0f})" if len(g) else "-"
+        if g.empty or g.value.iloc[0] <= 0.0:
+            rows.append(f"| {output} | {law} | {used} | does not vary | - |")
+            continue
+        top = g.iloc[0]
+        ranked = [f"**{top.input}** {top.value:.3g} [{top.conf_low:.3g}, {top.conf_high:.3g}]"]
+        ranked += [f"{r.input} {r.value:.3g}" for r in g.iloc[1:SHOWN_INPUTS].itertuples()]
+        numerics = g[g.input.str.startswith(NUMERICS)]
+        share = (
+            f"{numerics.value.iloc[0] / top.value:.0%} ({numerics.input.iloc[0].removeprefix(NUMERICS)})"
+            if len(numerics)
+            else "-"
+        )
+        rows.append(f"| {output} | {law} | {used} | {'; '.join(ranked)} | {share} |")
+    return "\n".join(rows)
+
+
+def _pct(value: float) -> str:
+    return f"{100 * value:+.2f} %" if np.isfinite(value) else "-"
+
+
+def annulus_table(table: pd.DataFrame) -> str:
+    """The pressurised annulus: per pool model, B/A and fraction of the exact limit, the errors of the volume ratio and
+    of the hoop stress at the hole at every spacing with the observed order of the finer pair, how far the GAG reach
+    outside the lining; and, above the limit, how each spacing's run ended."""
+    spacings = sorted(table.dx_um.unique(), reverse=True)
+    orders = annulus.orders(table).set_index(["pool_model", "outer_ratio", "fraction", "quantity"])
+    head = (
+        "| pool | B/A | Pi / limit | volume ratio error: "
+        + " / ".join(f"dx {d:g}" for d in spacings)
+        + " (order) | hoop stress error: same spacings (order) | GAG beyond the lining, finest (um) |"
+    )
+    rows = [head, "|" + " --- |" * 6]
+    below = table[(table.fraction < 1.0)]
+    for (model, ratio, f), g in below.groupby(["pool_model", "outer_ratio", "fraction"], sort=True):
+        g = g.set_index("dx_um").reindex(spacings)
+        cells = []
+        for quantity, error in (("volume_ratio", "volume_error"), ("lining_hoop_kPa", "lining_hoop_error")):
+            key = (model, ratio, f, quantity)
+            order = f"{orders.loc[key, 'order_fine']:.2f}" if key in orders.index else "-"
+            cells.append(" / ".join(_pct(v) for v in g[error]) + f" ({order})")
+        crossing = g.ring_crossing_um.iloc[-1]
+        rows.append(
+            f"| {model} | {ratio:g} | {f:g} | {cells[0]} | {cells[1]} | "
+            + (f"{crossing:+.2f} |" if np.isfinite(crossing) else "- |")
+        )
+    above = table[table.fraction > 1.0]
+    for (model, ratio), g in above.groupby(["pool_model", "outer_ratio"], sort=True):
+        limit = g.limit_pressure_kPa.iloc[0]
+        ends = []
+        for r in g.sort_values("dx_um", ascending=False).itertuples():
+            held = r.discrete_limit_kPa if r.beyond_end == "limit point" else r.largest_held_kPa
+            what = "a STATE" if r.state else f"{r.beyond_end}, {held / limit:.4f} x the limit held"
+            ends.append(f"dx {r.dx_um:g}: {what}")
+        rows.append(
+            f"| {model} | {ratio:g} | {g.fraction.iloc[0]:g} (exact {g.limit_kind.iloc[0]} {limit:.2f} kPa) | "
+            + "; ".join(ends)
+            + " | | |"
+        )
+    return "\n".join(rows)
+
+
+SOURCES = {  # README marker -> (the result table's path pattern under results/, the function that writes it)
+    "delamination-runs": ("delamination/summary.csv", runs_table),
+    "delamination-gci": ("delamination/gci.csv", gci_table),
+    "hourglass-variants": ("variants/hourglass_*_summary.csv", variants_table),
+    "morris-ranking": ("sensitivity/morris/indices.csv", morris_table),
+    "annulus-verification": ("verification/annulus.csv", annulus_table),
+}
+
+
+def blocks(results: Path) -> dict[str, str]:
+    """The tables that this run's results give, by the name of their README markers."""
+    out = {}
+    for name, (pattern, table) in SOURCES.items():
+        paths = sorted(results.glob(pattern))
+        if paths:
+            out[name] = table(pd.concat([pd.read_csv(p) for p in paths], ignore_index=True))
+    return out
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--results", type=Path, default=ROOT / "results", help="the run's results folder")
+    ap.add_argument("--readme", type=Path, help="rewrite the tables between the markers of this README")
+    args = ap.parse_args(argv)
+    tables = blocks(args.results)
+    if args.readme is None:
+        print("\n\n".join(f"<!-- {name} -->\n{table}" for name, table in tables.items()))
+        return 0
+    text = args.readme.read_text()
+    for name, table in tables.items():
+        text = replace_block(text, table, name)
+    args.readme.write_text(text)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
