@@ -94,6 +94,22 @@ CONTRACT = {
         "hoop_error",
         "residual",
     ],
+    "results/verification/annulus.csv": [
+        "pool_model",
+        "outer_ratio",
+        "dx_um",
+        "fraction",
+        "pressure_kPa",
+        "limit_pressure_kPa",
+        "limit_kind",
+        "state",
+        "volume_ratio",
+        "volume_error",
+        "lining_hoop_error",
+        "ring_crossing_um",
+        "beyond_end",
+        "residual",
+    ],
     "results/verification/elliptic_pool.csv": [
         "dx_um",
         "semi_axis_a_um",
@@ -212,6 +228,7 @@ FIGURES = [
         "fig3",
         "fig4",
         "verification_pool",
+        "verification_annulus",
         "swelling_convergence",
         "fig5",
         "fig6",
@@ -231,6 +248,7 @@ REPORT_TABLES = [
     "results/swelling/tip_stress.csv",
     "results/swelling/convergence.csv",
     "results/verification/elliptic_pool.csv",
+    "results/verification/annulus.csv",
     "results/delamination/summary.csv",
     "results/delamination/convergence.csv",
     "results/delamination/gci.csv",
@@ -292,6 +310,8 @@ def test_outputs_follow_the_data_contracts(workdir, ci_config):
     ):
         states = pd.read_csv(workdir / "results" / table)
         assert (states.residual < ci_config["numerics"]["tolerance"]).all(), table
+    annulus = pd.read_csv(workdir / "results/verification/annulus.csv")
+    assert not annulus[annulus.fraction > 1.0].state.any()  # no state above the exact limit of existence
     for table in ("delamination/summary.csv", "delamination/convergence.csv"):
         assert (pd.read_csv(workdir / "results" / table).max_residual < ci_config["numerics"]["tolerance"]).all()
     assert (

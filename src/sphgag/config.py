@@ -523,7 +523,9 @@ def _consistency(config: dict) -> list[str]:
     counted (which builds layouts) only for a configuration the other checks vouch for."""
     checks = (_pressures, _composition, _swelling, _file_names, _delamination, _pool_placement, _thin_layers)
     problems = [p for check in checks for p in check(config)]
-    problems += _circular_pool(config.get("verification", {}).get("circular_pool", {}))
+    verification = config.get("verification", {})
+    problems += _circular_pool(verification.get("circular_pool", {}))
+    problems += _annulus(verification.get("annulus", {}))
     if not problems and config.get("bilayer"):
         problems += _empty_pools(config)
     return problems
@@ -565,6 +567,16 @@ def _circular_pool(vc: dict) -> list[str]:
         if dx > 0.5 * A:
             problems.append(f"{where}.dx_um[{k}] = {dx:g} must be at most half of {where}.radius_um = {A:g}")
     return problems
+
+
+def _annulus(va: dict) -> list[str]:
+    """The annulus verification: particles small enough to put two rings in the hole."""
+    where, A = "verification.annulus", va.get("radius_um", 0.0)
+    return [
+        f"{where}.dx_um[{k}] = {dx:g} must be at most half of {where}.radius_um = {A:g}"
+        for k, dx in enumerate(va.get("dx_um", []))
+        if dx > 0.5 * A
+    ]
 
 
 def _sensitivity(config: dict, schema: dict) -> list[str]:

@@ -267,3 +267,97 @@ rule verification_circular_pool_figure:
         mem_mb=1000,
     script:
         "../scripts/verification_circular_pool_figure.py"
+
+
+VAN = config["verification"]["annulus"]
+
+
+rule verify_annulus_model:
+    """The prescribed law's limit of existence ({model}: an empty hole, or the paper's GAG particles): a pressurised
+    annulus at every spacing below, and above, the largest pressure its exact solution holds."""
+    input:
+        code=SPHGAG,
+    output:
+        table="results/verification/runs/annulus_{model}.csv",
+        provenance="results/provenance/verify_annulus_{model}.json",
+    log:
+        "logs/verify_annulus/{model}.log",
+    benchmark:
+        "results/benchmarks/verify_annulus_{model}.tsv"
+    wildcard_constraints:
+        model="|".join(VAN["pool_models"]),
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=60,
+        mem_mb=2000,
+    params:
+        annulus={k: v for k, v in VAN.items() if k != "pool_models"},
+        matrix=POOL_MATRIX,
+        gag={k: config["gag"][k] for k in ("shear_modulus_kPa", "lame_lambda_kPa", "hourglass_modulus_kPa")},
+        numerics=config["numerics"],
+    script:
+        "../scripts/verify_annulus.py"
+
+
+rule verify_annulus:
+    """The annulus verification of every pool model in one table, and the observed order of each measure."""
+    input:
+        code=SPHGAG,
+        tables=expand(rules.verify_annulus_model.output.table, model=VAN["pool_models"]),
+    output:
+        table=report(
+            "results/verification/annulus.csv",
+            caption="../report/annulus.rst",
+            category="4 Verification",
+            labels={"result": "Table: the pressurised annulus and its limit of existence"},
+        ),
+        orders="results/verification/annulus_orders.csv",
+        exact="results/verification/annulus_exact.csv",
+    log:
+        "logs/verify_annulus.log",
+    benchmark:
+        "results/benchmarks/verify_annulus.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
+    params:
+        radius=VAN["radius_um"],
+        matrix=POOL_MATRIX,
+        gag={k: config["gag"][k] for k in ("shear_modulus_kPa", "lame_lambda_kPa", "hourglass_modulus_kPa")},
+    script:
+        "../scripts/verify_annulus_orders.py"
+
+
+rule verification_annulus_figure:
+    """The pressurised annulus: pressure against volume ratio beside the exact curve and its limit, and the errors
+    against dx."""
+    input:
+        code=VIEWS["verification"],
+        table=rules.verify_annulus.output.table,
+        orders=rules.verify_annulus.output.orders,
+        exact=rules.verify_annulus.output.exact,
+    output:
+        pdf="figures/verification_annulus.pdf",
+        png=report(
+            "figures/verification_annulus.png",
+            caption="../report/verification_annulus.rst",
+            category="4 Verification",
+            labels={"result": "Figure: the pressurised annulus against its exact solution and its limit"},
+        ),
+    log:
+        "logs/verification_annulus_figure.log",
+    benchmark:
+        "results/benchmarks/verification_annulus_figure.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
+    script:
+        "../scripts/verification_annulus_figure.py"

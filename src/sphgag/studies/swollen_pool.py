@@ -19,6 +19,12 @@ particle. **Measures** (each at a converged state with its residual):
 * ``hoop_error``: the largest error of the matrix particles' hoop stress (eq. 2.10, current polar frame) against
   the exact field at their reference radius, over the particles one kernel support or more from the interface (the
   stencils that straddle it average across the kink of the exact field), relative to the exact interface hoop stress;
+* ``lining_hoop_kPa``: the hoop stress at the hole, ``sigma_tt(A+)``: the ring means of the first
+  :data:`sphgag.studies.inclusion.TIP_PARTICLES` matrix rings fitted by ``c0 + c1 q + c2 q^2``, ``q = A/R``, at
+  ``R = A`` (:func:`sphgag.studies.inclusion.tip_fit`, the Lamé form; a particle's own stress near the free
+  surface carries the truncated stencil's error), against the exact ``sigma_tt(A+)``;
+* ``ring_crossing_um``: how far the pool's particles reach outside the lining (:func:`ring_crossing`; the paper's
+  particles only);
 * ``outer_radius_um``: the mean current radius of the outer ring against the exact ``r`` there.
 """
 
@@ -37,11 +43,15 @@ from . import inclusion
 
 
 def swell_from_rest(model, pressures, steps: int, numerics: Numerics) -> tuple[dict, str]:
-    """``({Pi: converged state}, end)`` on one path from rest in ``steps`` equal increments up to the largest of
-    ``pressures`` [kPa] (with the requested pressures among them): the states reached, and ``complete`` or why the
-    path ended (no state beyond its last equilibrium is returned)."""
+    """``(states, end)`` of :func:`swell_along` a path from rest in ``steps`` equal increments up to the largest of
+    ``pressures`` [kPa] (with the requested pressures among them)."""
     ramp = np.linspace(0.0, max(pressures), int(steps) + 1)[1:]
-    loads = sorted(set(ramp.tolist()) | {float(p) for p in pressures})
+    return swell_along(model, sorted(set(ramp.tolist()) | {float(p) for p in pressures}), numerics)
+
+
+def swell_along(model, loads, numerics: Numerics) -> tuple[dict, str]:
+    """``({Pi: converged state}, end)`` on one path from rest through the increasing pressures ``loads`` [kPa]: the
+    states reached, and ``complete`` or why the path ended (no state beyond its last equilibrium is returned)."""
     reached = {}
     try:
         solver.follow_path(
@@ -92,6 +102,10 @@ def measure_circle(model, state: solver.State, exact: cavity.CircularPool, h: fl
     _, s_tt, _, _ = measure.cauchy_polar(ev)
     ref = exact.field(R0[far])["sigma_tt"]
     edge = lay.ring_members(lay.ring_offset.size - 1)
+    rings = range(lay.first_matrix_ring, lay.first_matrix_ring + inclusion.TIP_PARTICLES)
+    ring_R = np.array([R0[lay.ring_members(k)].mean() for k in rings])
+    ring_hoop = np.array([s_tt[lay.ring_members(k)].mean() for k in rings])
+    lining_hoop = inclusion.tip_fit(ring_R - exact.A, ring_hoop, exact.A)
     return dict(
         volume_ratio=volume,
         volume_ratio_exact=exact.volume_ratio,
@@ -101,11 +115,25 @@ def measure_circle(model, state: solver.State, exact: cavity.CircularPool, h: fl
         lining_error=float(r[lining].mean()) / lining_exact - 1.0,
         hoop_error=float(np.abs(s_tt[far] - ref).max() / abs(exact.interface_hoop_kPa)),
         interface_hoop_exact_kPa=exact.interface_hoop_kPa,
+        lining_hoop_kPa=lining_hoop,
+        lining_hoop_exact_kPa=exact.interface_hoop_kPa,
+        lining_hoop_error=lining_hoop / exact.interface_hoop_kPa - 1.0,
+        ring_crossing_um=np.nan if model.cavities else ring_crossing(state.x, np.flatnonzero(pool), lining),
         outer_radius_um=float(r[edge].mean()),
         outer_radius_exact_um=float(exact.field(np.array([R0[edge].mean()]))["r"][0]),
         residual=state.convergence.residual,
         particles=model.n,
     )
+
+
+def ring_crossing(x: np.ndarray, pool: np.ndarray, lining: np.ndarray) -> float:
+    """How far [um] the pool's particles ``pool`` reach outside the pool's lining ``lining`` (the first matrix
+    ring), each against the lining's current radius at its own polar angle (interpolated between the lining's
+    particles): the largest ``r_i - r_lining(theta_i)``. Positive: a GAG particle has passed the lining, which the
+    exact solution never allows (the pool's rings stay inside, in order)."""
+    r, theta = np.hypot(*x.T), np.arctan2(x[:, 1], x[:, 0])
+    order = lining[np.argsort(theta[lining])]
+    return float(np.max(r[pool] - np.interp(theta[pool], theta[order], r[order])))
 
 
 def circle_study(

@@ -228,3 +228,94 @@ def verification_crack(table: pd.DataFrame, modulus: float, fracture_energy_J_m2
     )
     ax.legend(frameon=False, fontsize=5.5, loc="upper left", bbox_to_anchor=(1.0, 1.0))
     return fig
+
+
+def verification_annulus(table: pd.DataFrame, orders: pd.DataFrame, exact: pd.DataFrame):
+    """The pressurised annulus (annulus.csv, annulus_orders.csv, annulus_exact.csv). Top row, one panel per pool
+    model and B/A: the prescribed pressure over the largest the exact solution holds, against the pool volume ratio
+    (log), the exact curve of the engine's laws (and the hole's incompressible closed form), the runs' states at
+    every spacing, and what each run found above the limit (its discrete limit point, or the largest pressure volume
+    control held, still rising). Bottom row, against dx (log-log): |relative error| of the volume ratio and of the hoop
+    stress at the hole at every fraction of the limit, with the observed order of the finer pair; and how far the GAG
+    particles reach outside the lining (positive: crossed)."""
+    _style()
+    cases = list(table.groupby(["pool_model", "outer_ratio"], sort=True).groups)
+    columns = max(len(cases), 4)  # the bottom row: errors of the volume and of the hoop stress, their legend, the rings
+    fig, axes = plt.subplots(2, columns, figsize=(3.0 * columns, 6.2), squeeze=False)
+    for spare in axes[0][len(cases) :]:
+        spare.axis("off")
+    spacings = sorted(table.dx_um.unique(), reverse=True)
+    colours = dict(zip(spacings, sns.color_palette("viridis", len(spacings)).as_hex()))
+    for ax, (model, ratio) in zip(axes[0], cases):
+        case = table[(table.pool_model == model) & (table.outer_ratio == ratio)]
+        top = float(case.limit_pressure_kPa.iloc[0])
+        curve = exact[(exact.pool_model == model) & (exact.outer_ratio == ratio)]
+        ax.plot(curve.volume_ratio, curve.pressure_kPa / top, color="k", lw=1.0, label="exact (engine's laws)")
+        if model == "hole":
+            ax.plot(curve.volume_ratio, curve.incompressible_kPa / top, color="0.5", lw=0.8, ls=":", label="incompressible")
+        ax.axhline(1.0, color="0.6", lw=0.6, ls="--")
+        for dx, g in case.groupby("dx_um"):
+            below = g[(g.fraction < 1.0) & g.state]
+            ax.plot(below.volume_ratio, below.fraction, "o", ms=3.5, mfc="none", color=colours[dx], label=f"dx = {dx:g} um")
+            above = g[g.fraction > 1.0]
+            for r in above.itertuples():
+                held = r.discrete_limit_kPa if r.beyond_end == "limit point" else r.largest_held_kPa
+                ax.plot([ax.get_xlim()[1]], [held / top], "<", ms=4, color=colours[dx], clip_on=False)
+        beyond = case[case.fraction > 1.0]
+        states = int(beyond.state.sum())
+        kind = case.limit_kind.iloc[0]
+        ax.set(
+            xscale="log",
+            xlabel="pool volume ratio J",
+            ylabel="Pi / largest exact Pi",
+            title=f"{model}, B/A = {ratio:g} ({kind} {top:.1f} kPa)",
+            ylim=(0.0, 1.15),
+        )
+        ax.text(
+            0.03, 0.97,
+            f"at {beyond.fraction.max():.2f} x the limit: {states} states\n"
+            + "; ".join(sorted(set(beyond.beyond_end.astype(str)))) + " (<: the largest Pi held)",
+            transform=ax.transAxes, fontsize=6, va="top",
+        )  # fmt: skip
+    axes[0][0].legend(frameon=False, fontsize=6, loc="lower right")
+    markers = dict(zip(sorted(orders.fraction.unique()), "os^vDP"))
+    styles = {"hole": "--", "particles": "-"}
+    ratios = sorted(table.outer_ratio.unique())
+    hues = dict(zip(ratios, sns.color_palette("Dark2", len(ratios)).as_hex()))
+    below = table[(table.fraction < 1.0) & table.state]
+    for ax, (quantity, error, title) in zip(
+        axes[1],
+        (("volume_ratio", "volume_error", "(a) pool volume ratio"), ("lining_hoop_kPa", "lining_hoop_error", "(b) hoop stress at the hole")),
+    ):
+        for (model, ratio, f), g in below.groupby(["pool_model", "outer_ratio", "fraction"]):
+            g = g.sort_values("dx_um")
+            o = orders[(orders.pool_model == model) & (orders.outer_ratio == ratio) & (orders.fraction == f)]
+            o = o.set_index("quantity").order_fine
+            label = f"{model}, B/A {ratio:g}, {f:g} of the limit: order " + " / ".join(f"{v:.2f}" for v in o)
+            ax.loglog(g.dx_um, np.maximum(g[error].abs(), 1e-5), styles.get(model, "-"), marker=markers[f], ms=3,
+                      color=hues[ratio], lw=0.8, label=label)  # fmt: skip
+        ax.axhline(0.01, color="0.6", lw=0.6, ls="--")
+        ax.set(xlabel="dx (um)", ylabel="|relative error|", title=title)
+        ax.set_xticks(spacings, [f"{d:g}" for d in spacings])
+        ax.minorticks_off()
+    axes[1][2].axis("off")
+    axes[1][2].legend(
+        *axes[1][1].get_legend_handles_labels(),
+        title="observed order (finer pair):\nvolume ratio / hoop stress",
+        title_fontsize=6,
+        frameon=False,
+        fontsize=5.5,
+        loc="center",
+    )
+    ax = axes[1][3]
+    crossing = below[below.pool_model == "particles"]
+    for (ratio, dx), g in crossing.groupby(["outer_ratio", "dx_um"]):
+        ax.plot(g.fraction, g.ring_crossing_um, "-o", ms=3, lw=0.8, color=colours[dx], ls="-" if ratio == ratios[0] else "--",
+                label=f"B/A {ratio:g}, dx {dx:g}")  # fmt: skip
+    ax.axhline(0.0, color="0.6", lw=0.6)
+    ax.set(xlabel="Pi / largest exact Pi", ylabel="GAG beyond the lining (um)", title="(c) order of the rings")
+    ax.legend(frameon=False, fontsize=5.5)
+    for spare in axes[1][4:]:
+        spare.axis("off")
+    fig.tight_layout()
+    return fig

@@ -1,0 +1,210 @@
+"""The pressurised annulus at large strain: the prescribed law's limit of existence, verified.
+
+Under the paper's charge law (eq. 2.27, ``prescribed``) a pool's swelling pressure Pi does not fall as the pool
+swells. A hole of reference radius ``A`` in a plane-strain neo-Hookean annulus ``A < R < B`` with a free outer
+surface then has an equilibrium only below the largest pressure the annulus holds: for the incompressible law the
+pressure rises monotonically to the saturation pressure ``mu ln(B/A)`` and never reaches it
+(:func:`sphgag.physics.cavity.annulus_pressure_incompressible`); for the engine's compressible law (eq. 2.21
+without pre-stretch or fibres) and a pool with contents of its own (eq. 2.27 with the bulk term) the curve is
+:func:`sphgag.physics.cavity.pressure_for_volume_ratio`, and its largest pressure
+:func:`sphgag.physics.cavity.limit_pressure` (a saturation for the hole, a limit point for the pool of particles,
+whose contents' bulk term adds a little pressure that falls again as they swell).
+
+**Cases** (``verification.annulus``): two pool models (:data:`POOL_MODELS`),
+
+* ``hole``: an empty hole, its lining loaded by the pressure (the cavity of :mod:`sphgag.engine.pool_cavity` with
+  contents of zero stiffness);
+* ``particles``: the paper's pool of GAG particles carrying Pi as their own stress (eq. 2.27 with the bulk term),
+
+each in annuli of ``outer_ratios`` B/A, at every spacing of ``dx_um``, swollen from rest in ``steps`` increments
+(:func:`ramp`) through ``fractions`` (below 1) of the largest pressure, every state measured against the
+exact solution (:func:`sphgag.studies.swollen_pool.measure_circle`: the volume ratio, the hoop stress at the hole,
+how far the pool's particles reach outside its lining). Then ``beyond`` (above 1) times the largest pressure
+(:func:`beyond_limit`): the engine must report that no equilibrium exists there, or the limit point its path
+reaches, never a state.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from ..engine import pool_volume, solver
+from ..engine.numerics import Numerics
+from ..physics import cavity
+from . import gci, inclusion, swollen_pool
+
+POOL_MODELS = {"hole": "cavity", "particles": "particles"}  # the verification's pool model -> the engine's
+MEASURES = {"volume_ratio": "volume_ratio_exact", "lining_hoop_kPa": "lining_hoop_exact_kPa"}  # measure -> its exact
+
+
+def materials(pool_model: str, matrix: dict, gag: dict) -> inclusion.Materials:
+    """The annulus' matrix around the pool: the GAG contents of ``gag`` (with its bulk term, as in the artery) or,
+    for the ``hole``, contents of zero stiffness."""
+    if pool_model not in POOL_MODELS:
+        raise ValueError(f"unknown pool model {pool_model!r} of the annulus: one of {sorted(POOL_MODELS)}")
+    if pool_model == "hole":
+        gag = dict(gag, shear_modulus_kPa=0.0, lame_lambda_kPa=0.0)
+    return inclusion.Materials.of(matrix, gag, bulk=True)
+
+
+def limit(A: float, B: float, mat: inclusion.Materials) -> cavity.LimitPressure:
+    """The largest pressure the exact solution of these laws holds (:func:`sphgag.physics.cavity.limit_pressure`)."""
+    return cavity.limit_pressure(A, B, cavity.Solid(mat.mu, mat.lam), cavity.Solid(mat.mu_gag, mat.lam_gag))
+
+
+def ramp(A: float, B: float, mat: inclusion.Materials, pressures, steps: int) -> list[float]:
+    """The path's pressures: ``steps`` increments of equal ratio in the exact pool volume ratio J, from J = 1 to the
+    J of the largest of ``pressures`` (so each step swells the pool alike, where equal pressure steps would crowd the
+    swelling near the limit), with ``pressures`` among them."""
+    m, g = cavity.Solid(mat.mu, mat.lam), cavity.Solid(mat.mu_gag, mat.lam_gag)
+    top = cavity.circular_pool(A, B, m, g, max(pressures)).volume_ratio
+    path = [cavity.pressure_for_volume_ratio(J, A, B, m, g) for J in np.geomspace(1.0, top, int(steps) + 1)[1:-1]]
+    return sorted(set(path) | {float(p) for p in pressures})
+
+
+def beyond_limit(model, last, pressure_kPa: float, members: np.ndarray, numerics: Numerics, max_ratio: float) -> dict:
+    """What the engine does above the exact limit: from the converged state ``last``, load control to
+    ``pressure_kPa`` (with the bisections of a transition, :func:`sphgag.engine.solver.transition_options`); where it
+    fails, as it must, volume control with the pressure as the unknown
+    (:func:`sphgag.engine.pool_volume.continue_path`, up to ``max_ratio`` times the pool's reference volume) finds the
+    discrete path's limit point or shows the pressure still rising (a saturation). ``state_beyond``: a state was
+    reached at ``pressure_kPa`` (a defect: the exact solution has none)."""
+    opts = numerics.solver_options()
+    try:
+        solver.follow_path(
+            model, last.x, last.load, [inclusion.pressure_load(pressure_kPa)], run=model.name,
+            **solver.transition_options(opts),
+        )  # fmt: skip
+        return dict(beyond_end="state", beyond_reason=f"a state at Pi = {pressure_kPa:.4g} kPa", state_beyond=True)
+    except solver.SimulationError as exc:
+        load_control = exc.reason
+    path, reached = pool_volume.continue_path(
+        model, last, members, [pressure_kPa], run=model.name, max_ratio=max_ratio, parameter="swelling_pressure",
+        **opts,
+    )  # fmt: skip
+    held = [s.concentration for s in path.states]
+    return dict(
+        beyond_end=path.end,
+        beyond_reason=f"load control: {load_control}; volume control: {path.reason or path.end}",
+        state_beyond=bool(reached),
+        discrete_limit_kPa=path.limit_concentration,
+        largest_held_kPa=max(held, default=np.nan),
+    )
+
+
+def annulus_study(va: dict, matrix: dict, gag: dict, numerics, pool_model: str, log=None) -> pd.DataFrame:
+    """One row per (outer ratio, spacing, pressure fraction) of ``va`` (``radius_um``, ``outer_ratios``, ``dx_um``,
+    ``fractions``, ``beyond``, ``steps``, ``max_volume_ratio``): the pressure, the exact limit
+    (``limit_pressure_kPa``, ``limit_kind``, ``limit_volume_ratio``), ``path_end`` and, below the limit, the measures
+    of :func:`sphgag.studies.swollen_pool.measure_circle` against the exact state; at ``beyond`` times the limit,
+    what :func:`beyond_limit` found (no measures: there is no exact state)."""
+    numerics = Numerics.of(numerics)
+    mat = materials(pool_model, matrix, gag)
+    m_solid, g_solid = cavity.Solid(mat.mu, mat.lam), cavity.Solid(mat.mu_gag, mat.lam_gag)
+    A = float(va["radius_um"])
+    fractions = sorted(float(f) for f in va["fractions"])
+    rows = []
+    for ratio in va["outer_ratios"]:
+        B = float(ratio) * A
+        top = limit(A, B, mat)
+        pressures = [f * top.pressure_kPa for f in fractions]
+        for dx in va["dx_um"]:
+            model = swollen_pool.circle_model(A, B, float(dx), mat, numerics, POOL_MODELS[pool_model])
+            at, end = swollen_pool.swell_along(model, ramp(A, B, mat, pressures, va["steps"]), numerics)
+            case = dict(
+                pool_model=pool_model,
+                outer_ratio=float(ratio),
+                dx_um=float(dx),
+                limit_pressure_kPa=top.pressure_kPa,
+                limit_kind=top.kind,
+                limit_volume_ratio=top.volume_ratio,
+                path_end=end,
+            )
+            h = numerics.kernel_support_factor * float(dx)
+            for f, p in zip(fractions, pressures):
+                row = dict(case, fraction=f, pressure_kPa=p, state=p in at)
+                if p in at:
+                    row.update(swollen_pool.measure_circle(model, at[p], cavity.circular_pool(A, B, m_solid, g_solid, p), h))
+                    if log is not None:
+                        log.info(
+                            "[%s B/A=%g] %.2f of the limit (%.2f kPa): volume ratio %.3f (exact %.3f, %+.2f %%), "
+                            "hoop at the hole %+.2f %%, GAG outside the lining by %.2f um, residual %.1e",
+                            model.name, ratio, f, p, row["volume_ratio"], row["volume_ratio_exact"],
+                            100 * row["volume_error"], 100 * row["lining_hoop_error"], row["ring_crossing_um"],
+                            row["residual"],
+                        )  # fmt: skip
+                rows.append(row)
+            if end != "complete" or not pressures:
+                continue
+            p = float(va["beyond"]) * top.pressure_kPa
+            members = np.flatnonzero(model.layout.inclusion)
+            found = beyond_limit(model, at[pressures[-1]], p, members, numerics, float(va["max_volume_ratio"]))
+            rows.append(dict(case, fraction=float(va["beyond"]), pressure_kPa=p, state=found["state_beyond"], **found))
+            if log is not None:
+                log.info("[%s B/A=%g] %.2f of the limit: %s", model.name, ratio, va["beyond"], found["beyond_reason"])
+    return pd.DataFrame(rows)
+
+
+def exact_curves(table: pd.DataFrame, radius_um: float, matrix: dict, gag: dict, points: int = 60) -> pd.DataFrame:
+    """The exact pressure-volume curve of every (pool model, B/A) of ``table``, up to its limit (or to 1.5 times the
+    largest volume ratio the runs reached, for a saturation): ``volume_ratio``, ``pressure_kPa`` (the engine's
+    compressible laws, :func:`sphgag.physics.cavity.pressure_for_volume_ratio`) and ``incompressible_kPa`` (the
+    closed form of the hole, :func:`sphgag.physics.cavity.annulus_pressure_incompressible`)."""
+    rows = []
+    A = float(radius_um)
+    for (model, ratio), case in table.groupby(["pool_model", "outer_ratio"], sort=True):
+        mat = materials(model, matrix, gag)
+        m, g = cavity.Solid(mat.mu, mat.lam), cavity.Solid(mat.mu_gag, mat.lam_gag)
+        B = float(ratio) * A
+        top = case.limit_volume_ratio.iloc[0]
+        if case.limit_kind.iloc[0] == "saturation":
+            top = 1.5 * float(np.nanmax(case.get("volume_ratio", pd.Series([2.0])).to_numpy(dtype=float)))
+        for J in np.geomspace(1.0, top, points):
+            rows.append(
+                dict(
+                    pool_model=model,
+                    outer_ratio=float(ratio),
+                    volume_ratio=J,
+                    pressure_kPa=cavity.pressure_for_volume_ratio(J, A, B, m, g),
+                    incompressible_kPa=float(cavity.annulus_pressure_incompressible(np.sqrt(J), A, B, mat.mu)),
+                )
+            )
+    return pd.DataFrame(rows)
+
+
+def orders(table: pd.DataFrame) -> pd.DataFrame:
+    """The observed order of each measure's error at three spacings (the finest three of each case): per
+    (``pool_model``, ``outer_ratio``, ``fraction``, ``quantity``) the finest spacing's value, the exact value, its
+    relative error, the order ``ln(e_2/e_1) / ln(h_2/h_1)`` of the errors of the two finer spacings and of the two
+    coarser ones, and the grid convergence index estimate of the three values (:func:`sphgag.studies.gci.estimate`,
+    which does not know the exact value: its extrapolated value is checked against it)."""
+    rows = []
+    below = table[(table.fraction < 1.0) & table.state]
+    for (model, ratio, f), case in below.groupby(["pool_model", "outer_ratio", "fraction"], sort=True):
+        case = case.sort_values("dx_um").head(3)
+        if len(case) < 3:
+            continue
+        h = case.dx_um.to_numpy()
+        for q, exact_column in MEASURES.items():
+            value, exact = case[q].to_numpy(), case[exact_column].to_numpy()
+            err = np.abs(value / exact - 1.0)
+            est = gci.estimate(h, value)
+            rows.append(
+                dict(
+                    pool_model=model,
+                    outer_ratio=ratio,
+                    fraction=f,
+                    quantity=q,
+                    dx_um=h[0],
+                    value=value[0],
+                    exact=exact[0],
+                    error=value[0] / exact[0] - 1.0,
+                    order_fine=float(np.log(err[1] / err[0]) / np.log(h[1] / h[0])),
+                    order_coarse=float(np.log(err[2] / err[1]) / np.log(h[2] / h[1])),
+                    extrapolated=est.extrapolated,
+                    extrapolated_error=est.extrapolated / exact[0] - 1.0,
+                    gci_fine=est.gci_fine,
+                )
+            )
+    return pd.DataFrame(rows)

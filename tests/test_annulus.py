@@ -1,0 +1,101 @@
+"""The pressurised annulus (sphgag.studies.annulus): the engine against the exact solution below the prescribed law's
+limit of existence, and no state above it."""
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from sphgag.studies import annulus
+
+
+@pytest.fixture(scope="module")
+def matrix(ci_config):
+    b = ci_config["bilayer"]
+    return dict(
+        shear_modulus_kPa=b["elastin_shear_modulus_kPa"],
+        lame_lambda_kPa=b["lame_lambda_kPa"],
+        hourglass_modulus_kPa=b["hourglass_modulus_kPa"],
+    )
+
+
+def study(ci_config, matrix, model, dx, fractions, max_volume_ratio=40.0):
+    va = dict(
+        radius_um=15.0,
+        outer_ratios=[2.0],
+        fractions=fractions,
+        beyond=1.05,
+        dx_um=dx,
+        steps=10,
+        max_volume_ratio=max_volume_ratio,
+    )
+    return annulus.annulus_study(va, matrix, ci_config["gag"], ci_config["numerics"], model)
+
+
+@pytest.fixture(scope="module")
+def pool_of_particles(ci_config, matrix):
+    """The paper's pool of particles in B/A = 2 at dx = 1.41 um: half the limit, 0.9 of it, and 1.05 times it."""
+    return study(ci_config, matrix, "particles", [1.41], [0.5, 0.9])
+
+
+def test_pool_of_particles_at_half_the_limit_is_the_exact_solution(pool_of_particles):
+    """B/A = 2, Pi = 0.5 of the pool's limit (0.5 x 63.09 kPa, close to 0.5 mu ln 2): volume ratio and hoop stress at
+    the hole within 1 % of the exact solution at dx = 1.41 um (measured: -0.21 % and -0.66 %; at 1 um -0.11 % and
+    +0.09 %)."""
+    half = pool_of_particles[pool_of_particles.fraction == 0.5].iloc[0]
+    assert half.limit_kind == "limit point"
+    assert abs(half.volume_error) < 0.01
+    assert abs(half.lining_hoop_error) < 0.01
+    assert half.residual < 1e-4
+
+
+def test_no_gag_particle_passes_the_lining_below_the_limit(pool_of_particles):
+    """Up to 0.9 of the limit the pool's rings stay inside its lining, as in the exact solution."""
+    below = pool_of_particles[pool_of_particles.fraction < 1.0]
+    assert below.state.all()
+    assert (below.ring_crossing_um < 0.0).all()
+
+
+@pytest.mark.parametrize("model", ["particles", "hole"])
+def test_above_the_limit_no_run_reports_a_state(ci_config, matrix, pool_of_particles, model):
+    """At 1.05 times the largest pressure the exact solution holds: load control finds no state, and volume control
+    finds the discrete limit point (the pool of particles, within 1 % of the exact one at dx = 1.41 um) or the pressure
+    still rising towards the saturation (the hole at dx = 2 um: 62.6 kPa held at J = 40, 0.7 % above the exact
+    saturation pressure, which the discretisation's error allows), and says so."""
+    table = pool_of_particles if model == "particles" else study(ci_config, matrix, "hole", [2.0], [0.5])
+    above = table[table.fraction > 1.0].iloc[0]
+    assert not above.state
+    assert "load control" in above.beyond_reason
+    top = above.limit_pressure_kPa
+    if model == "particles":
+        assert above.beyond_end == "limit point"
+        assert above.discrete_limit_kPa == pytest.approx(top, rel=0.01)
+    else:
+        assert above.limit_kind == "saturation"
+        assert above.beyond_end == "no equilibrium" and "still rising" in above.beyond_reason
+        assert above.largest_held_kPa == pytest.approx(top, rel=0.02) and above.largest_held_kPa < above.pressure_kPa
+
+
+@pytest.mark.xfail(strict=True, reason="measured: the hole's hoop stress is 6-13 % off at half its limit, growing")
+def test_hole_hoop_stress_at_half_the_limit(ci_config, matrix):
+    """The empty hole at half its saturation pressure: the hoop stress at the hole within 1 % at dx = 1.41 um. It is
+    not (+6.2, +9.8, +13.4 % at dx = 2, 1.41, 1 um): the particles next to a free surface carry a mean-stress error (the elastin is nearly incompressible,
+    lambda / mu = 111) that refinement does not remove (docs/physics.md, "The pressurised annulus")."""
+    half = study(ci_config, matrix, "hole", [1.41], [0.5], max_volume_ratio=2.0).query("fraction == 0.5").iloc[0]
+    assert abs(half.lining_hoop_error) < 0.01
+
+
+def test_orders_of_three_spacings_with_known_errors():
+    """The observed order from errors e = C h^p at three spacings is p, and the GCI's extrapolated value is exact."""
+    h = np.array([1.0, 1.5, 2.25])
+    rows = [
+        dict(pool_model="hole", outer_ratio=2.0, fraction=0.5, state=True, dx_um=d,
+             volume_ratio=3.0 * (1 + 0.02 * d**2), volume_ratio_exact=3.0,
+             lining_hoop_kPa=50.0 * (1 - 0.03 * d), lining_hoop_exact_kPa=50.0)
+        for d in h
+    ]  # fmt: skip
+    o = annulus.orders(pd.DataFrame(rows)).set_index("quantity")
+    assert o.loc["volume_ratio", "order_fine"] == pytest.approx(2.0)
+    assert o.loc["volume_ratio", "order_coarse"] == pytest.approx(2.0)
+    assert o.loc["lining_hoop_kPa", "order_fine"] == pytest.approx(1.0)
+    assert o.loc["volume_ratio", "extrapolated"] == pytest.approx(3.0)
+    assert o.loc["lining_hoop_kPa", "extrapolated"] == pytest.approx(50.0)
