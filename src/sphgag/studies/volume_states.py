@@ -1,0 +1,64 @@
+"""Figure 4's pools read at a given volume: the states of a swelling path at which a pool holds a volume ratio.
+
+Under the paper's law (eqs. 2.25-2.27, a prescribed Pi(c)) the pools of figure 4 swell many-fold, and near
+150 mEq/l ``d ln J / d ln c`` is about 5.5: the volume at a given concentration is ill-conditioned, so a small error of
+the discretisation in the pressure the wall holds becomes a large error in J. Read the other way, the concentration
+that holds a given volume ratio, and the stresses around the pool there, are well conditioned. This module finds
+those states on a path of :func:`sphgag.studies.protocols.swell_pool`: for each requested ``J``, from the last state
+of the path below it, the pool's volume ``J V_0`` is prescribed and the concentration is the unknown (the bordered
+Newton system of :func:`sphgag.engine.pool_volume.solve_at_volume`; ``V_0`` the pool's reference volume, ``J`` as
+``pool_volume_change + 1`` of :func:`sphgag.studies.protocols.pool_measurements`). A ``J`` beyond the path's last
+state is not reached (no state is extrapolated).
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+
+from ..engine import pool_volume, solver
+from ..engine.model import Model
+from ..engine.numerics import Numerics
+from . import protocols
+
+STAGE = "at volume"  # the stage of the states this module returns
+
+
+def volume_of(model: Model, state: protocols.PoolState) -> tuple[pool_volume.PoolVolume, float, float]:
+    """``(measure, V, V_0)``: the volume measure of the pool in the model ``state`` is in equilibrium with, the
+    pool's volume in ``state`` and its reference volume."""
+    at = protocols.state_model(model, state.cavity, state.x)
+    pool = pool_volume.PoolVolume.of(at, model.props.converting)
+    return pool, pool(at.evaluate(state.x, state.load)), float(np.sum(pool.V))
+
+
+def at_volume_ratios(
+    model: Model, states: list[protocols.PoolState], targets, numerics
+) -> dict[float, protocols.PoolState]:
+    """``{J: state}``: the state of the swelling path ``states`` (converted stage, in order of concentration) at
+    which the pool holds the volume ratio ``J``, for each ``J`` of ``targets`` that the path passes. Each is solved from
+    the last state below it, with the concentration as the unknown; its ``control`` is ``volume`` and its stage
+    :data:`STAGE`."""
+    numerics = Numerics.of(numerics)
+    opts = numerics.solver_options()
+    path = [s for s in states if s.stage == "converted"]
+    if not path:
+        return {}
+    measured = [volume_of(model, s) for s in path]
+    ratios = np.array([v / v0 for _, v, v0 in measured])
+    out = {}
+    for J in sorted(float(t) for t in targets):
+        below = np.flatnonzero(ratios <= J)
+        if below.size == 0 or below[-1] == len(path) - 1:  # not passed by the path: no state is extrapolated
+            continue
+        k = int(below[-1])
+        start, (pool, _, v0) = path[k], measured[k]
+        at = protocols.state_model(model, start.cavity, start.x)
+        vs = pool_volume.solve_at_volume(
+            at, pool, start.x, start.load, J * v0, opts["tol"], opts["max_iter"], f"{model.name}_J{J:g}"
+        )
+        reached = solver.State(vs.load, vs.x, None, vs.convergence)
+        state = protocols.PoolState.of(STAGE, vs.concentration, reached, "volume", at, start.pool_model)
+        out[J] = replace(state, path_end=start.path_end, end_reason=start.end_reason)
+    return out
