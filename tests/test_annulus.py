@@ -78,8 +78,8 @@ def test_above_the_limit_no_run_reports_a_state(ci_config, matrix, pool_of_parti
 @pytest.mark.xfail(strict=True, reason="measured: the hole's hoop stress is 6-13 % off at half its limit, growing")
 def test_hole_hoop_stress_at_half_the_limit(ci_config, matrix):
     """The empty hole at half its saturation pressure: the hoop stress at the hole within 1 % at dx = 1.41 um. It is
-    not (+6.2, +9.8, +13.4 % at dx = 2, 1.41, 1 um): the particles next to a free surface carry a mean-stress error (the elastin is nearly incompressible,
-    lambda / mu = 111) that refinement does not remove (docs/physics.md, "The pressurised annulus")."""
+    not (+6.2, +9.8, +13.4 % at dx = 2, 1.41, 1 um): the particles next to a free surface carry a stress error that
+    refinement does not remove (docs/physics.md, "The pressurised annulus")."""
     half = study(ci_config, matrix, "hole", [1.41], [0.5], max_volume_ratio=2.0).query("fraction == 0.5").iloc[0]
     assert abs(half.lining_hoop_error) < 0.01
 

@@ -16,6 +16,6 @@ with runlog.run("verify_annulus", sm.log[0]) as log:
     annulus.exact_curves(table, sm.params.radius, sm.params.matrix, sm.params.gag).to_csv(sm.output.exact, index=False)
     for r in orders.itertuples():
         log.info(
-            "%s B/A=%g at %.2f of the limit: %s %+.2f %% at dx = %g um, observed order %.2f (finer pair) %.2f (coarser)",
+            "%s B/A=%g at %.2f of the limit: %s %+.2f %% at dx = %g um, observed order %.2f (finer pair), %.2f",
             r.pool_model, r.outer_ratio, r.fraction, r.quantity, 100 * r.error, r.dx_um, r.order_fine, r.order_coarse,
         )  # fmt: skip

@@ -232,9 +232,9 @@ def continue_path(
     rises, the state at exactly that concentration is solved by concentration control from the bracketing state
     and returned too. Stops at a limit point, when the targets are done, when the volume reaches ``max_ratio``
     times the pool's reference volume, or where volume control fails. ``parameter``: the load's material value that
-    plays ``c`` (``concentration``, or ``swelling_pressure`` for a prescribed pressure). ``options``: the solver options of the path
-    (:class:`sphgag.engine.solver.PathOptions`; Newton's ``tol`` and ``max_iter`` are used); an option they do not
-    know raises ``ValueError`` naming it.
+    plays ``c`` (``concentration``, or ``swelling_pressure`` for a prescribed pressure). ``options``: the solver
+    options of the path (:class:`sphgag.engine.solver.PathOptions`; Newton's ``tol`` and ``max_iter`` are used); an
+    option they do not know raises ``ValueError`` naming it.
     """
     run = run or model.name
     opts = solver.PathOptions.of(options)

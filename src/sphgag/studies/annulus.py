@@ -125,7 +125,9 @@ def annulus_study(va: dict, matrix: dict, gag: dict, numerics, pool_model: str, 
             for f, p in zip(fractions, pressures):
                 row = dict(case, fraction=f, pressure_kPa=p, state=p in at)
                 if p in at:
-                    row.update(swollen_pool.measure_circle(model, at[p], cavity.circular_pool(A, B, m_solid, g_solid, p), h))
+                    row.update(
+                        swollen_pool.measure_circle(model, at[p], cavity.circular_pool(A, B, m_solid, g_solid, p), h)
+                    )
                     if log is not None:
                         log.info(
                             "[%s B/A=%g] %.2f of the limit (%.2f kPa): volume ratio %.3f (exact %.3f, %+.2f %%), "

@@ -21,8 +21,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import pandas as pd
 
 SAFETY_FACTOR = 1.25  # three grids (Celik et al. 2008)
+CAUTIOUS_SAFETY_FACTOR = 3.0  # an observed order outside ORDER_RANGE (Roache 1998)
+ORDER_RANGE = (0.5, 3.0)  # where an observed order is taken to be in its asymptotic range
 
 
 @dataclass(frozen=True)
@@ -84,3 +87,31 @@ def estimate(spacings, values, max_iter: int = 200, tol: float = 1e-12) -> Estim
     extrapolated = (growth * phi1 - phi2) / (growth - 1.0)
     gci = SAFETY_FACTOR * abs(eps21 / phi1) / (growth - 1.0) if phi1 != 0.0 else np.nan
     return Estimate(h1, phi1, float(p), float(extrapolated), float(gci), s < 0)
+
+
+TIDY_RESULTS = ["observed_order", "extrapolated", "gci_fine", "order_in_range"]
+
+
+def tidy(values: pd.DataFrame, keys) -> pd.DataFrame:
+    """Per group of ``keys`` of the long table ``values`` (columns ``keys``, ``dx_um`` and ``value``), the
+    :class:`Estimate` of its three finest spacings on every row of the group (:data:`TIDY_RESULTS`; NaN where the
+    group has fewer than three finite values). Where the observed order lies outside :data:`ORDER_RANGE`,
+    ``order_in_range`` is False and the GCI is Roache's cautious one: the safety factor
+    :data:`CAUTIOUS_SAFETY_FACTOR` with the order clipped to that range."""
+    out = []
+    for _, group in values.groupby(list(keys), sort=False, dropna=False):
+        group = group.sort_values("dx_um")
+        finest = group[np.isfinite(group.value.to_numpy(dtype=float))].iloc[:3]
+        e = estimate(finest.dx_um, finest.value) if len(finest) == 3 else None
+        order, extrapolated, gci, in_range = np.nan, np.nan, np.nan, False
+        if e is not None and np.isfinite(e.order):
+            order, extrapolated, gci = e.order, e.extrapolated, e.gci_fine
+            in_range = ORDER_RANGE[0] <= e.order <= ORDER_RANGE[1]
+            if not in_range:
+                h = np.sort(finest.dx_um.to_numpy(dtype=float))
+                phi = finest.sort_values("dx_um").value.to_numpy(dtype=float)
+                p = float(np.clip(e.order, *ORDER_RANGE))
+                gci = CAUTIOUS_SAFETY_FACTOR * abs((phi[1] - phi[0]) / phi[0]) / ((h[1] / h[0]) ** p - 1.0)
+        out.append(group.assign(observed_order=order, extrapolated=extrapolated, gci_fine=gci, order_in_range=in_range))
+    columns = list(values.columns) + TIDY_RESULTS
+    return pd.concat(out, ignore_index=True)[columns] if out else pd.DataFrame(columns=columns)

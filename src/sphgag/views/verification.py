@@ -252,11 +252,15 @@ def verification_annulus(table: pd.DataFrame, orders: pd.DataFrame, exact: pd.Da
         curve = exact[(exact.pool_model == model) & (exact.outer_ratio == ratio)]
         ax.plot(curve.volume_ratio, curve.pressure_kPa / top, color="k", lw=1.0, label="exact (engine's laws)")
         if model == "hole":
-            ax.plot(curve.volume_ratio, curve.incompressible_kPa / top, color="0.5", lw=0.8, ls=":", label="incompressible")
+            ax.plot(
+                curve.volume_ratio, curve.incompressible_kPa / top, color="0.5", lw=0.8, ls=":", label="incompressible"
+            )
         ax.axhline(1.0, color="0.6", lw=0.6, ls="--")
         for dx, g in case.groupby("dx_um"):
             below = g[(g.fraction < 1.0) & g.state]
-            ax.plot(below.volume_ratio, below.fraction, "o", ms=3.5, mfc="none", color=colours[dx], label=f"dx = {dx:g} um")
+            ax.plot(
+                below.volume_ratio, below.fraction, "o", ms=3.5, mfc="none", color=colours[dx], label=f"dx = {dx:g} um"
+            )
             above = g[g.fraction > 1.0]
             for r in above.itertuples():
                 held = r.discrete_limit_kPa if r.beyond_end == "limit point" else r.largest_held_kPa
@@ -283,9 +287,8 @@ def verification_annulus(table: pd.DataFrame, orders: pd.DataFrame, exact: pd.Da
     ratios = sorted(table.outer_ratio.unique())
     hues = dict(zip(ratios, sns.color_palette("Dark2", len(ratios)).as_hex()))
     below = table[(table.fraction < 1.0) & table.state]
-    for ax, (quantity, error, title) in zip(
-        axes[1],
-        (("volume_ratio", "volume_error", "(a) pool volume ratio"), ("lining_hoop_kPa", "lining_hoop_error", "(b) hoop stress at the hole")),
+    for ax, (error, title) in zip(
+        axes[1], (("volume_error", "(a) pool volume ratio"), ("lining_hoop_error", "(b) hoop stress at the hole"))
     ):
         for (model, ratio, f), g in below.groupby(["pool_model", "outer_ratio", "fraction"]):
             g = g.sort_values("dx_um")
@@ -310,7 +313,8 @@ def verification_annulus(table: pd.DataFrame, orders: pd.DataFrame, exact: pd.Da
     ax = axes[1][3]
     crossing = below[below.pool_model == "particles"]
     for (ratio, dx), g in crossing.groupby(["outer_ratio", "dx_um"]):
-        ax.plot(g.fraction, g.ring_crossing_um, "-o", ms=3, lw=0.8, color=colours[dx], ls="-" if ratio == ratios[0] else "--",
+        style = "-" if ratio == ratios[0] else "--"
+        ax.plot(g.fraction, g.ring_crossing_um, style, marker="o", ms=3, lw=0.8, color=colours[dx],
                 label=f"B/A {ratio:g}, dx {dx:g}")  # fmt: skip
     ax.axhline(0.0, color="0.6", lw=0.6)
     ax.set(xlabel="Pi / largest exact Pi", ylabel="GAG beyond the lining (um)", title="(c) order of the rings")

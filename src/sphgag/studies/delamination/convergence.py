@@ -5,7 +5,6 @@ pool and a pair) grown from the passive wall pressurised at each particle spacin
 
 from __future__ import annotations
 
-import numpy as np
 import pandas as pd
 
 from ...engine.numerics import Numerics
@@ -26,6 +25,7 @@ GCI_COLUMNS = [
     "observed_order",
     "extrapolated",
     "gci_fine",
+    "order_in_range",
 ]
 
 
@@ -57,28 +57,14 @@ def gci_table(convergence: pd.DataFrame) -> pd.DataFrame:
     """``results/delamination/gci.csv``: per charge law, criterion, case and event concentration
     (:data:`CONVERGED_QUANTITIES`), its value at every spacing of the resolution study, and, where there are three
     spacings, the observed order, the extrapolated value and the fine-grid convergence index of the three finest
-    (:func:`sphgag.studies.gci.estimate`; NaN where the event did not happen at all three)."""
-    rows = []
+    (:func:`sphgag.studies.gci.tidy`; NaN where the event did not happen at all three)."""
     keys = ["charge_law", "criterion", "case"]
-    for (law, criterion, case), runs in convergence.groupby(keys, sort=False):
-        runs = runs.sort_values("dx_um")
-        for quantity in CONVERGED_QUANTITIES:
-            if quantity not in runs or runs[quantity].isna().all():
-                continue
-            finest = runs.iloc[:3]
-            e = gci.estimate(finest.dx_um, finest[quantity]) if len(finest) == 3 else None
-            for r in runs.itertuples():
-                rows.append(
-                    dict(
-                        charge_law=law,
-                        criterion=criterion,
-                        case=case,
-                        quantity=quantity,
-                        dx_um=float(r.dx_um),
-                        value=float(getattr(r, quantity)),
-                        observed_order=e.order if e else np.nan,
-                        extrapolated=e.extrapolated if e else np.nan,
-                        gci_fine=e.gci_fine if e else np.nan,
-                    )
-                )
-    return pd.DataFrame(rows, columns=GCI_COLUMNS)
+    present = [q for q in CONVERGED_QUANTITIES if q in convergence and convergence[q].notna().any()]
+    values = [
+        runs[keys + ["dx_um"]].assign(quantity=q, value=runs[q].astype(float))
+        for _, runs in convergence.groupby(keys, sort=False)
+        for q in present
+    ]
+    if not values:
+        return pd.DataFrame(columns=GCI_COLUMNS)
+    return gci.tidy(pd.concat(values, ignore_index=True), keys + ["quantity"])[GCI_COLUMNS]
