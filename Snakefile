@@ -82,6 +82,7 @@ rule resolution:
     convergence index of the delamination's event concentrations."""
     input:
         rules.swelling_convergence_figure.output,
+        rules.swelling_gci.output,
         rules.delamination_convergence.output,
         rules.delamination_gci.output,
 

@@ -64,3 +64,32 @@ def test_values_whose_differences_grow_with_refinement_have_no_order():
     e = gci.estimate([4.0, 2.83, 2.0], [116.72, 108.28, 95.47])
     assert e.diverging and np.isnan(e.order) and np.isnan(e.extrapolated) and np.isnan(e.gci_fine)
     assert not gci.estimate([4.0, 2.83, 2.0], [100 + 4.0, 100 + 2.83, 100 + 2.0]).diverging
+
+
+def test_the_swelling_gci_table_reads_each_quantity_at_its_volume_ratio_and_concentration():
+    """Synthetic rows of the resolution study at three spacings: the concentration that holds J = 5 converges at
+    second order, the tip stress at 100 mEq/l at fourth (outside 0.5-3: Roache's cautious GCI, flagged)."""
+    import pandas as pd
+
+    from sphgag.studies import convergence, volume_states
+
+    rows = []
+    for h in (1.5, 2.12, 3.0):
+        common = dict(charge_law="prescribed", pool_model="particles", case="I", dx_um=h, top_circ_stress_kPa=400.0)
+        rows.append(dict(common, stage=volume_states.STAGE, concentration_mEq_l=120 + h**2, pool_volume_change=4.0,
+                         tip_radial_stress_kPa=50.0))  # fmt: skip
+        rows.append(dict(common, stage="converted", concentration_mEq_l=100.0, pool_volume_change=2.0 + 0.1 * h,
+                         tip_radial_stress_kPa=80 + h**4))  # fmt: skip
+    table = convergence.gci_table(pd.DataFrame(rows), [100.0], "passive", 103.0)
+    assert list(table.columns) == convergence.GCI_COLUMNS
+    c = table[(table.quantity == "concentration_at_volume_mEq_l") & (table["at"] == 5.0)]
+    assert (
+        len(c) == 3 and c.observed_order.iloc[0] == pytest.approx(2.0) and c.extrapolated.iloc[0] == pytest.approx(120)
+    )
+    assert c.order_in_range.all()
+    j = table[(table.quantity == "volume_ratio") & (table["at"] == 100.0)]
+    assert j.value.min() == pytest.approx(3.15) and j.observed_order.iloc[0] == pytest.approx(1.0)
+    tip = table[(table.quantity == "tip_radial_stress_kPa") & (table["at"] == 100.0)].iloc[0]
+    assert tip.observed_order == pytest.approx(4.0) and not tip.order_in_range
+    e21 = abs(((80 + 2.12**4) - (80 + 1.5**4)) / (80 + 1.5**4))
+    assert tip.gci_fine == pytest.approx(3.0 * e21 / ((2.12 / 1.5) ** 3.0 - 1.0))

@@ -447,12 +447,23 @@ def _swelling(config: dict) -> list[str]:
     """The pool models carry a configured charge law, and the resolution study's cases are pools of the sweeps."""
     sw = config.get("swelling", {})
     problems = _pool_models(sw.get("pool_models", []), config.get("gag", {}).get("charge_laws", []))
-    for k, name in enumerate(config.get("swelling_convergence", {}).get("cases", [])):
+    sc = config.get("swelling_convergence", {})
+    for k, name in enumerate(sc.get("cases", [])):
         if name not in sw.get("cases", {}):
             problems.append(
                 f"swelling_convergence.cases[{k}] = {name!r} is not a pool of swelling.cases "
                 f"({', '.join(sw.get('cases', {}))})"
             )
+    if "max_concentration_mEq_l" in sw and "concentration_points" in sw:
+        top, points = sw["max_concentration_mEq_l"], sw["concentration_points"]
+        ramp = [top * i / (points - 1) for i in range(points)]
+        for k, c in enumerate(sc.get("gci_concentrations_mEq_l", [])):
+            if not any(abs(v - c) < 1e-9 for v in ramp):
+                steps = ", ".join(f"{v:g}" for v in ramp[1:])
+                problems.append(
+                    f"swelling_convergence.gci_concentrations_mEq_l[{k}] = {c:g} is not a step of the swelling ramp "
+                    f"({steps} mEq/l)"
+                )
     return problems
 
 

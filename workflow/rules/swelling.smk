@@ -95,6 +95,7 @@ SC_SIMULATION = dict(
     settings=swell_settings,
     cases={c: SW["cases"][c] for c in SC["cases"]},
     pressure=SC["pressure_mmHg"],
+    volume_ratios=SC["volume_ratios"],
 )
 # the key of a run of the study: its pools, under one charge law and pool model, at one spacing
 SC_POOLS = "{law}/{pool}"
@@ -176,3 +177,33 @@ rule swelling_convergence:
         "../envs/sphgag.yaml"
     script:
         "../scripts/concat_tables.py"
+
+
+rule swelling_gci:
+    """The discretisation error of figure 4's quantities (Celik et al. 2008): at the study's volume ratios and at the
+    stated concentrations, the observed order, the extrapolated value and the GCI of the finest spacing."""
+    input:
+        code=[MODULES[m] for m in ("studies/convergence.py", "studies/gci.py", "studies/volume_states.py")],
+        table=rules.swelling_convergence.output[0],
+    output:
+        report(
+            "results/swelling/gci.csv",
+            caption="../report/swelling_gci.rst",
+            category="3 Swelling",
+            labels={"result": "Discretisation error of figure 4's quantities (GCI)"},
+        ),
+    log:
+        "logs/swelling_gci.log",
+    benchmark:
+        "results/benchmarks/swelling_gci.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
+    params:
+        concentrations=SC["gci_concentrations_mEq_l"],
+        pressure=SC["pressure_mmHg"],
+    script:
+        "../scripts/swelling_gci.py"

@@ -14,7 +14,16 @@ with runlog.run(run, sm.log[0]) as log:
     p = sm.params
     # each case's converged states up to the end of its path (each records how the path ended)
     states = convergence.swell_cases(
-        float(sm.wildcards.dx), p.bilayer, p.numerics, p.homeostasis, p.settings, p.gag, p.cases, p.pressure, name=run
+        float(sm.wildcards.dx),
+        p.bilayer,
+        p.numerics,
+        p.homeostasis,
+        p.settings,
+        p.gag,
+        p.cases,
+        p.pressure,
+        name=run,
+        volume_ratios=p.volume_ratios,
     )
     ends = {case: ss[-1].path_end for case, ss in states.items()}
     params = dict(dx=sm.wildcards.dx, **dict(p))

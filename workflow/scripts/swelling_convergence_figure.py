@@ -10,6 +10,7 @@ sm = snakemake  # noqa: F821
 threads.use(sm.threads)
 with runlog.run("swelling_convergence_figure", sm.log[0]):
     table = pd.read_csv(sm.input.table)
+    table = table[table.stage == "converted"]  # the path (the states at a volume ratio are in results/swelling/gci.csv)
     style.finite_or_raise(table, ["tip_radial_stress_kPa", "pool_volume_change"], "swelling_convergence")
     style.save(
         swelling.swelling_convergence(table, sm.params.laws),

@@ -212,6 +212,45 @@ def solve_at_volume(
     raise solver.NotConverged(run, load, f"volume control: no convergence in {max_iter} iterations")
 
 
+def reach_volume(
+    model: Model,
+    pool: PoolVolume,
+    x0: np.ndarray,
+    load0: Load,
+    target: float,
+    *,
+    run: str,
+    tol: float,
+    max_iter: int,
+    growth: float = 0.05,
+    min_growth: float = 1e-3,
+    parameter: str = "concentration",
+) -> VolumeState:
+    """The equilibrium whose pool volume is ``target``, reached from the converged state ``(x0, load0)`` through
+    volumes that change by at most ``growth`` (relative) per step, halved where a step fails, down to ``min_growth``
+    (:func:`solve_at_volume` at each; raises :class:`sphgag.engine.solver.NotConverged` below that)."""
+    x, load = x0, load0
+    volume = pool(model.evaluate(x, load))
+    step = growth
+    while True:
+        ratio = target / volume
+        last = abs(ratio - 1.0) <= step
+        goal = target if last else volume * (1.0 + np.sign(ratio - 1.0) * step)
+        try:
+            s = solve_at_volume(model, pool, x, load, goal, tol, max_iter, run, parameter)
+        except solver.SimulationError as exc:
+            step *= 0.5
+            if step < min_growth:
+                raise solver.NotConverged(
+                    run, load, f"the pool's volume does not reach its target ({exc.reason})"
+                ) from exc
+            continue
+        if last:
+            return s
+        x, load, volume = s.x, s.load, s.volume
+        step = min(step * 1.5, growth)
+
+
 def continue_path(
     model: Model,
     last: solver.State,

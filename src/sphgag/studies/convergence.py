@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import pandas as pd
 
-from . import artery, protocols
+from . import artery, gci, protocols, volume_states
 
 COLUMNS = [
     "dx_um",
@@ -40,19 +40,22 @@ def swell_cases(
     cases: dict,
     pressure_mmHg: float,
     name: str = "convergence",
+    volume_ratios=(),
 ) -> dict[str, list[protocols.PoolState]]:
     """The converged states of every study pool at particle spacing ``dx`` [um]: the passive wall pressurised at
-    this spacing, then each pool converted and swollen (:func:`sphgag.studies.protocols.swell_pool`)."""
+    this spacing, then each pool converted and swollen (:func:`sphgag.studies.protocols.swell_pool`), followed by
+    the states at which it holds each of ``volume_ratios`` (:func:`sphgag.studies.volume_states.at_volume_ratios`,
+    stage ``at volume``)."""
     p = dict(bilayer, dx_um=float(dx))
     wall = artery.bilayer_model(p, numerics, name=name)
     h = protocols.homeostasis(wall, numerics, homeostasis)
     start = protocols.pressurise(wall, h.state, pressure_mmHg, numerics)
-    return {
-        case: protocols.swell_pool(
-            case_model(dx, bilayer, numerics, gag, entry, f"{name}_{case}"), start, numerics, swelling
-        )
-        for case, entry in cases.items()
-    }
+    out = {}
+    for case, entry in cases.items():
+        model = case_model(dx, bilayer, numerics, gag, entry, f"{name}_{case}")
+        path = protocols.swell_pool(model, start, numerics, swelling)
+        out[case] = path + list(volume_states.at_volume_ratios(model, path, volume_ratios, numerics).values())
+    return out
 
 
 def case_model(dx: float, bilayer: dict, numerics: dict, gag: dict, entry: dict, name: str):
@@ -72,15 +75,51 @@ def measure(
     probe_length: float,
     name: str = "convergence",
 ) -> pd.DataFrame:
-    """Rows of ``results/swelling/convergence.csv`` for one particle spacing (converted stage only): the pool
-    stresses (:func:`sphgag.studies.protocols.pool_table`) of the states of :func:`swell_cases`."""
+    """Rows of ``results/swelling/convergence.csv`` for one particle spacing (the converted pools on their path, and
+    at their volume ratios): the pool stresses (:func:`sphgag.studies.protocols.pool_table`) of the states of
+    :func:`swell_cases`."""
     tables = []
     for case, entry in cases.items():
         model = case_model(dx, bilayer, numerics, gag, entry, f"{name}_{case}")
         table = protocols.pool_table(model, states[case], artery.pool_sector(entry), probe_length, gag)
-        tables.append(table[table.stage == "converted"].assign(dx_um=float(dx), particles=model.n, case=case))
+        kept = table[table.stage.isin(["converted", volume_states.STAGE])]
+        tables.append(kept.assign(dx_um=float(dx), particles=model.n, case=case))
     out = pd.concat(tables, ignore_index=True)
     return out[COLUMNS + [c for c in out.columns if c not in COLUMNS]]
+
+
+GCI_KEYS = ["charge_law", "pool_model", "model", "case", "pressure_mmHg", "quantity", "at"]
+GCI_COLUMNS = GCI_KEYS[:-1] + ["at", "dx_um", "value", "observed_order", "extrapolated", "gci_fine", "order_in_range"]
+AT_VOLUME = {  # quantity at a given volume ratio J <- its column
+    "concentration_at_volume_mEq_l": "concentration_mEq_l",
+    "tip_radial_stress_at_volume_kPa": "tip_radial_stress_kPa",
+    "top_circ_stress_at_volume_kPa": "top_circ_stress_kPa",
+}
+AT_CONCENTRATION = {  # quantity at a given concentration <- its column
+    "tip_radial_stress_kPa": "tip_radial_stress_kPa",
+    "top_circ_stress_kPa": "top_circ_stress_kPa",
+    "volume_ratio": "pool_volume_change",
+}
+
+
+def gci_table(table: pd.DataFrame, concentrations, model: str, pressure_mmHg: float) -> pd.DataFrame:
+    """``results/swelling/gci.csv`` from the resolution study's table: per charge law, pool model, case and quantity,
+    at each volume ratio of the study (``at`` = J: the concentration that holds it, the tip radial and top hoop
+    stresses there) and at each of ``concentrations`` (``at`` in mEq/l: the tip radial and top hoop stresses and the
+    volume ratio J), its value at every spacing with the observed order, the extrapolated value and the GCI of the
+    three finest (:func:`sphgag.studies.gci.tidy`). ``model``, ``pressure_mmHg``: the study's wall and pressure."""
+    base = table.assign(model=model, pressure_mmHg=float(pressure_mmHg), volume_ratio=table.pool_volume_change + 1.0)
+    rows = []
+    at_volume = base[base.stage == volume_states.STAGE]
+    for quantity, column in AT_VOLUME.items():
+        rows.append(at_volume.assign(quantity=quantity, at=at_volume.volume_ratio.round(6), value=at_volume[column]))
+    on_path = base[(base.stage == "converted") & base.concentration_mEq_l.isin([float(c) for c in concentrations])]
+    for quantity, column in AT_CONCENTRATION.items():
+        value = on_path[column] + (1.0 if column == "pool_volume_change" else 0.0)
+        rows.append(on_path.assign(quantity=quantity, at=on_path.concentration_mEq_l, value=value))
+    values = pd.concat(rows, ignore_index=True)[GCI_KEYS + ["dx_um", "value"]]
+    values = values.sort_values(["charge_law", "pool_model", "case", "quantity", "at", "dx_um"], kind="stable")
+    return gci.tidy(values, GCI_KEYS)[GCI_COLUMNS]
 
 
 def bar(table: pd.DataFrame, concentration: float, columns=("tip_radial_stress_kPa", "pool_volume_change")):

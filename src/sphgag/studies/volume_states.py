@@ -8,11 +8,12 @@ those states on a path of :func:`sphgag.studies.protocols.swell_pool`: for each 
 of the path below it, the pool's volume ``J V_0`` is prescribed and the concentration is the unknown (the bordered
 Newton system of :func:`sphgag.engine.pool_volume.solve_at_volume`; ``V_0`` the pool's reference volume, ``J`` as
 ``pool_volume_change + 1`` of :func:`sphgag.studies.protocols.pool_measurements`). A ``J`` beyond the path's last
-state is not reached (no state is extrapolated).
+state is not reached (no state is extrapolated), and one that volume control cannot reach is logged and left out.
 """
 
 from __future__ import annotations
 
+import logging
 from dataclasses import replace
 
 import numpy as np
@@ -21,6 +22,8 @@ from ..engine import pool_volume, solver
 from ..engine.model import Model
 from ..engine.numerics import Numerics
 from . import protocols
+
+log = logging.getLogger("sphgag")
 
 STAGE = "at volume"  # the stage of the states this module returns
 
@@ -55,9 +58,14 @@ def at_volume_ratios(
         k = int(below[-1])
         start, (pool, _, v0) = path[k], measured[k]
         at = protocols.state_model(model, start.cavity, start.x)
-        vs = pool_volume.solve_at_volume(
-            at, pool, start.x, start.load, J * v0, opts["tol"], opts["max_iter"], f"{model.name}_J{J:g}"
-        )
+        run = f"{model.name}_J{J:g}"
+        try:
+            vs = pool_volume.reach_volume(
+                at, pool, start.x, start.load, J * v0, run=run, tol=opts["tol"], max_iter=opts["max_iter"]
+            )
+        except solver.SimulationError as exc:
+            log.warning("[%s] no state at J = %g: %s", run, J, exc.reason)
+            continue
         reached = solver.State(vs.load, vs.x, None, vs.convergence)
         state = protocols.PoolState.of(STAGE, vs.concentration, reached, "volume", at, start.pool_model)
         out[J] = replace(state, path_end=start.path_end, end_reason=start.end_reason)
