@@ -15,7 +15,7 @@ import pandas as pd
 import pytest
 import yaml
 
-from sphgag.studies import delamination, pool_response
+from sphgag.studies import convergence, delamination, pool_response
 from sphgag.studies.claims import PAPER_POOL
 from sphgag.studies.protocols import POOL_MODELS
 
@@ -196,6 +196,7 @@ CONTRACT = {
         "max_residual",
     ],
     "results/delamination/gci.csv": delamination.GCI_COLUMNS,
+    "results/swelling/gci.csv": convergence.GCI_COLUMNS,
     "results/sensitivity/indices.csv": [
         "method",
         "charge_law",
@@ -247,6 +248,7 @@ REPORT_TABLES = [
     "results/homeostasis/summary.csv",
     "results/swelling/tip_stress.csv",
     "results/swelling/convergence.csv",
+    "results/swelling/gci.csv",
     "results/verification/elliptic_pool.csv",
     "results/verification/annulus.csv",
     "results/delamination/summary.csv",
