@@ -977,7 +977,7 @@ def test_everything_plans_every_job_the_configuration_defines(fresh_copy):
             # study, the sensitivity samples) and the measurements that check their states, not by the delamination
             lambda cfg: cfg["swelling"].update(conversion_steps=3),
             {"swell", "pool_stresses", "tip_stress", "fig4", "paraview_swelling", "swelling_convergence_dx"}
-            | {"swelling_convergence_stresses", "swelling_convergence", "swelling_convergence_figure"}
+            | {"swelling_convergence_stresses", "swelling_convergence", "swelling_convergence_figure", "swelling_gci"}
             | {"sensitivity_batch", "sensitivity_method", "sobol_design", "sensitivity_tables", "sensitivity_figure"}
             | {"delamination_map_figure", "variant", "variants_figure"},
         ),
