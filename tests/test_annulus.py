@@ -25,7 +25,6 @@ def study(ci_config, matrix, model, dx, fractions, max_volume_ratio=40.0):
         fractions=fractions,
         beyond=1.05,
         dx_um=dx,
-        steps=10,
         max_volume_ratio=max_volume_ratio,
     )
     return annulus.annulus_study(va, matrix, ci_config["gag"], ci_config["numerics"], model)

@@ -16,9 +16,9 @@ whose contents' bulk term adds a little pressure that falls again as they swell)
   contents of zero stiffness);
 * ``particles``: the paper's pool of GAG particles carrying Pi as their own stress (eq. 2.27 with the bulk term),
 
-each in annuli of ``outer_ratios`` B/A, at every spacing of ``dx_um``, swollen from rest in ``steps`` increments
-(:func:`ramp`) through ``fractions`` (below 1) of the largest pressure, every state measured against the
-exact solution (:func:`sphgag.studies.swollen_pool.measure_circle`: the volume ratio, the hoop stress at the hole,
+each in annuli of ``outer_ratios`` B/A, at every spacing of ``dx_um``, swollen from rest with the pool's volume as
+the control (:func:`swell_by_volume`) through ``fractions`` (below 1) of the largest pressure, every state measured
+against the exact solution (:func:`sphgag.studies.swollen_pool.measure_circle`: the volume ratio, the hoop stress at the hole,
 how far the pool's particles reach outside its lining). Then ``beyond`` (above 1) times the largest pressure
 (:func:`beyond_limit`): the engine must report that no equilibrium exists there, or the limit point its path
 reaches, never a state.
@@ -53,14 +53,22 @@ def limit(A: float, B: float, mat: inclusion.Materials) -> cavity.LimitPressure:
     return cavity.limit_pressure(A, B, cavity.Solid(mat.mu, mat.lam), cavity.Solid(mat.mu_gag, mat.lam_gag))
 
 
-def ramp(A: float, B: float, mat: inclusion.Materials, pressures, steps: int) -> list[float]:
-    """The path's pressures: ``steps`` increments of equal ratio in the exact pool volume ratio J, from J = 1 to the
-    J of the largest of ``pressures`` (so each step swells the pool alike, where equal pressure steps would crowd the
-    swelling near the limit), with ``pressures`` among them."""
-    m, g = cavity.Solid(mat.mu, mat.lam), cavity.Solid(mat.mu_gag, mat.lam_gag)
-    top = cavity.circular_pool(A, B, m, g, max(pressures)).volume_ratio
-    path = [cavity.pressure_for_volume_ratio(J, A, B, m, g) for J in np.geomspace(1.0, top, int(steps) + 1)[1:-1]]
-    return sorted(set(path) | {float(p) for p in pressures})
+def swell_by_volume(model, pressures, numerics: Numerics, max_ratio: float) -> tuple[dict, str]:
+    """``({Pi: converged state}, end)``: the pool swollen from rest with its volume as the control (steps of at most
+    5 %, the pressure the unknown: :func:`sphgag.engine.pool_volume.continue_path`), each of ``pressures`` solved by
+    load control from the state before it; ``end`` is ``complete`` or why the path stopped. Near the limit the
+    volume at a given pressure is ill-conditioned and load control creeps through ever smaller increments; a
+    prescribed volume is not, and every step converges in a few iterations."""
+    opts = numerics.solver_options()
+    rest = inclusion.pressure_load(0.0)
+    start = solver.follow_path(model, model.layout.X, rest, [rest], run=model.name, **opts)[-1]
+    members = np.flatnonzero(model.layout.inclusion)
+    path, reached = pool_volume.continue_path(
+        model, start, members, list(pressures), run=model.name, max_ratio=max_ratio, parameter="swelling_pressure",
+        **opts,
+    )  # fmt: skip
+    at = {s.load.material_value("swelling_pressure"): s for s in reached}
+    return at, "complete" if path.end == "complete" else f"{path.end}: {path.reason}"
 
 
 def beyond_limit(model, last, pressure_kPa: float, members: np.ndarray, numerics: Numerics, max_ratio: float) -> dict:
@@ -95,7 +103,7 @@ def beyond_limit(model, last, pressure_kPa: float, members: np.ndarray, numerics
 
 def annulus_study(va: dict, matrix: dict, gag: dict, numerics, pool_model: str, log=None) -> pd.DataFrame:
     """One row per (outer ratio, spacing, pressure fraction) of ``va`` (``radius_um``, ``outer_ratios``, ``dx_um``,
-    ``fractions``, ``beyond``, ``steps``, ``max_volume_ratio``): the pressure, the exact limit
+    ``fractions``, ``beyond``, ``max_volume_ratio``): the pressure, the exact limit
     (``limit_pressure_kPa``, ``limit_kind``, ``limit_volume_ratio``), ``path_end`` and, below the limit, the measures
     of :func:`sphgag.studies.swollen_pool.measure_circle` against the exact state; at ``beyond`` times the limit,
     what :func:`beyond_limit` found (no measures: there is no exact state)."""
@@ -111,7 +119,7 @@ def annulus_study(va: dict, matrix: dict, gag: dict, numerics, pool_model: str, 
         pressures = [f * top.pressure_kPa for f in fractions]
         for dx in va["dx_um"]:
             model = swollen_pool.circle_model(A, B, float(dx), mat, numerics, POOL_MODELS[pool_model])
-            at, end = swollen_pool.swell_along(model, ramp(A, B, mat, pressures, va["steps"]), numerics)
+            at, end = swell_by_volume(model, pressures, numerics, float(va["max_volume_ratio"]))
             case = dict(
                 pool_model=pool_model,
                 outer_ratio=float(ratio),
