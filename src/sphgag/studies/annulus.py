@@ -18,8 +18,8 @@ whose contents' bulk term adds a little pressure that falls again as they swell)
 
 each in annuli of ``outer_ratios`` B/A, at every spacing of ``dx_um``, swollen from rest with the pool's volume as
 the control (:func:`swell_by_volume`) through ``fractions`` (below 1) of the largest pressure, every state measured
-against the exact solution (:func:`sphgag.studies.swollen_pool.measure_circle`: the volume ratio, the hoop stress at the hole,
-how far the pool's particles reach outside its lining). Then ``beyond`` (above 1) times the largest pressure
+against the exact solution (:func:`sphgag.studies.swollen_pool.measure_circle`: the volume ratio, the hoop stress at
+the hole, how far the pool's particles reach outside its lining). Then ``beyond`` (above 1) times the largest pressure
 (:func:`beyond_limit`): the engine must report that no equilibrium exists there, or the limit point its path
 reaches, never a state.
 """
