@@ -277,7 +277,7 @@ def verification_annulus(table: pd.DataFrame, orders: pd.DataFrame, exact: pd.Da
         )
         ax.text(
             0.03, 0.97,
-            f"at {beyond.fraction.max():.2f} x the limit: {states} states\n"
+            f"at {beyond.fraction.max():.2f} x the limit: {states} state{'' if states == 1 else 's'}\n"
             + "; ".join(sorted(set(beyond.beyond_end.astype(str)))) + " (<: the largest Pi held)",
             transform=ax.transAxes, fontsize=6, va="top",
         )  # fmt: skip
