@@ -199,7 +199,7 @@ def solve_at_volume(
                 # watchdog (Chamberlain et al. 1982): where the path bends, a full step can raise the merit that the
                 # next full step brings below where it started; take both then, else backtrack from here
                 dx2, dc2 = _bordered_step(model, pool, trial, target, parameter, run)
-                second_load = _at(trial_load, max(c + dc + dc2, 0.0), parameter)
+                second_load = _at(trial_load, max(float(trial_load.material_value(parameter)) + dc2, 0.0), parameter)
                 second = model.evaluate(trial.x + dx2, second_load)
                 n_jac, n_eval = n_jac + 1, n_eval + 4
                 if _admissible(second) and merit(second) < (1.0 - 1e-4) * m0:

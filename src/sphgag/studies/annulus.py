@@ -50,7 +50,7 @@ def materials(pool_model: str, matrix: dict, gag: dict) -> inclusion.Materials:
 
 def limit(A: float, B: float, mat: inclusion.Materials) -> cavity.LimitPressure:
     """The largest pressure the exact solution of these laws holds (:func:`sphgag.physics.cavity.limit_pressure`)."""
-    return cavity.limit_pressure(A, B, cavity.Solid(mat.mu, mat.lam), cavity.Solid(mat.mu_gag, mat.lam_gag))
+    return cavity.limit_pressure(A, B, *swollen_pool.solids(mat))
 
 
 def swell_by_volume(model, pressures, numerics: Numerics, max_ratio: float) -> tuple[dict, str]:
@@ -109,7 +109,7 @@ def annulus_study(va: dict, matrix: dict, gag: dict, numerics, pool_model: str, 
     what :func:`beyond_limit` found (no measures: there is no exact state)."""
     numerics = Numerics.of(numerics)
     mat = materials(pool_model, matrix, gag)
-    m_solid, g_solid = cavity.Solid(mat.mu, mat.lam), cavity.Solid(mat.mu_gag, mat.lam_gag)
+    m_solid, g_solid = swollen_pool.solids(mat)
     A = float(va["radius_um"])
     fractions = sorted(float(f) for f in va["fractions"])
     rows = []
@@ -165,11 +165,11 @@ def exact_curves(table: pd.DataFrame, radius_um: float, matrix: dict, gag: dict,
     A = float(radius_um)
     for (model, ratio), case in table.groupby(["pool_model", "outer_ratio"], sort=True):
         mat = materials(model, matrix, gag)
-        m, g = cavity.Solid(mat.mu, mat.lam), cavity.Solid(mat.mu_gag, mat.lam_gag)
+        m, g = swollen_pool.solids(mat)
         B = float(ratio) * A
         top = case.limit_volume_ratio.iloc[0]
         if case.limit_kind.iloc[0] == "saturation":
-            top = 1.5 * float(np.nanmax(case.get("volume_ratio", pd.Series([2.0])).to_numpy(dtype=float)))
+            top = 1.5 * float(case.volume_ratio.max())
         for J in np.geomspace(1.0, top, points):
             rows.append(
                 dict(
@@ -186,9 +186,10 @@ def exact_curves(table: pd.DataFrame, radius_um: float, matrix: dict, gag: dict,
 def orders(table: pd.DataFrame) -> pd.DataFrame:
     """The observed order of each measure's error at three spacings (the finest three of each case): per
     (``pool_model``, ``outer_ratio``, ``fraction``, ``quantity``) the finest spacing's value, the exact value, its
-    relative error, the order ``ln(e_2/e_1) / ln(h_2/h_1)`` of the errors of the two finer spacings and of the two
-    coarser ones, and the grid convergence index estimate of the three values (:func:`sphgag.studies.gci.estimate`,
-    which does not know the exact value: its extrapolated value is checked against it)."""
+    relative error, the observed order of the errors (:func:`sphgag.studies.inclusion.observed_order`) of the two
+    finer spacings and of the two coarser ones, and the grid convergence index estimate of the three values
+    (:func:`sphgag.studies.gci.estimate`, which does not know the exact value: its extrapolated value is checked
+    against it)."""
     rows = []
     below = table[(table.fraction < 1.0) & table.state]
     for (model, ratio, f), case in below.groupby(["pool_model", "outer_ratio", "fraction"], sort=True):
@@ -198,7 +199,7 @@ def orders(table: pd.DataFrame) -> pd.DataFrame:
         h = case.dx_um.to_numpy()
         for q, exact_column in MEASURES.items():
             value, exact = case[q].to_numpy(), case[exact_column].to_numpy()
-            err = np.abs(value / exact - 1.0)
+            err = value / exact - 1.0
             est = gci.estimate(h, value)
             rows.append(
                 dict(
@@ -210,8 +211,8 @@ def orders(table: pd.DataFrame) -> pd.DataFrame:
                     value=value[0],
                     exact=exact[0],
                     error=value[0] / exact[0] - 1.0,
-                    order_fine=float(np.log(err[1] / err[0]) / np.log(h[1] / h[0])),
-                    order_coarse=float(np.log(err[2] / err[1]) / np.log(h[2] / h[1])),
+                    order_fine=inclusion.observed_order(h[:2], err[:2]),
+                    order_coarse=inclusion.observed_order(h[1:], err[1:]),
                     extrapolated=est.extrapolated,
                     extrapolated_error=est.extrapolated / exact[0] - 1.0,
                     gci_fine=est.gci_fine,

@@ -107,9 +107,8 @@ def tidy(values: pd.DataFrame, keys) -> pd.DataFrame:
         if e is not None and np.isfinite(e.order):
             order, extrapolated, gci = e.order, e.extrapolated, e.gci_fine
             in_range = ORDER_RANGE[0] <= e.order <= ORDER_RANGE[1]
-            if not in_range:
-                h = np.sort(finest.dx_um.to_numpy(dtype=float))
-                phi = finest.sort_values("dx_um").value.to_numpy(dtype=float)
+            if not in_range:  # finest: sorted by spacing
+                h, phi = finest.dx_um.to_numpy(dtype=float), finest.value.to_numpy(dtype=float)
                 p = float(np.clip(e.order, *ORDER_RANGE))
                 gci = CAUTIOUS_SAFETY_FACTOR * abs((phi[1] - phi[0]) / phi[0]) / ((h[1] / h[0]) ** p - 1.0)
         out.append(group.assign(observed_order=order, extrapolated=extrapolated, gci_fine=gci, order_in_range=in_range))

@@ -43,15 +43,11 @@ from . import inclusion
 
 
 def swell_from_rest(model, pressures, steps: int, numerics: Numerics) -> tuple[dict, str]:
-    """``(states, end)`` of :func:`swell_along` a path from rest in ``steps`` equal increments up to the largest of
-    ``pressures`` [kPa] (with the requested pressures among them)."""
+    """``({Pi: converged state}, end)`` on one path from rest in ``steps`` equal increments up to the largest of
+    ``pressures`` [kPa] (with the requested pressures among them): the states reached, and ``complete`` or why the
+    path ended (no state beyond its last equilibrium is returned)."""
     ramp = np.linspace(0.0, max(pressures), int(steps) + 1)[1:]
-    return swell_along(model, sorted(set(ramp.tolist()) | {float(p) for p in pressures}), numerics)
-
-
-def swell_along(model, loads, numerics: Numerics) -> tuple[dict, str]:
-    """``({Pi: converged state}, end)`` on one path from rest through the increasing pressures ``loads`` [kPa]: the
-    states reached, and ``complete`` or why the path ended (no state beyond its last equilibrium is returned)."""
+    loads = sorted(set(ramp.tolist()) | {float(p) for p in pressures})
     reached = {}
     try:
         solver.follow_path(
@@ -66,6 +62,12 @@ def swell_along(model, loads, numerics: Numerics) -> tuple[dict, str]:
     except solver.SimulationError as exc:
         return reached, str(exc)
     return reached, "complete"
+
+
+def solids(mat: inclusion.Materials) -> tuple[cavity.Solid, cavity.Solid]:
+    """The matrix and the pool's contents of ``mat`` as the exact solution's solids
+    (:class:`sphgag.physics.cavity.Solid`)."""
+    return cavity.Solid(mat.mu, mat.lam), cavity.Solid(mat.mu_gag, mat.lam_gag)
 
 
 def circle_model(A: float, B: float, dx: float, mat: inclusion.Materials, numerics: Numerics, pool_model: str):
@@ -151,8 +153,7 @@ def circle_study(
     numerics = Numerics.of(numerics)
     A, B = float(vc["radius_um"]), float(vc["outer_radius_um"])
     mat = inclusion.Materials.of(matrix, gag, bulk=True)
-    m_solid = cavity.Solid(mat.mu, mat.lam)
-    g_solid = cavity.Solid(mat.mu_gag, mat.lam_gag)
+    m_solid, g_solid = solids(mat)
     targets = sorted(float(j) for j in vc["volume_ratios"])
     pressures = [cavity.pressure_for_volume_ratio(j, A, B, m_solid, g_solid) for j in targets]
     rows = []
