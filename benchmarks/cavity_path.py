@@ -38,7 +38,9 @@ def trace(cfg: dict, dx: float, case: str, start: float, max_ratio: float) -> pd
     steps = protocols.concentration_steps(dict(sw))
     ramp = dict(sw, max_concentration_mEq_l=start, concentration_points=int(np.sum(steps <= start + 1e-9)) + 1)
     t0 = time.time()
-    states = convergence.swell_cases(dx, cfg["bilayer"], numerics, cfg["homeostasis"], ramp, gag, {case: entry}, 103.0)
+    states = convergence.swell_cases(
+        dx, cfg["bilayer"], numerics, cfg["homeostasis"], ramp, gag, {case: entry}, 103.0, cfg["bilayer_calibration"]
+    )
     last = states[case][-1]
     if last.path_end != "complete":
         print(f"dx = {dx:g} um: the swelling path ends at c = {last.concentration:g} mEq/l ({last.end_reason})")

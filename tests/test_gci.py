@@ -75,12 +75,19 @@ def test_the_swelling_gci_table_reads_each_quantity_at_its_volume_ratio_and_conc
 
     rows = []
     for h in (1.5, 2.12, 3.0):
-        common = dict(charge_law="prescribed", pool_model="particles", case="I", dx_um=h, top_circ_stress_kPa=400.0)
+        common = dict(
+            charge_law="prescribed",
+            pool_model="particles",
+            model="passive",
+            case="I",
+            dx_um=h,
+            top_circ_stress_kPa=400.0,
+        )
         rows.append(dict(common, stage=volume_states.STAGE, concentration_mEq_l=120 + h**2, pool_volume_change=4.0,
                          tip_radial_stress_kPa=50.0))  # fmt: skip
         rows.append(dict(common, stage="converted", concentration_mEq_l=100.0, pool_volume_change=2.0 + 0.1 * h,
                          tip_radial_stress_kPa=80 + h**4))  # fmt: skip
-    table = convergence.gci_table(pd.DataFrame(rows), [100.0], "passive", 103.0)
+    table = convergence.gci_table(pd.DataFrame(rows), [100.0], 103.0)
     assert list(table.columns) == convergence.GCI_COLUMNS
     c = table[(table.quantity == "concentration_at_volume_mEq_l") & (table["at"] == 5.0)]
     assert (

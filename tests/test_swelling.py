@@ -146,6 +146,7 @@ def test_refining_changes_the_pool_state_at_150_mEq_l_by_less_than_the_measured_
                     law_gag(c),
                     cases,
                     sc["pressure_mmHg"],
+                    c["bilayer_calibration"],
                 ),
                 c["swelling"]["probe_length_um"],
             )

@@ -448,6 +448,12 @@ def _swelling(config: dict) -> list[str]:
     sw = config.get("swelling", {})
     problems = _pool_models(sw.get("pool_models", []), config.get("gag", {}).get("charge_laws", []))
     sc = config.get("swelling_convergence", {})
+    for k, name in enumerate(sc.get("pool_models", [])):
+        if name not in sw.get("pool_models", []):
+            problems.append(
+                f"swelling_convergence.pool_models[{k}] = {name!r} is not one of swelling.pool_models "
+                f"({', '.join(sw.get('pool_models', []))})"
+            )
     for k, name in enumerate(sc.get("cases", [])):
         if name not in sw.get("cases", {}):
             problems.append(

@@ -95,12 +95,17 @@ def swell_settings(wildcards):
     return dict(SWELL_SETTINGS, pool_model=wildcards.pool)
 
 
-def swell_runs(pattern, **wildcards):
-    """``pattern`` expanded for every (charge law, pool model) pair that runs, and every other wildcard of the
-    swelling runs (``model``, ``case``, ``pressure``) unless given."""
+def swell_runs(pattern, pools=None, **wildcards):
+    """``pattern`` expanded for every (charge law, pool model) pair that runs (of the pool models ``pools`` if
+    given), and every other wildcard of the swelling runs (``model``, ``case``, ``pressure``) unless given."""
     others = dict(dict(model=SW["models"], case=CASES, pressure=SWELL_PRESSURES), **wildcards)
     pairs = zip(SWELL_LAWS_POOLS["law"], SWELL_LAWS_POOLS["pool"])
-    return [path for law, pool in pairs for path in expand(pattern, law=law, pool=pool, **others)]
+    return [
+        path
+        for law, pool in pairs
+        if pools is None or pool in pools
+        for path in expand(pattern, law=law, pool=pool, **others)
+    ]
 
 
 # the key of a swelling run (rules swell, pool_stresses, paraview_swelling): one run per (charge law, pool model,

@@ -95,11 +95,17 @@ SC_SIMULATION = dict(
     settings=swell_settings,
     cases={c: SW["cases"][c] for c in SC["cases"]},
     pressure=SC["pressure_mmHg"],
+    calibration={k: config["bilayer_calibration"][k] for k in ("activation_pressure_mmHg", "activation_steps")},
     volume_ratios=SC["volume_ratios"],
 )
-# the key of a run of the study: its pools, under one charge law and pool model, at one spacing
+# the key of a run of the study: its pools, under one charge law and pool model, in one wall, at one spacing
 SC_POOLS = "{law}/{pool}"
-SC_NAME = f"{SC_POOLS}/dx{{dx}}"
+SC_NAME = f"{SC_POOLS}/{{model}}_dx{{dx}}"
+
+
+def sc_runs(pattern):
+    """``pattern`` for every run of the study: its charge laws and pool models, walls and spacings."""
+    return swell_runs(pattern, pools=SC["pool_models"], model=SC["models"], case=[], pressure=[], dx=CONVERGENCE_DX)
 
 
 wildcard_constraints:
@@ -107,8 +113,8 @@ wildcard_constraints:
 
 
 rule swelling_convergence_dx:
-    """Resolution study, one particle spacing (dx = {dx} um), {law} charge, pools as {pool}: passive wall, every study
-    pool swollen."""
+    """Resolution study, one particle spacing (dx = {dx} um), {law} charge, pools as {pool}: the {model} wall, every
+    study pool swollen."""
     input:
         code=SPHGAG,
     output:
@@ -127,13 +133,14 @@ rule swelling_convergence_dx:
     params:
         **SC_SIMULATION,
         gag=lambda wildcards: GAG[wildcards.law],
+        active=lambda wildcards: wildcards.model == "active",
     script:
         "../scripts/swelling_convergence.py"
 
 
 rule swelling_convergence_stresses:
-    """Resolution study, one particle spacing (dx = {dx} um), {law} charge, pools as {pool}: the pool stresses of the
-    saved states."""
+    """Resolution study, one particle spacing (dx = {dx} um), {law} charge, pools as {pool}, {model} wall: the pool
+    stresses of the saved states."""
     input:
         code=SPHGAG,
         states=rules.swelling_convergence_dx.output.states,
@@ -141,7 +148,7 @@ rule swelling_convergence_stresses:
         table=f"results/swelling/convergence/{SC_NAME}.csv",
         provenance=f"results/provenance/swelling_convergence_stresses_{flat(SC_NAME)}.json",
     log:
-        f"logs/swelling_convergence/{SC_POOLS}/stresses_dx{{dx}}.log",
+        f"logs/swelling_convergence/{SC_POOLS}/stresses_{{model}}_dx{{dx}}.log",
     benchmark:
         f"results/benchmarks/swelling_convergence_stresses_{flat(SC_NAME)}.tsv"
     conda:
@@ -153,6 +160,7 @@ rule swelling_convergence_stresses:
     params:
         **SC_SIMULATION,
         gag=lambda wildcards: GAG[wildcards.law],
+        active=lambda wildcards: wildcards.model == "active",
         probe_length=SW["probe_length_um"],
     script:
         "../scripts/swelling_convergence_stresses.py"
@@ -161,7 +169,7 @@ rule swelling_convergence_stresses:
 rule swelling_convergence:
     """The resolution study of the pool stresses (every charge law and pool model) in one tidy table."""
     input:
-        swell_runs(rules.swelling_convergence_stresses.output.table, model=[], case=[], pressure=[], dx=CONVERGENCE_DX),
+        sc_runs(rules.swelling_convergence_stresses.output.table),
     output:
         report(
             "results/swelling/convergence.csv",

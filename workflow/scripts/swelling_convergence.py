@@ -9,12 +9,13 @@ from sphgag.studies import convergence
 sm = snakemake  # noqa: F821
 threads.use(sm.threads)
 started = time.time()
-run = f"swelling_convergence_{sm.wildcards.law}_{sm.wildcards.pool}_dx{sm.wildcards.dx}"
+w = sm.wildcards
+run = f"swelling_convergence_{w.law}_{w.pool}_{w.model}_dx{w.dx}"
 with runlog.run(run, sm.log[0]) as log:
     p = sm.params
     # each case's converged states up to the end of its path (each records how the path ended)
     states = convergence.swell_cases(
-        float(sm.wildcards.dx),
+        float(w.dx),
         p.bilayer,
         p.numerics,
         p.homeostasis,
@@ -22,11 +23,13 @@ with runlog.run(run, sm.log[0]) as log:
         p.gag,
         p.cases,
         p.pressure,
+        p.calibration,
+        p.active,
         name=run,
         volume_ratios=p.volume_ratios,
     )
     ends = {case: ss[-1].path_end for case, ss in states.items()}
-    params = dict(dx=sm.wildcards.dx, **dict(p))
+    params = dict(dx=w.dx, **dict(p))
     series = [(s.x, s.load, dict(s.info(), case=case), None) for case, ss in states.items() for s in ss]
     state.save_series(sm.output.states, series, params)
     max_residual = max(s.residual for ss in states.values() for s in ss)

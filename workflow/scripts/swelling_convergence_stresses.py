@@ -10,14 +10,15 @@ from sphgag.studies import convergence, protocols
 sm = snakemake  # noqa: F821
 threads.use(sm.threads)
 started = time.time()
-run = f"swelling_convergence_stresses_{sm.wildcards.law}_{sm.wildcards.pool}_dx{sm.wildcards.dx}"
+w = sm.wildcards
+run = f"swelling_convergence_stresses_{w.law}_{w.pool}_{w.model}_dx{w.dx}"
 with runlog.run(run, sm.log[0]) as log:
     p = sm.params
     simulation = {k: v for k, v in dict(p).items() if k != "probe_length"}
-    saved = state.load_series(sm.input.states, dict(dx=sm.wildcards.dx, **simulation))
+    saved = state.load_series(sm.input.states, dict(dx=w.dx, **simulation))
     states = {case: [protocols.PoolState.from_saved(s) for s in saved if s.info["case"] == case] for case in p.cases}
-    dx = float(sm.wildcards.dx)
-    table = convergence.measure(dx, p.bilayer, p.numerics, p.gag, p.cases, states, p.probe_length, name=run)
+    dx = float(w.dx)
+    table = convergence.measure(dx, p.bilayer, p.numerics, p.gag, p.cases, states, p.probe_length, w.model, name=run)
     table.insert(0, "charge_law", p.gag["charge_law"])
     table.insert(1, "pool_model", table.pop("pool_model"))
     table.to_csv(sm.output.table, index=False)
@@ -37,7 +38,7 @@ with runlog.run(run, sm.log[0]) as log:
     provenance.write_record(
         sm.output.provenance,
         rule="swelling_convergence_stresses",
-        params=dict(dx=sm.wildcards.dx, **dict(p)),
+        params=dict(dx=w.dx, **dict(p)),
         outputs=list(sm.output),
         summary=dict(max_residual=float(table.residual.max())),
         started=started,

@@ -20,6 +20,7 @@ from . import artery, gci, protocols, volume_states
 COLUMNS = [
     "dx_um",
     "particles",
+    "model",
     "case",
     "concentration_mEq_l",
     "tip_radial_stress_kPa",
@@ -39,17 +40,20 @@ def swell_cases(
     gag: dict,
     cases: dict,
     pressure_mmHg: float,
+    calibration: dict,
+    active: bool = False,
     name: str = "convergence",
     volume_ratios=(),
 ) -> dict[str, list[protocols.PoolState]]:
-    """The converged states of every study pool at particle spacing ``dx`` [um]: the passive wall pressurised at
-    this spacing, then each pool converted and swollen (:func:`sphgag.studies.protocols.swell_pool`), followed by
-    the states at which it holds each of ``volume_ratios`` (:func:`sphgag.studies.volume_states.at_volume_ratios`,
-    stage ``at volume``)."""
+    """The converged states of every study pool at particle spacing ``dx`` [um]: the passive or ``active`` wall at
+    this spacing at ``pressure_mmHg`` by the path of the pressure-diameter sweep (:func:`sphgag.studies.protocols.
+    wall_at`; ``calibration``: the ``bilayer_calibration`` section, its activation pressure and steps), then each
+    pool converted and swollen (:func:`sphgag.studies.protocols.swell_pool`), followed by the states at which it
+    holds each of ``volume_ratios`` (:func:`sphgag.studies.volume_states.at_volume_ratios`, stage ``at volume``)."""
     p = dict(bilayer, dx_um=float(dx))
     wall = artery.bilayer_model(p, numerics, name=name)
     h = protocols.homeostasis(wall, numerics, homeostasis)
-    start = protocols.pressurise(wall, h.state, pressure_mmHg, numerics)
+    start = protocols.wall_at(wall, h.state, numerics, calibration, active, pressure_mmHg)
     out = {}
     for case, entry in cases.items():
         model = case_model(dx, bilayer, numerics, gag, entry, f"{name}_{case}")
@@ -73,17 +77,18 @@ def measure(
     cases: dict,
     states: dict[str, list[protocols.PoolState]],
     probe_length: float,
+    wall: str = "passive",
     name: str = "convergence",
 ) -> pd.DataFrame:
-    """Rows of ``results/swelling/convergence.csv`` for one particle spacing (the converted pools on their path, and
-    at their volume ratios): the pool stresses (:func:`sphgag.studies.protocols.pool_table`) of the states of
-    :func:`swell_cases`."""
+    """Rows of ``results/swelling/convergence.csv`` for one particle spacing and ``wall`` (column ``model``:
+    passive or active): the pool stresses (:func:`sphgag.studies.protocols.pool_table`) of the states of
+    :func:`swell_cases`, the intact wall, the converted pools on their path and the pools at their volume ratios."""
     tables = []
     for case, entry in cases.items():
         model = case_model(dx, bilayer, numerics, gag, entry, f"{name}_{case}")
         table = protocols.pool_table(model, states[case], artery.pool_sector(entry), probe_length, gag)
-        kept = table[table.stage.isin(["converted", volume_states.STAGE])]
-        tables.append(kept.assign(dx_um=float(dx), particles=model.n, case=case))
+        kept = table[table.stage.isin(["intact", "converted", volume_states.STAGE])]
+        tables.append(kept.assign(dx_um=float(dx), particles=model.n, model=wall, case=case))
     out = pd.concat(tables, ignore_index=True)
     return out[COLUMNS + [c for c in out.columns if c not in COLUMNS]]
 
@@ -102,13 +107,14 @@ AT_CONCENTRATION = {  # quantity at a given concentration <- its column
 }
 
 
-def gci_table(table: pd.DataFrame, concentrations, model: str, pressure_mmHg: float) -> pd.DataFrame:
-    """``results/swelling/gci.csv`` from the resolution study's table: per charge law, pool model, case and quantity,
+def gci_table(table: pd.DataFrame, concentrations, pressure_mmHg: float) -> pd.DataFrame:
+    """``results/swelling/gci.csv`` from the resolution study's table: per charge law, pool model, wall (column
+    ``model``), case and quantity,
     at each volume ratio of the study (``at`` = J: the concentration that holds it, the tip radial and top hoop
     stresses there) and at each of ``concentrations`` (``at`` in mEq/l: the tip radial and top hoop stresses and the
     volume ratio J), its value at every spacing with the observed order, the extrapolated value and the GCI of the
-    three finest (:func:`sphgag.studies.gci.tidy`). ``model``, ``pressure_mmHg``: the study's wall and pressure."""
-    base = table.assign(model=model, pressure_mmHg=float(pressure_mmHg), volume_ratio=table.pool_volume_change + 1.0)
+    three finest (:func:`sphgag.studies.gci.tidy`). ``pressure_mmHg``: the study's lumen pressure."""
+    base = table.assign(pressure_mmHg=float(pressure_mmHg), volume_ratio=table.pool_volume_change + 1.0)
     rows = []
     at_volume = base[base.stage == volume_states.STAGE]
     for quantity, column in AT_VOLUME.items():
@@ -118,7 +124,7 @@ def gci_table(table: pd.DataFrame, concentrations, model: str, pressure_mmHg: fl
         value = on_path[column] + (1.0 if column == "pool_volume_change" else 0.0)
         rows.append(on_path.assign(quantity=quantity, at=on_path.concentration_mEq_l, value=value))
     values = pd.concat(rows, ignore_index=True)[GCI_KEYS + ["dx_um", "value"]]
-    values = values.sort_values(["charge_law", "pool_model", "case", "quantity", "at", "dx_um"], kind="stable")
+    values = values.sort_values(["charge_law", "pool_model", "model", "case", "quantity", "at", "dx_um"], kind="stable")
     return gci.tidy(values, GCI_KEYS)[GCI_COLUMNS]
 
 

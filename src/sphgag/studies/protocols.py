@@ -285,6 +285,51 @@ def pressurised_wall(bilayer: dict, numerics: Numerics, homeostasis_settings: di
     return wall, solver.State(start.load, start.x, None, None)
 
 
+def activated(
+    model: Model, homeostatic: solver.State, numerics: Numerics, cal: dict, active: bool, label: str = ""
+) -> solver.State:
+    """The wall at the activation pressure ``cal["activation_pressure_mmHg"]`` (:func:`pressurise` from the
+    homeostatic state), with its active tone (eq. 2.24) ramped there in ``cal["activation_steps"]`` steps if
+    ``active``: the start of the pressure-diameter sweeps and of every pressurised state of the wall."""
+    numerics = Numerics.of(numerics)
+    run = model.name
+    P_act = cal["activation_pressure_mmHg"]
+    on_state = log_state(run)
+    log.info(
+        "[%s] %s model: pressure control from the homeostatic %.1f mmHg to %.1f mmHg%s",
+        run,
+        label or ("active" if active else "passive"),
+        measure.carried_pressure(model, homeostatic.evaluation) / MMHG_TO_KPA,
+        P_act,
+        f", then activation in {cal['activation_steps']} steps" if active else "",
+    )
+    start = pressurise(model, homeostatic, P_act, numerics, on_state=on_state)
+    if not active:
+        return start
+    steps = cal["activation_steps"]
+    activation = [
+        Load(1.0, P_act * MMHG_TO_KPA, material=(("activation", a), ("prestretch", 1.0)))
+        for a in np.linspace(0.0, 1.0, steps + 1)[1:]
+    ]
+    return solver.follow_path(
+        model, start.x, start.load, activation, run=run, on_state=on_state, **numerics.solver_options()
+    )[-1]
+
+
+def wall_at(
+    model: Model, homeostatic: solver.State, numerics: Numerics, cal: dict, active: bool, pressure_mmHg: float
+) -> solver.State:
+    """The passive or active wall at ``pressure_mmHg`` under pressure control, by the path of the pressure-diameter
+    sweep (:func:`activated`, then one step to the pressure): at the activation pressure, the sweep's own state to the
+    bit."""
+    numerics = Numerics.of(numerics)
+    start = activated(model, homeostatic, numerics, cal, active)
+    if abs(pressure_mmHg - cal["activation_pressure_mmHg"]) < 1e-12:
+        return start
+    load = Load(1.0, pressure_mmHg * MMHG_TO_KPA, material=start.load.material)
+    return solver.follow_path(model, start.x, start.load, [load], run=model.name, **numerics.solver_options())[-1]
+
+
 def bilayer_pressure_diameter(
     model: Model,
     tube: analytic.ThickWallTube,
@@ -305,28 +350,9 @@ def bilayer_pressure_diameter(
     points and exact curve share the normalisation).
     """
     numerics = Numerics.of(numerics)
-    run = model.name
-    P_h = measure.carried_pressure(model, homeostatic.evaluation)
+    opts = dict(run=model.name, on_state=log_state(model.name), **numerics.solver_options())
+    start = activated(model, homeostatic, numerics, cal, active, label)
     P_act = cal["activation_pressure_mmHg"]
-    opts = dict(run=run, on_state=log_state(run), **numerics.solver_options())
-    activation = []
-    if active:
-        steps = cal["activation_steps"]
-        activation = [
-            Load(1.0, P_act * MMHG_TO_KPA, material=(("activation", a), ("prestretch", 1.0)))
-            for a in np.linspace(0.0, 1.0, steps + 1)[1:]
-        ]
-    log.info(
-        "[%s] %s model: pressure control from the homeostatic %.1f mmHg to %.1f mmHg%s",
-        run,
-        label,
-        P_h / MMHG_TO_KPA,
-        P_act,
-        f", then activation in {cal['activation_steps']} steps" if active else "",
-    )
-    start = pressurise(model, homeostatic, P_act, numerics, on_state=opts["on_state"])
-    if activation:
-        start = solver.follow_path(model, start.x, start.load, activation, **opts)[-1]
     sweep = np.linspace(0.0, cal["max_pressure_mmHg"], cal["pressure_points"])
     pressures = np.unique(np.round(np.concatenate([sweep, cal["state_pressures_mmHg"], [P_act]]), 10))
     down = [P for P in pressures[::-1] if P < P_act]

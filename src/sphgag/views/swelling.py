@@ -194,18 +194,24 @@ def fig4(
 def swelling_convergence(table: pd.DataFrame, laws=None):
     """Resolution study (seaborn facets of convergence.csv): tip radial stress (mean over the probe, and particle
     peak), top hoop stress and pool volume change against concentration, a colour per particle spacing, a column
-    per pool, charge law and pool model (``laws``: their order; default: as in the table)."""
+    per pool, wall, charge law and pool model (``laws``: their order; default: as in the table)."""
     _style()
     table = table if "pool_model" in table else table.assign(pool_model=PAPER_POOL)
+    table = table if "model" in table else table.assign(model="passive")
     pairs = variants(table, laws or list(dict.fromkeys(table.charge_law)))
     spacings = sorted(table.dx_um.unique(), reverse=True)
     shades = dict(zip([f"{dx:g} um" for dx in spacings], plt.cm.viridis(np.linspace(0.1, 0.85, len(spacings)))))
-    cases = list(dict.fromkeys(table.case))
-    column = {(law, pool, c): f"case {c}\n{variant_short(law, pool)}" for law, pool in pairs for c in cases}
+    cases, walls = list(dict.fromkeys(table.case)), list(dict.fromkeys(table.model))
+    column = {
+        (law, pool, w, c): f"case {c}, {w}\n{variant_short(law, pool)}"
+        for law, pool in pairs
+        for w in walls
+        for c in cases
+    }
     long = long_measures(
         table.assign(
             dx=table.dx_um.map("{:g} um".format),
-            facet=[column.get(key) for key in zip(table.charge_law, table.pool_model, table.case)],
+            facet=[column.get(key) for key in zip(table.charge_law, table.pool_model, table.model, table.case)],
         ),
         POOL_MEASURES,
         ["facet", "dx", "concentration_mEq_l"],
