@@ -1,6 +1,8 @@
 """The claims table: pool claims once per charge law, runs that end below the requested concentration, pool sets by
 their roles (synthetic tables; the pipeline test runs the real ones)."""
 
+from dataclasses import replace
+
 import numpy as np
 import pandas as pd
 
@@ -175,3 +177,40 @@ def test_a_claim_whose_target_has_not_run_is_in_the_table_marked_not_run():
     }
     assert found["prescribed"].holds == "yes" and found["conserved"].holds == "no"
     assert found["prescribed"].our_value.startswith("onset in 2 of 3 samples (67 %), at 90-100 mEq/l")
+
+
+def resolution_table(law: str, spacings=(3.0, 2.12, 1.5)) -> pd.DataFrame:
+    """A resolution study (convergence.csv) of one law at 103 mmHg: the runs of :func:`tips_table` at every spacing,
+    case IV's tip stress at 150 mEq/l 110 - 10 dx kPa (first order, extrapolated 110; case I's is 100)."""
+    tips = tips_table(law)
+    tips = tips[tips.pressure_mmHg == 103.0].drop(columns="pressure_mmHg")
+    rows = []
+    for h in spacings:
+        t = tips.assign(dx_um=h, pool_model="particles")
+        late = (t.case == "IV") & (t.stage == "converted") & (t.concentration_mEq_l == 150.0)
+        t.loc[late, "tip_radial_stress_kPa"] = 110.0 - 10.0 * h
+        rows.append(t)
+    return pd.concat(rows, ignore_index=True)
+
+
+def test_a_figure_4_claim_holds_only_if_it_holds_at_every_spacing_and_extrapolated():
+    """C9 (smaller pools, higher tip stress) holds on figure 4's runs and at each spacing of the study (case IV's
+    tip 80, 88.8 and 95 kPa below case I's 100), but not for the extrapolated values (110): it does not hold. C6
+    holds everywhere. Without the study, the row says how to run it."""
+    from sphgag.studies import convergence
+
+    resolution = resolution_table("prescribed")
+    band = convergence.band_table(resolution, 103.0)
+    tips = tips_table("prescribed").assign(pool_model="particles")
+    e = claims.Evidence(tips=tips, cases=CASES, max_concentration=150.0, resolution=resolution, band=band)
+    e = replace(e, study_pressure=103.0)
+    found = {c.claim_id: c for c in claims.across_band(e, claims.swelling_claims(tips, CASES, 150.0))}
+    assert claims.c9_smaller_pools_higher_tip(e).holds == "yes"
+    c9 = found["C9"]
+    assert c9.holds == "no"
+    assert c9.across_band.startswith("dx 3: yes (+20), dx 2.12: yes (+11), dx 1.5: yes (+5), extrapolated: no (-10)")
+    assert found["C6"].holds == "yes" and found["C6"].across_band.startswith("dx 3: yes (+50), dx 2.12: yes (+50)")
+    assert found["C10"].across_band.startswith("n/a")  # one pressure in the study
+    alone = claims.across_band(replace(e, resolution=None, band=None), claims.swelling_claims(tips, CASES, 150.0))
+    assert all(c.across_band == "not run: `snakemake resolution`" for c in alone)
+    assert [c.holds for c in alone] == [c.holds for c in claims.swelling_claims(tips, CASES, 150.0)]

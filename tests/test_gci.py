@@ -100,3 +100,29 @@ def test_the_swelling_gci_table_reads_each_quantity_at_its_volume_ratio_and_conc
     assert tip.observed_order == pytest.approx(4.0) and not tip.order_in_range
     e21 = abs(((80 + 2.12**4) - (80 + 1.5**4)) / (80 + 1.5**4))
     assert tip.gci_fine == pytest.approx(3.0 * e21 / ((2.12 / 1.5) ** 3.0 - 1.0))
+
+
+def test_figure_4s_band_gives_every_step_of_the_ramp_and_the_intact_wall_its_estimate():
+    """Synthetic rows at three spacings: the tip stress at each converted level converges at first order to 10 c
+    kPa, the intact wall's is exact (no error: GCI 0); one row per spacing, quantity and state."""
+    import pandas as pd
+
+    from sphgag.studies import convergence
+
+    rows = []
+    for h in (1.5, 2.12, 3.0):
+        common = dict(charge_law="prescribed", pool_model="particles", model="active", case="I", dx_um=h)
+        rows.append(dict(common, stage="intact", concentration_mEq_l=0.0, tip_radial_stress_kPa=-5.0,
+                         top_circ_stress_kPa=100.0))  # fmt: skip
+        for c in (50.0, 100.0):
+            rows.append(dict(common, stage="converted", concentration_mEq_l=c, tip_radial_stress_kPa=10 * c + 4 * h,
+                             top_circ_stress_kPa=300.0 + h**2))  # fmt: skip
+    band = convergence.band_table(pd.DataFrame(rows), 103.0)
+    assert len(band) == 3 * 2 * 3 and (band.pressure_mmHg == 103.0).all()
+    tip = band[(band.quantity == "tip_radial_stress_kPa") & (band.stage == "converted")]
+    assert tip.observed_order.to_numpy() == pytest.approx(1.0)
+    assert sorted(set(tip.extrapolated.round(9))) == [500.0, 1000.0]
+    intact = band[(band.stage == "intact")]
+    assert (intact.gci_fine == 0.0).all() and (intact.extrapolated == intact.value).all()
+    top = band[(band.quantity == "top_circ_stress_kPa") & (band.stage == "converted")]
+    assert top.observed_order.to_numpy() == pytest.approx(2.0) and top.extrapolated.to_numpy() == pytest.approx(300.0)

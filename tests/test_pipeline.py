@@ -67,7 +67,17 @@ CONTRACT = {
         "top_circ_stress_kPa",
         "residual",
     ],
-    "results/claims.csv": ["claim_id", "charge_law", "pool_model", "statement", "paper_value", "our_value", "holds"],
+    "results/claims.csv": [
+        "claim_id",
+        "charge_law",
+        "pool_model",
+        "statement",
+        "paper_value",
+        "our_value",
+        "holds",
+        "margin",
+        "across_band",
+    ],
     "results/verification/pressurised_crack.csv": [
         "dx_um",
         "half_length_um",
@@ -126,6 +136,7 @@ CONTRACT = {
         "pool_model",
         "dx_um",
         "particles",
+        "model",
         "case",
         "concentration_mEq_l",
         "tip_radial_stress_kPa",
@@ -197,6 +208,7 @@ CONTRACT = {
     ],
     "results/delamination/gci.csv": delamination.GCI_COLUMNS,
     "results/swelling/gci.csv": convergence.GCI_COLUMNS,
+    "results/swelling/gci_band.csv": [*convergence.BAND_KEYS, "dx_um", "value", "extrapolated", "gci_fine"],
     "results/sensitivity/indices.csv": [
         "method",
         "charge_law",
@@ -363,6 +375,9 @@ def test_outputs_follow_the_data_contracts(workdir, ci_config):
         assert all(sorted(rows.charge_law) == carried for _, rows in other.groupby("claim_id"))
     markdown = (workdir / "figures/claims.md").read_text()
     assert all(f"| C7 | {law} |" in markdown and f"| C13 | {law} |" in markdown for law in laws)
+    # figure 4's claims judged on its resolution study too (two CI spacings: no extrapolation)
+    figure4 = claims[claims.claim_id.isin([f"C{k}" for k in range(6, 13)]) & (claims.pool_model == PAPER_POOL)]
+    assert figure4.across_band.str.match(r"^(dx \d|n/a)").all(), figure4.across_band.tolist()
     for fig in FIGURES:
         assert (workdir / fig).stat().st_size > 5000
 
@@ -492,7 +507,8 @@ def test_a_measurement_setting_reruns_the_measurement_not_the_simulations(workdi
     print("\nprobe_length_um edit reruns:", jobs)
     sw, variants = ci_config["swelling"], pool_variants(ci_config)
     assert jobs.pop("pool_stresses") == variants * len(sw["models"]) * len(sw["cases"]) * len(sw["pressures_mmHg"])
-    assert jobs.pop("swelling_convergence_stresses") == variants * len(ci_config["swelling_convergence"]["dx_um"])
+    sc = ci_config["swelling_convergence"]
+    assert jobs.pop("swelling_convergence_stresses") == study_variants(ci_config) * len(sc["dx_um"]) * len(sc["models"])
     simulations = {"swell", "swelling_convergence_dx", "homeostasis", "bilayer_pressure_diameter", "delaminate"}
     assert not simulations & set(jobs), jobs
 
@@ -691,24 +707,32 @@ def written_config(tmp_path, cfg, name="edited.yaml"):
     return path
 
 
-def pool_variants(cfg) -> int:
-    """The (charge law, pool model) pairs the swelling runs of ``cfg`` run (each pool model under its laws)."""
+def pool_variants(cfg, pools=None) -> int:
+    """The (charge law, pool model) pairs the swelling runs of ``cfg`` run (each pool model under its laws), of the
+    pool models ``pools`` if given."""
     laws = set(cfg["gag"]["charge_laws"])
-    return sum(len(laws & set(POOL_MODELS[pool].laws)) for pool in cfg["swelling"]["pool_models"])
+    pools = cfg["swelling"]["pool_models"] if pools is None else pools
+    return sum(len(laws & set(POOL_MODELS[pool].laws)) for pool in pools)
 
 
-SWELLING_RULES = ("swell", "pool_stresses", "swelling_convergence_dx", "swelling_convergence_stresses")
+def study_variants(cfg) -> int:
+    """The (charge law, pool model) pairs of figure 4's resolution study."""
+    return pool_variants(cfg, cfg["swelling_convergence"]["pool_models"])
+
+
+SWELLING_RULES = ("swell", "pool_stresses")
+STUDY_RULES = ("swelling_convergence_dx", "swelling_convergence_stresses")
 
 
 def law_jobs(cfg) -> dict:
     """The simulation jobs of one charge law of ``cfg``, per rule."""
-    sw, de = cfg["swelling"], cfg["delamination"]
+    sw, de, sc = cfg["swelling"], cfg["delamination"], cfg["swelling_convergence"]
     runs = sum(len(de["critical_stresses_kPa"]) if name == de["figures"]["fig5"] else 1 for name in de["pool_sets"])
     return {
         "swell": len(sw["models"]) * len(sw["cases"]) * len(sw["pressures_mmHg"]),
         "pool_stresses": len(sw["models"]) * len(sw["cases"]) * len(sw["pressures_mmHg"]),
-        "swelling_convergence_dx": len(cfg["swelling_convergence"]["dx_um"]),
-        "swelling_convergence_stresses": len(cfg["swelling_convergence"]["dx_um"]),
+        "swelling_convergence_dx": len(sc["dx_um"]) * len(sc["models"]),
+        "swelling_convergence_stresses": len(sc["dx_um"]) * len(sc["models"]),
         "delaminate": runs * len(de["criteria"]),
         "delamination_convergence_dx": len(de["convergence"]["dx_um"]) * len(de["criteria"]),
     }
@@ -747,7 +771,7 @@ def test_adding_a_charge_law_adds_its_own_jobs(fresh_copy, ci_config, tmp_path):
     matched = de["fracture_energy"]["match_paper"] and de["critical_stress_kPa"] not in de["critical_stresses_kPa"]
     variants = pool_variants(ci_config)
     for rule, n in law_jobs(ci_config).items():
-        per_law = variants if rule in SWELLING_RULES else 2
+        per_law = variants if rule in SWELLING_RULES else study_variants(ci_config) if rule in STUDY_RULES else 2
         assert (alone[rule], both[rule]) == (n, per_law * n + (matched if rule == "delaminate" else 0)), rule
     n = len(de["fracture_energy"]["fracture_energies_J_m2"])
     assert (alone["delaminate_fracture_energy"], both["delaminate_fracture_energy"]) == (n, 2 * (n + 1))

@@ -366,7 +366,41 @@ def test_figure_4_and_the_resolution_study_draw_a_third_charge_law():
     )
     fig = swelling.swelling_convergence(table, laws)
     assert len(fig.axes) == 3 * len(laws)  # a row per quantity (tip, top, pool volume), a column per pool and law
-    assert "case IV\nideal" in _titles(fig)
+    assert "case IV, passive\nideal" in _titles(fig)
+
+
+def test_figure_4_draws_the_resolution_bands_and_the_tip_stress_against_pool_volume():
+    """With the resolution study (three spacings, first-order synthetic values), the paper's block draws the
+    extrapolated curve and a GCI band in cases I and IV, marks where the band first exceeds 10 %, and a last row
+    plots the tip stress against the pool volume per spacing; without it the figure says the study has not run."""
+    from matplotlib.collections import PolyCollection
+
+    from sphgag.studies import convergence
+    from sphgag.views import swelling
+
+    variants = [("prescribed", "particles")]
+    tips = _tips(variants, pressures=(103.0,))
+    resolution = _concat(
+        [
+            _tips(variants, pressures=(103.0,)).assign(
+                dx_um=h, tip_radial_stress_kPa=lambda t, h=h: t.tip_radial_stress_kPa * (1.0 + 0.1 * h)
+            )
+            for h in (3.0, 2.12, 1.5)
+        ]
+    )
+    band = convergence.band_table(resolution, 103.0)
+    cases = {name: SWELLING_CASES[name] for name in dict.fromkeys(tips.case)}
+    args = (tips, _particles(), cases, 10.0, ["prescribed"], 150.0, WALL_PRESSURES)
+    fig = swelling.fig4(*args, pool_layers=["media"], band=band, resolution=resolution)
+    assert len(fig.axes) == (1 + 2 + 1) * len(cases)  # (a), tip and top, then tip against pool volume
+    tip_axes = fig.axes[len(cases) : 2 * len(cases)]
+    assert all(any(isinstance(c, PolyCollection) for c in ax.collections) for ax in tip_axes)
+    assert all(swelling.EXTRAPOLATED in [t.get_text() for t in legend.texts] for legend in fig.legends[1:])
+    assert any("GCI > 10%" in t.get_text() for ax in tip_axes for t in ax.texts)
+    volume = fig.axes[-len(cases)]
+    assert volume.get_xlabel() == "pool volume ratio J" and len(volume.lines) == 3 + 1  # a line per dx, and zero
+    fig = swelling.fig4(*args, pool_layers=["media"])
+    assert swelling.NOT_RUN in [t.get_text() for t in fig.texts]
 
 
 def test_the_verification_figures_draw_their_panels():

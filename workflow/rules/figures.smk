@@ -123,11 +123,14 @@ rule fig1:
 
 
 rule fig4:
-    """Figure 4: the pools, and the tip radial and top hoop stress against GAG concentration, for every charge law."""
+    """Figure 4: the pools, and the tip radial and top hoop stress against GAG concentration, for every charge law;
+    with the resolution study's bands and its tip stress against pool volume where target `resolution` has run."""
     input:
         code=VIEWS["swelling"],
         tips=rules.tip_stress.output[0],
         particles=rules.homeostasis.output.particles,
+        band=study_input(lambda: rules.swelling_gci.output.band, "resolution"),
+        resolution=study_input(lambda: rules.swelling_convergence.output[0], "resolution"),
     output:
         pdf="figures/fig4.pdf",
         png=report(
@@ -154,6 +157,8 @@ rule fig4:
         # the pressures of figure 3's transmural profiles: a pressure has one colour in figures 3 and 4
         pressures=config["calibration"]["transmural_pressures_mmHg"],
         pool_layers=config["bilayer"]["pool_layers"],
+        band=study_evidence(lambda: rules.swelling_gci.output.band, "resolution"),
+        resolution=study_evidence(lambda: rules.swelling_convergence.output[0], "resolution"),
     script:
         "../scripts/fig4.py"
 
@@ -171,6 +176,8 @@ rule claims:
         growth=rules.delamination_growth.output[0],
         delamination=rules.delamination_summary.output[0],
         sensitivity=study_input(lambda: rules.sensitivity_tables.output.samples, "sensitivity"),
+        band=study_input(lambda: rules.swelling_gci.output.band, "resolution"),
+        resolution=study_input(lambda: rules.swelling_convergence.output[0], "resolution"),
     output:
         table=report(
             "results/claims.csv",
@@ -192,6 +199,9 @@ rule claims:
         figures=config["delamination"]["figures"],
         laws=LAWS,
         sensitivity=study_evidence(lambda: rules.sensitivity_tables.output.samples, "sensitivity"),
+        band=study_evidence(lambda: rules.swelling_gci.output.band, "resolution"),
+        resolution=study_evidence(lambda: rules.swelling_convergence.output[0], "resolution"),
+        study_pressure=config["swelling_convergence"]["pressure_mmHg"],
     script:
         "../scripts/claims.py"
 

@@ -189,17 +189,19 @@ rule swelling_convergence:
 
 rule swelling_gci:
     """The discretisation error of figure 4's quantities (Celik et al. 2008): at the study's volume ratios and at the
-    stated concentrations, the observed order, the extrapolated value and the GCI of the finest spacing."""
+    stated concentrations, the observed order, the extrapolated value and the GCI of the finest spacing; and at
+    every step of the ramp, the bands of figure 4."""
     input:
         code=[MODULES[m] for m in ("studies/convergence.py", "studies/gci.py", "studies/volume_states.py")],
         table=rules.swelling_convergence.output[0],
     output:
-        report(
+        table=report(
             "results/swelling/gci.csv",
             caption="../report/swelling_gci.rst",
             category="3 Swelling",
             labels={"result": "Discretisation error of figure 4's quantities (GCI)"},
         ),
+        band="results/swelling/gci_band.csv",
     log:
         "logs/swelling_gci.log",
     benchmark:

@@ -28,6 +28,7 @@ with runlog.run("claims", sm.log[0]) as log:
         max_concentration=p.max_concentration,
         criteria=tuple(p.criteria),
         figures=p.figures,
+        study_pressure=p.study_pressure,
     )
     found = claims.evaluate(evidence, p.laws)
     df = claims.table(found)

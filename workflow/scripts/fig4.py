@@ -1,4 +1,5 @@
-"""Rule fig4: the four pools and the stresses around them against GAG concentration, every charge law (figure 4)."""
+"""Rule fig4: the four pools and the stresses around them against GAG concentration, every charge law (figure 4), with
+the resolution study's bands where target `resolution` has run."""
 
 import pandas as pd
 
@@ -12,6 +13,8 @@ with runlog.run("fig4", sm.log[0]):
     tips = pd.read_csv(sm.input.tips)
     style.finite_or_raise(tips, ["tip_radial_stress_kPa", "top_circ_stress_kPa", "concentration_mEq_l"], "fig4")
     p = sm.params
+    # the resolution study, where this run or an earlier one made it (else the figure says it has not run)
+    study = {k: pd.read_csv(p[k]["path"]) if p[k]["state"] != "not run" else None for k in ("band", "resolution")}
     fig = swelling.fig4(
         tips,
         pd.read_csv(sm.input.particles),
@@ -21,5 +24,6 @@ with runlog.run("fig4", sm.log[0]):
         p.max_concentration,
         p.pressures,
         pool_layers=p.pool_layers,
+        **study,
     )
     style.save(fig, [sm.output.pdf, sm.output.png], "Figure 4 (GAG pool swelling), sphgag")

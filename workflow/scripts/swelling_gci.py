@@ -1,4 +1,5 @@
-"""Rule swelling_gci: the grid convergence index of figure 4's quantities from the resolution study's table."""
+"""Rule swelling_gci: the grid convergence index of figure 4's quantities, and figure 4's bands, from the resolution
+study's table."""
 
 import pandas as pd
 
@@ -11,7 +12,8 @@ threads.use(sm.threads)
 with runlog.run("swelling_gci", sm.log[0]) as log:
     table = pd.read_csv(sm.input.table)
     out = convergence.gci_table(table, sm.params.concentrations, sm.params.pressure)
-    out.to_csv(sm.output[0], index=False)
+    out.to_csv(sm.output.table, index=False)
+    convergence.band_table(table, sm.params.pressure).to_csv(sm.output.band, index=False)
     finest = out.sort_values("dx_um").groupby(convergence.GCI_KEYS, sort=False).head(1)
     for r in finest.itertuples():
         log.info(

@@ -37,6 +37,8 @@ class Claim:
     criterion: str
     charge_law: str = "-"  # a pool claim's Donnan law (sphgag.physics.donnan.LAWS); "-": no pool
     pool_model: str = "-"  # a pool claim's pool model (sphgag.studies.protocols.POOL_MODELS); "-": no pool
+    margin: float = np.nan  # the criterion's smallest slack in its unit (kPa for C6-C12): > 0 where it holds
+    across_band: str = "-"  # C6-C12: the verdict and margin at every spacing of the resolution study and extrapolated
 
 
 @dataclass(frozen=True)
@@ -48,8 +50,10 @@ class Evidence:
     (swelling/tip_stress.csv), ``growth`` and ``delamination`` (delamination/growth.csv and summary.csv, the paper's
     damage law), with ``cases`` (each swelling pool's angular extent), ``max_concentration`` of the swelling runs,
     the onset ``criteria`` (the first is the default) and the pool sets' roles ``figures`` (``delamination.figures``).
-    Other targets: ``sensitivity`` (sensitivity/samples.csv, target ``sensitivity``); ``targets`` names the target
-    that makes each of these (:data:`TARGETS`), for the rows of a claim whose evidence is missing.
+    Other targets: ``sensitivity`` (sensitivity/samples.csv, target ``sensitivity``), ``resolution`` and ``band``
+    (swelling/convergence.csv and gci_band.csv, target ``resolution``: figure 4's resolution study at
+    ``study_pressure``, :func:`across_band`); :data:`TARGETS` names the target that makes each of these, for the rows
+    of a claim whose evidence is missing.
     """
 
     mean: pd.DataFrame | None = None
@@ -65,13 +69,16 @@ class Evidence:
     criteria: tuple = ()
     figures: dict = field(default_factory=dict)
     sensitivity: pd.DataFrame | None = None
+    resolution: pd.DataFrame | None = None
+    band: pd.DataFrame | None = None
+    study_pressure: float | None = None
 
     def of_law(self, law: str, pool_model: str = PAPER_POOL) -> Evidence:
         """The evidence of one charge law and pool model: its rows of the pool tables (columns ``charge_law`` and,
         where a table has it, ``pool_model``)."""
         pools = {
             k: of_law(getattr(self, k), law, pool_model)
-            for k in ("tips", "growth", "delamination", "sensitivity")
+            for k in ("tips", "growth", "delamination", "sensitivity", "resolution", "band")
             if getattr(self, k) is not None
         }
         return replace(self, **pools)
@@ -83,7 +90,7 @@ class Evidence:
 
 
 #: the evidence the default target does not make, by the Evidence field that holds it, and the target that makes it
-TARGETS = {"sensitivity": "sensitivity"}
+TARGETS = {"sensitivity": "sensitivity", "resolution": "resolution", "band": "resolution"}
 
 
 def _yes(flag) -> str:
@@ -105,6 +112,17 @@ def _monotone_groups(table: pd.DataFrame, ordered: list, holds) -> tuple[int, in
             groups += 1
             hits += bool(holds(g))
     return hits, groups
+
+
+def _group_slack(table: pd.DataFrame, ordered: list, slack) -> float:
+    """The smallest ``slack(rows ordered by pool size)`` over the model-pressure groups with more than one pool."""
+    out = []
+    for _, g in table.groupby(["model", "pressure_mmHg"]):
+        g = g.set_index("case")
+        g = g.loc[[c for c in ordered if c in g.index]]
+        if len(g) > 1:
+            out.append(float(slack(g)))
+    return min(out) if out else np.nan
 
 
 def last_converged(tips: pd.DataFrame) -> pd.DataFrame:
@@ -287,6 +305,7 @@ def c6_conversion_signs(e: Evidence) -> Claim:
         f"{int(signs.sum())}/{len(signs)} runs",
         _yes(signs.all()),
         "tip more compressive and top more tensile than intact in every run",
+        margin=float(min((-d.tip_radial_stress_kPa).min(), d.top_circ_stress_kPa.min())),
     )
 
 
@@ -312,6 +331,11 @@ def c7_conversion_grows_with_size(e: Evidence) -> Claim:
         ),
         _yes(grow == groups) if groups else "n/a",
         "monotone growth in size in every group (the text's reading)",
+        margin=_group_slack(
+            d.reset_index(),
+            ordered,
+            lambda g: min(np.diff(-g.tip_radial_stress_kPa).min(), np.diff(g.top_circ_stress_kPa).min()),
+        ),
     )
 
 
@@ -331,6 +355,7 @@ def c8_tensile_tip(e: Evidence) -> Claim:
         f"> 50 kPa in {100 * frac_50:.0f} % of states above 100 mEq/l",
         _yes(frac_tensile == 1 and frac_50 >= 0.5),
         "tensile in every run at the highest concentration and > 50 kPa in most states above 100 mEq/l",
+        margin=float(min(top.tip_radial_stress_kPa.min(), (high.tip_radial_stress_kPa - 50.0).median())),
     )
 
 
@@ -344,6 +369,7 @@ def c9_smaller_pools_higher_tip(e: Evidence) -> Claim:
         f"tip radial stress {at} decreases with pool size in {mono}/{groups} model-pressure groups",
         _yes(groups > 0 and mono == groups) if groups else "n/a",
         "monotone in every group",
+        margin=_group_slack(top, _ordered(e), lambda g: np.diff(-g.tip_radial_stress_kPa).min()),
     )
 
 
@@ -362,7 +388,11 @@ def c10_pressure_independent_tip(e: Evidence) -> Claim:
         f"largest spread over pressures {spread.max():.1f} kPa (median {spread.median():.1f} kPa)",
         _yes(spread.max() <= 10.0),
         "spread <= 10 kPa at every case and concentration >= 75 mEq/l",
+        margin=float(10.0 - spread.max()),
     )
+
+
+HIGH_PRESSURE_MMHG = 200.0  # the paper's high pressure of section 3: C11 reads the pressures below it, C12 this one
 
 
 def _activation_change(e: Evidence) -> pd.DataFrame | None:
@@ -388,7 +418,7 @@ def c11_activation_lowers_tip(e: Evidence) -> Claim | None:
     diff = _activation_change(e)
     if diff is None:
         return None
-    low = diff[diff.pressure_mmHg < diff.pressure_mmHg.max()]
+    low = diff[diff.pressure_mmHg < HIGH_PRESSURE_MMHG - 1e-9]
     return Claim(
         "C11",
         "Activation lowers the tip stress at 103 and 145 mmHg",
@@ -396,6 +426,7 @@ def c11_activation_lowers_tip(e: Evidence) -> Claim | None:
         _activation_text(e, low),
         _yes(len(low) and (low.active_minus_passive < 0).all()) if len(low) else "n/a",
         "negative for every case",
+        margin=float((-low.active_minus_passive).min()) if len(low) else np.nan,
     )
 
 
@@ -403,14 +434,15 @@ def c12_activation_raises_small_tips(e: Evidence) -> Claim | None:
     diff = _activation_change(e)
     if diff is None:
         return None
-    high_p = diff[(diff.pressure_mmHg == diff.pressure_mmHg.max()) & diff.case.isin(_ordered(e)[:2])]
+    high_p = diff[(abs(diff.pressure_mmHg - HIGH_PRESSURE_MMHG) < 1e-9) & diff.case.isin(_ordered(e)[:2])]
     return Claim(
         "C12",
         "... but raises it for the two smallest pools at 200 mmHg",
         "higher for cases I-II (section 3)",
-        _activation_text(e, high_p),
+        _activation_text(e, high_p) if len(high_p) else "no run at 200 mmHg",
         _yes((high_p.active_minus_passive > 0).all()) if len(high_p) else "n/a",
         "positive for the two smallest pools",
+        margin=float(high_p.active_minus_passive.min()) if len(high_p) else np.nan,
     )
 
 
@@ -621,12 +653,95 @@ def _found(claims, e: Evidence) -> list[Claim]:
     return [c for c in (claim(e) for claim in claims) if c is not None]
 
 
+# -- figure 4's claims across the resolution band -------------------------------------------------------------------
+
+
+def study_sets(e: Evidence) -> dict[str, Evidence]:
+    """The evidence of figure 4's resolution study (``e`` of one charge law and pool model) as the claims read it:
+    its intact and converted states at every spacing (``dx 3``, ...), and the Richardson-extrapolated values of its
+    band (``extrapolated``; the finest value where the three spacings give no order), each as a tip_stress.csv at
+    the study's pressure, with the study's pools. Empty without the study."""
+    if e.resolution is None or not len(e.resolution):
+        return {}
+    rows = e.resolution[e.resolution.stage.isin(["intact", "converted"])].assign(pressure_mmHg=e.study_pressure)
+    pools = {c: e.cases[c] for c in dict.fromkeys(rows.case) if c in e.cases}
+    sets = {f"dx {dx:g}": rows[rows.dx_um == dx] for dx in sorted(rows.dx_um.unique(), reverse=True)}
+    if e.band is not None and e.band.dx_um.nunique() >= 3:  # an extrapolation needs three spacings
+        fine = e.band[e.band.dx_um == e.band.dx_um.min()]
+        fine = fine.assign(value=fine.extrapolated.where(fine.extrapolated.notna(), fine.value))
+        key = ["model", "case", "stage", "concentration_mEq_l", "pressure_mmHg"]
+        sets["extrapolated"] = fine.pivot_table(index=key, columns="quantity", values="value").reset_index()
+    return {name: replace(e, tips=tips, cases=pools) for name, tips in sets.items()}
+
+
+def _highest_level(c: pd.Series) -> pd.Series:
+    return c >= c.max() - 1e-9
+
+
+#: the band rows each figure 4 claim reads: its stresses (gci_band.csv quantities) and concentrations (of the ramp)
+BAND_READS = {
+    "C6": (("tip_radial_stress_kPa", "top_circ_stress_kPa"), lambda c: c == 0.0),
+    "C7": (("tip_radial_stress_kPa", "top_circ_stress_kPa"), lambda c: c == 0.0),
+    "C8": (("tip_radial_stress_kPa",), lambda c: c >= 100.0 - 1e-9),
+    "C9": (("tip_radial_stress_kPa",), _highest_level),
+    "C10": (("tip_radial_stress_kPa",), lambda c: c >= 75.0 - 1e-9),
+    "C11": (("tip_radial_stress_kPa",), _highest_level),
+    "C12": (("tip_radial_stress_kPa",), _highest_level),
+}
+
+
+def band_width(band: pd.DataFrame | None, claim_id: str) -> float:
+    """The widest GCI band (kPa: GCI times the finest value's magnitude) among the rows claim ``claim_id`` reads."""
+    if band is None or claim_id not in BAND_READS or not len(band):
+        return np.nan
+    quantities, levels = BAND_READS[claim_id]
+    fine = band[(band.dx_um == band.dx_um.min()) & band.quantity.isin(quantities)]
+    fine = fine[levels(fine.concentration_mEq_l)]
+    return float((fine.gci_fine * fine.value.abs()).max()) if len(fine) else np.nan
+
+
+def _margin(m: float) -> str:
+    return f"{m:+.0f}" if np.isfinite(m) else "-"
+
+
+def across_band(e: Evidence, found: list[Claim]) -> list[Claim]:
+    """The figure 4 claims of ``found`` (one charge law and pool model) judged again on the resolution study
+    (:func:`study_sets`): each gets ``across_band``, its verdict and margin at every spacing and extrapolated, with
+    the widest GCI band it reads (:func:`band_width`); a claim holds only if it also holds on every one of them
+    that has its data (n/a: the study lacks it, e.g. a second pressure). Without the study, ``not run``."""
+    sets = study_sets(e)
+    fns = {fn.__name__.split("_")[0].upper(): fn for fn in SWELLING}
+    out = []
+    for claim in found:
+        if claim.claim_id not in fns:
+            out.append(claim)
+            continue
+        if not sets:
+            out.append(replace(claim, across_band=f"not run: `snakemake {TARGETS['resolution']}`"))
+            continue
+        verdicts = {name: fns[claim.claim_id](study) for name, study in sets.items()}
+        verdicts = {name: v for name, v in verdicts.items() if v is not None and v.holds != "n/a"}
+        if not verdicts:
+            out.append(replace(claim, across_band="n/a (the resolution study lacks its data)"))
+            continue
+        width = band_width(e.band, claim.claim_id)
+        text = ", ".join(f"{name}: {v.holds} ({_margin(v.margin)})" for name, v in verdicts.items())
+        text += f" kPa; widest band it reads +-{width:.0f} kPa" if np.isfinite(width) else " kPa"
+        holds = claim.holds if all(v.holds == "yes" for v in verdicts.values()) else "no"
+        out.append(replace(claim, holds=holds, across_band=text))
+    return out
+
+
 def evaluate(e: Evidence, laws) -> list[Claim]:
     """The claims table's rows: every calibration claim, then the pool claims of every (charge law, pool model) pair
-    of :func:`variants`: all of them with the paper's pool model, the figure 4 claims (C6-C12) with the others."""
-    return _found(CALIBRATION, e) + by_law(
-        variants(e.tips, laws), lambda law, pool: _found(POOL if pool == PAPER_POOL else SWELLING, e.of_law(law, pool))
-    )
+    of :func:`variants`: all of them with the paper's pool model, the figure 4 claims (C6-C12) with the others; the
+    figure 4 claims judged across the resolution band too (:func:`across_band`)."""
+
+    def pool_claims(law, pool):
+        of = e.of_law(law, pool)
+        return across_band(of, _found(POOL if pool == PAPER_POOL else SWELLING, of))
+
+    return _found(CALIBRATION, e) + by_law(variants(e.tips, laws), pool_claims)
 
 
 def variants(tips: pd.DataFrame | None, laws) -> list[tuple[str, str]]:
@@ -672,7 +787,18 @@ def by_law(pairs, evaluate) -> list[Claim]:
     return sorted(found, key=lambda c: order.index(c.claim_id))  # stable: the pairs of a claim keep their order
 
 
-COLUMNS = ["claim_id", "charge_law", "pool_model", "statement", "paper_value", "our_value", "holds", "criterion"]
+COLUMNS = [
+    "claim_id",
+    "charge_law",
+    "pool_model",
+    "statement",
+    "paper_value",
+    "our_value",
+    "holds",
+    "criterion",
+    "margin",
+    "across_band",
+]
 
 
 def table(claims: list[Claim]) -> pd.DataFrame:
@@ -692,12 +818,19 @@ def markdown(df: pd.DataFrame) -> str:
         "`particles` (the pool's GAG particles carry eq. 2.27) is the paper's, `cavity` (the pool as a pressurised "
         "cavity) our deviation.",
         "",
-        "| id | charge law | pool model | claim | paper | ours | holds | criterion |",
-        "|---|---|---|---|---|---|---|---|",
+        "The figure 4 claims (C6-C12) are judged again on figure 4's resolution study (target `resolution`: cases I "
+        "and IV at its pressure, at three spacings, and the Richardson-extrapolated values): a claim holds only if it "
+        "holds there too, at every spacing and extrapolated. `margin` is the criterion's smallest slack (kPa; "
+        "positive where it holds) on figure 4's runs; `across the band` gives it at each spacing and extrapolated, "
+        "beside the widest GCI band among the values the claim reads. A margin smaller than that band is not "
+        "resolved by the discretisation.",
+        "",
+        "| id | charge law | pool model | claim | paper | ours | holds | criterion | margin | across the band |",
+        "|---|---|---|---|---|---|---|---|---|---|",
     ]
     for r in df.itertuples():
         lines.append(
             f"| {r.claim_id} | {r.charge_law} | {r.pool_model} | {r.statement} | {r.paper_value} | {r.our_value} | "
-            f"**{r.holds}** | {r.criterion} |"
+            f"**{r.holds}** | {r.criterion} | {_margin(r.margin)} | {r.across_band} |"
         )
     return "\n".join(lines) + "\n"

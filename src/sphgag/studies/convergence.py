@@ -128,6 +128,25 @@ def gci_table(table: pd.DataFrame, concentrations, pressure_mmHg: float) -> pd.D
     return gci.tidy(values, GCI_KEYS)[GCI_COLUMNS]
 
 
+BAND_KEYS = ["charge_law", "pool_model", "model", "case", "pressure_mmHg", "stage", "concentration_mEq_l", "quantity"]
+BAND_QUANTITIES = ["tip_radial_stress_kPa", "top_circ_stress_kPa"]
+
+
+def band_table(table: pd.DataFrame, pressure_mmHg: float) -> pd.DataFrame:
+    """``results/swelling/gci_band.csv``, figure 4's bands: the GCI of the tip radial and top hoop stresses
+    (``quantity``) of the resolution study's intact wall and of every converted state on the concentration ramp,
+    per charge law, pool model, wall and case; one row per spacing with the estimate of the three finest
+    (:func:`sphgag.studies.gci.tidy`). ``pressure_mmHg``: the study's lumen pressure."""
+    on_ramp = table[table.stage.isin(["intact", "converted"])].assign(pressure_mmHg=float(pressure_mmHg))
+    values = on_ramp.melt(
+        id_vars=[k for k in BAND_KEYS if k != "quantity"] + ["dx_um"],
+        value_vars=BAND_QUANTITIES,
+        var_name="quantity",
+    )
+    values = values.sort_values(BAND_KEYS + ["dx_um"], kind="stable")
+    return gci.tidy(values[BAND_KEYS + ["dx_um", "value"]], BAND_KEYS)
+
+
 def bar(table: pd.DataFrame, concentration: float, columns=("tip_radial_stress_kPa", "pool_volume_change")):
     """Relative change of ``columns`` at ``concentration`` between the two finest spacings, per case."""
     rows = []

@@ -95,15 +95,17 @@ TIDY_RESULTS = ["observed_order", "extrapolated", "gci_fine", "order_in_range"]
 def tidy(values: pd.DataFrame, keys) -> pd.DataFrame:
     """Per group of ``keys`` of the long table ``values`` (columns ``keys``, ``dx_um`` and ``value``), the
     :class:`Estimate` of its three finest spacings on every row of the group (:data:`TIDY_RESULTS`; NaN where the
-    group has fewer than three finite values). Where the observed order lies outside :data:`ORDER_RANGE`,
-    ``order_in_range`` is False and the GCI is Roache's cautious one: the safety factor
-    :data:`CAUTIOUS_SAFETY_FACTOR` with the order clipped to that range."""
+    group has fewer than three finite values; no order, GCI 0 and the value itself where the two finest agree).
+    Where the observed order lies outside :data:`ORDER_RANGE`, ``order_in_range`` is False and the GCI is Roache's
+    cautious one: the safety factor :data:`CAUTIOUS_SAFETY_FACTOR` with the order clipped to that range."""
     out = []
     for _, group in values.groupby(list(keys), sort=False, dropna=False):
         group = group.sort_values("dx_um")
         finest = group[np.isfinite(group.value.to_numpy(dtype=float))].iloc[:3]
         e = estimate(finest.dx_um, finest.value) if len(finest) == 3 else None
         order, extrapolated, gci, in_range = np.nan, np.nan, np.nan, False
+        if e is not None and not np.isfinite(e.order):  # the two finer values agree (else: no estimate)
+            extrapolated, gci = e.extrapolated, e.gci_fine
         if e is not None and np.isfinite(e.order):
             order, extrapolated, gci = e.order, e.extrapolated, e.gci_fine
             in_range = ORDER_RANGE[0] <= e.order <= ORDER_RANGE[1]

@@ -7,12 +7,16 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 import seaborn as sns
+from matplotlib.lines import Line2D
+from matplotlib.patches import Patch
+from matplotlib.ticker import NullFormatter, ScalarFormatter
 
 from .style import (
     GAG_CONCENTRATION,
     LAST_CONVERGED,
     PAPER_POOL,
     _style,
+    is_paper_law,
     layer_colours,
     long_measures,
     pressure_colour,
@@ -112,6 +116,76 @@ def swelling_lines(data: pd.DataFrame, colours: dict, max_concentration: float, 
         ax.axhline(0.0, color="0.7", lw=0.6)
 
 
+BAND_LIMIT = 0.10  # figure 4 marks where the GCI band first exceeds this fraction of the value
+EXTRAPOLATED = "extrapolated (dx -> 0)"
+BAND = "GCI band of the finest dx (95 %)"
+NO_ORDER = "no order from the three dx (no band)"
+NOT_RUN = "resolution bands: not run (snakemake resolution)"
+
+
+def band_panel(ax, rows: pd.DataFrame):
+    """Figure 4's band in one panel: over the configured spacing's curve, the Richardson-extrapolated value (dashed)
+    and the GCI band of the finest spacing (grey: the value there +- GCI times its magnitude; gci_band.csv rows of
+    one law, pool model, wall, case and stress, converted states); a grey cross at the finest value where the three
+    spacings give no order (no band), and a dotted line where the band first exceeds :data:`BAND_LIMIT`. Returns
+    that concentration (NaN if it never does)."""
+    fine = rows[rows.dx_um == rows.dx_um.min()].sort_values("concentration_mEq_l")
+    if rows.dx_um.nunique() < 3:
+        return np.nan
+    c, v, g = fine.concentration_mEq_l, fine.value, fine.gci_fine
+    half = g * v.abs()
+    ax.fill_between(c, v - half, v + half, color="0.55", alpha=0.35, lw=0, zorder=1)
+    ax.plot(c, fine.extrapolated, color="k", ls="--", lw=0.9, zorder=4)
+    none = fine[g.isna()]
+    ax.scatter(none.concentration_mEq_l, none.value, marker="x", s=14, color="0.45", lw=0.8, zorder=4)
+    wide = fine[g > BAND_LIMIT]
+    first = float(wide.concentration_mEq_l.min()) if len(wide) else np.nan
+    if np.isfinite(first):
+        ax.axvline(first, color="k", ls=":", lw=0.8, zorder=0)
+        ax.annotate(
+            f"GCI > {BAND_LIMIT:.0%}",
+            (first, 1.0),
+            xycoords=("data", "axes fraction"),
+            xytext=(2, -9),
+            textcoords="offset points",
+            fontsize=6,
+        )
+    return first
+
+
+def volume_panel(ax, resolution: pd.DataFrame, case: str):
+    """The tip radial stress against the pool's volume ratio J at every spacing of the resolution study
+    (convergence.csv rows of the paper's law and pool model and one case, converted and at-volume states), the walls
+    by line style: the axis on which the spacings agree."""
+    rows = resolution[
+        resolution.charge_law.map(is_paper_law)
+        & (resolution.pool_model == PAPER_POOL)
+        & (resolution.case == case)
+        & (resolution.stage != "intact")
+    ]
+    spacings = sorted(resolution.dx_um.unique(), reverse=True)
+    shades = dict(zip(spacings, plt.cm.viridis(np.linspace(0.1, 0.85, len(spacings)))))
+    for (dx, wall), g in rows.groupby(["dx_um", "model"], sort=False):
+        g = g.assign(J=g.pool_volume_change + 1.0).sort_values("J")
+        ax.plot(
+            g.J,
+            g.tip_radial_stress_kPa,
+            color=shades[dx],
+            ls="-" if wall == "passive" else "--",
+            lw=1.0,
+            marker="o",
+            ms=2.5,
+            label=f"dx = {dx:g} um, {wall}",
+        )
+    ax.set_xscale("log")
+    ax.xaxis.set_minor_formatter(NullFormatter())
+    ax.xaxis.set_major_formatter(ScalarFormatter())
+    ax.axhline(0.0, color="0.7", lw=0.6)
+    ax.set_xlabel("pool volume ratio J")
+    if len(rows):
+        ax.legend(fontsize=6, frameon=False)
+
+
 def fig4(
     tips: pd.DataFrame,
     particles: pd.DataFrame,
@@ -122,13 +196,20 @@ def fig4(
     pressures=(),
     *,
     pool_layers,
+    band: pd.DataFrame | None = None,
+    resolution: pd.DataFrame | None = None,
 ):
     """Figure 4: (a) the pools; then for each charge law (``laws``, column ``charge_law``) and pool model (column
     ``pool_model``, the paper's first) the passive and active tip radial and top hoop stress vs concentration
     (seaborn facets of tip_stress.csv: a row per law, pool model, model and stress, a column per pool, a colour per
     pressure). A run's line ends at its last converged state (a cross if that is below ``max_concentration``). The
     colours are those of the pressures of the table and ``pressures`` together (figure 3's, so that a pressure has
-    one colour in both figures). ``pool_layers``: the layers a pool's particles are in (``bilayer.pool_layers``)."""
+    one colour in both figures). ``pool_layers``: the layers a pool's particles are in (``bilayer.pool_layers``).
+
+    With the resolution study (``band``: gci_band.csv, ``resolution``: convergence.csv; target ``resolution``), the
+    panels of its pools, laws and walls draw its extrapolated curve and GCI band (:func:`band_panel`), and a last
+    row plots the tip radial stress against the pool volume ratio at every spacing (:func:`volume_panel`, the paper's
+    law); without it, the figure says so."""
     _style()
     names = sorted(cases, key=lambda k: cases[k]["angular_extent_deg"])
     tips = tips if "pool_model" in tips else tips.assign(pool_model=PAPER_POOL)
@@ -154,11 +235,12 @@ def fig4(
         label((law, pool, m), q) for law, pool, m, q in zip(long.charge_law, long.pool_model, long.model, long.quantity)
     ]
     panels = [label(b, q) for b in blocks for q in (TIP, TOP)]
+    volume_row = f"({'bcdefghijklmnopqrstuvwxyz'[len(blocks)]}) paper's law, every dx\n{TIP}"
     grid = sns.FacetGrid(
         long,
         row="panel",
         col="case",
-        row_order=["(a)"] + panels,
+        row_order=["(a)"] + panels + ([volume_row] if resolution is not None else []),
         col_order=names,
         sharex=False,
         sharey="row",
@@ -171,7 +253,9 @@ def fig4(
     grid.set_axis_labels(GAG_CONCENTRATION, "")
     for ax, panel in zip(grid.axes[1:, 0], panels):
         ax.set_ylabel(panel)
-    for ax in grid.axes[1:].flat:  # one concentration axis: a run that ended early ends short of the others
+    for ax in grid.axes[
+        1 : 1 + len(panels)
+    ].flat:  # one concentration axis: a run that ended early ends short of the others
         ax.set_xlim(-0.04 * max_concentration, 1.04 * max_concentration)
     for k, (law, pool) in enumerate(pairs):  # a heading above each law's (and pool model's) rows
         grid.axes[1 + 2 * len(models) * k, 0].set_title(
@@ -187,6 +271,35 @@ def fig4(
             pool_layers,
         )
     grid.axes[0, 0].set_ylabel("radius (um)")
+    if band is not None:
+        converted = band[band.stage == "converted"]
+        quantity = {TIP: "tip_radial_stress_kPa", TOP: "top_circ_stress_kPa"}
+        for k, block in enumerate(blocks):
+            for j, q in enumerate((TIP, TOP)):
+                for ax, name in zip(grid.axes[1 + 2 * k + j], names):
+                    law, pool, m = block
+                    rows = converted[
+                        (converted.charge_law == law)
+                        & (converted.pool_model == pool)
+                        & (converted.model == m)
+                        & (converted.case == name)
+                        & (converted.quantity == quantity[q])
+                    ]
+                    if len(rows):
+                        band_panel(ax, rows)
+        proxies = [
+            Patch(color="0.55", alpha=0.35, lw=0),
+            Line2D([], [], color="k", ls="--", lw=0.9),
+            Line2D([], [], color="0.45", marker="x", ls="", lw=0.8),
+        ]
+        labels = [BAND, EXTRAPOLATED, NO_ORDER]
+        grid.figure.legend(proxies, labels, loc="lower right", fontsize=7, frameon=False)
+    else:
+        grid.figure.text(0.99, 0.003, NOT_RUN, ha="right", va="bottom", fontsize=7, color="0.3")
+    if resolution is not None:
+        for ax, name in zip(grid.axes[-1], names):
+            volume_panel(ax, resolution, name)
+        grid.axes[-1, 0].set_ylabel(volume_row)
     grid.tight_layout()
     return grid.figure
 
