@@ -9,6 +9,8 @@ Reads, where they exist (:data:`SOURCES`: README marker -> the table it is made 
 * ``results/sensitivity/morris/indices.csv`` (Morris screening): ``morris-ranking``, the inputs ranked by mu* per
   output and charge law, with the numerics' share of the top input's mu*;
 * ``results/verification/annulus.csv`` (the pressurised annulus): ``annulus-verification``;
+* ``results/swelling/gci.csv`` (figure 4's resolution study with its uncertainty): ``swelling-gci``;
+* ``results/claims.csv``: ``figure4-claims``, claims C6-C12 on figure 4's runs and across the resolution band;
 
 and writes each as a Markdown table between the README's markers ``<!-- name -->`` and ``<!-- /name -->``.
 
@@ -176,12 +178,76 @@ def annulus_table(table: pd.DataFrame) -> str:
     return "\n".join(rows)
 
 
+def _value(value: float, digits: int = 3) -> str:
+    return f"{value:.{digits}g}" if np.isfinite(value) else "-"
+
+
+def swelling_gci_table(table: pd.DataFrame) -> str:
+    """Figure 4's resolution study: per charge law, wall, case, quantity and where it is read (at a volume ratio J or
+    a concentration), the value at every spacing, the observed order, the extrapolated value, the GCI of the finest
+    spacing and the spacing at which the observed order puts a GCI of 5 %."""
+    spacings = sorted(table.dx_um.unique(), reverse=True)
+    names = {
+        "concentration_at_volume_mEq_l": ("c holding J (mEq/l)", "J = {:g}"),
+        "tip_radial_stress_at_volume_kPa": ("tip radial stress (kPa)", "J = {:g}"),
+        "top_circ_stress_at_volume_kPa": ("top hoop stress (kPa)", "J = {:g}"),
+        "tip_radial_stress_kPa": ("tip radial stress (kPa)", "{:g} mEq/l"),
+        "top_circ_stress_kPa": ("top hoop stress (kPa)", "{:g} mEq/l"),
+        "volume_ratio": ("pool volume ratio J", "{:g} mEq/l"),
+    }
+    head = (
+        "| law | wall | case | quantity | at | "
+        + " | ".join(f"dx = {dx:g} um" for dx in spacings)
+        + " | observed order | extrapolated | GCI (finest) | dx for a GCI of 5 % |"
+    )
+    rows = [head, "|" + " --- |" * (9 + len(spacings))]
+    order = table.assign(_q=table.quantity.map(list(names).index))
+    order = order.sort_values(["charge_law", "model", "case", "_q", "at", "dx_um"], kind="stable")
+    for (law, wall, case, quantity, at), g in order.groupby(
+        ["charge_law", "model", "case", "quantity", "at"], sort=False
+    ):
+        values = g.set_index("dx_um").value
+        first = g.sort_values("dx_um").iloc[0]
+        finest = values.sort_index().iloc[:3]
+        e = gci.estimate(finest.index, finest.to_numpy()) if len(finest) == 3 and finest.notna().all() else None
+        if not np.isfinite(first.observed_order):
+            order_text = "none: the differences grow" if e is not None and e.diverging else "-"
+        else:
+            order_text = f"{first.observed_order:.2f}" + ("" if first.order_in_range else " (outside 0.5-3)")
+        gci_text = f"{100 * first.gci_fine:.1f} %" if np.isfinite(first.gci_fine) else "-"
+        target = "reached" if np.isfinite(first.gci_fine) and first.gci_fine <= 0.05 else "-"
+        if target == "-" and e is not None and np.isfinite(e.order):
+            target = _um(e.spacing_for(0.05))
+        label, where = names[quantity]
+        cells = " | ".join(_value(values.get(dx, np.nan)) for dx in spacings)
+        rows.append(
+            f"| {law} | {wall} | {case} | {label} | {where.format(at)} | {cells} | {order_text} | "
+            f"{_value(first.extrapolated)} | {gci_text} | {target} |"
+        )
+    return "\n".join(rows)
+
+
+def figure4_claims_table(claims: pd.DataFrame) -> str:
+    """Claims C6-C12 (every charge law and pool model): the verdict on figure 4's runs and across the resolution
+    band, with the margin."""
+    rows = ["| claim | law | pool | holds | margin (kPa) | at every spacing and extrapolated (margin, kPa) |"]
+    rows.append("|" + " --- |" * 6)
+    figure4 = claims[claims.claim_id.isin([f"C{k}" for k in range(6, 13)])]
+    figure4 = figure4.assign(holds=figure4.holds.fillna("n/a"), across_band=figure4.across_band.fillna("n/a"))
+    for r in figure4.itertuples():
+        margin = f"{r.margin:+.0f}" if np.isfinite(r.margin) else "-"
+        rows.append(f"| {r.claim_id} | {r.charge_law} | {r.pool_model} | {r.holds} | {margin} | {r.across_band} |")
+    return "\n".join(rows)
+
+
 SOURCES = {  # README marker -> (the result table's path pattern under results/, the function that writes it)
     "delamination-runs": ("delamination/summary.csv", runs_table),
     "delamination-gci": ("delamination/gci.csv", gci_table),
     "hourglass-variants": ("variants/hourglass_*_summary.csv", variants_table),
     "morris-ranking": ("sensitivity/morris/indices.csv", morris_table),
     "annulus-verification": ("verification/annulus.csv", annulus_table),
+    "swelling-gci": ("swelling/gci.csv", swelling_gci_table),
+    "figure4-claims": ("claims.csv", figure4_claims_table),
 }
 
 
