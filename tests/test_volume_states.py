@@ -34,3 +34,22 @@ def test_a_state_at_a_volume_ratio_holds_it_and_is_the_concentration_paths(ci_co
     assert converted[-2].concentration < s.concentration < converted[-1].concentration
     direct = solver.follow_path(model, converted[-2].x, converted[-2].load, [s.load], tol=1e-8)[-1]
     assert np.abs(direct.x - s.x).max() < 1e-3 * np.abs(direct.x - converted[-2].x).max()
+
+
+def test_beyond_a_path_that_lost_equilibrium_the_volume_goes_on_as_the_control(ci_config, path):
+    """The same path marked as one that found no equilibrium beyond its last state: a J beyond it is reached from
+    there, under volume control, at a concentration above the last one; the next J from the one reached before it."""
+    from dataclasses import replace
+
+    model, states = path
+    cut = [replace(s, path_end="no equilibrium") for s in states]
+    converted = [s for s in cut if s.stage == "converted"]
+    last = volume_states.volume_of(model, converted[-1])
+    ratio = last[1] / last[2]
+    targets = [1.05 * ratio, 1.1 * ratio]
+    found = volume_states.at_volume_ratios(model, cut, targets, ci_config["numerics"])
+    assert list(found) == targets
+    for J, s in found.items():
+        _, v, v0 = volume_states.volume_of(model, s)
+        assert v / v0 == pytest.approx(J, rel=1e-8) and s.path_end == "no equilibrium"
+    assert converted[-1].concentration < found[targets[0]].concentration < found[targets[1]].concentration

@@ -35,7 +35,12 @@ with runlog.run(run, sm.log[0]) as log:
     max_residual = max(s.residual for ss in states.values() for s in ss)
     log.info("[%s] %d converged states of %d pools, largest residual %.2e", run, len(series), len(states), max_residual)
     for case, end in ends.items():
-        log.info("[%s] case %s: up to %g mEq/l (end: %s)", run, case, states[case][-1].concentration, end)
+        path = [s for s in states[case] if s.stage == "converted"]
+        held = ", ".join(f"{s.concentration:.4g}" for s in states[case] if s.stage == "at volume") or "none"
+        log.info(
+            "[%s] case %s: path up to %g mEq/l (end: %s); concentrations at the volume ratios: %s",
+            run, case, path[-1].concentration, end, held,
+        )  # fmt: skip
     provenance.write_record(
         sm.output.provenance,
         rule="swelling_convergence",

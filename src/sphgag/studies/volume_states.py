@@ -7,8 +7,11 @@ that holds a given volume ratio, and the stresses around the pool there, are wel
 those states on a path of :func:`sphgag.studies.protocols.swell_pool`: for each requested ``J``, from the last state
 of the path below it, the pool's volume ``J V_0`` is prescribed and the concentration is the unknown (the bordered
 Newton system of :func:`sphgag.engine.pool_volume.solve_at_volume`; ``V_0`` the pool's reference volume, ``J`` as
-``pool_volume_change + 1`` of :func:`sphgag.studies.protocols.pool_measurements`). A ``J`` beyond the path's last
-state is not reached (no state is extrapolated), and one that volume control cannot reach is logged and left out.
+``pool_volume_change + 1`` of :func:`sphgag.studies.protocols.pool_measurements`). A ``J`` beyond the last state of
+a complete path (one that reached the top of its ramp) is not reached: no state is extrapolated. Where the path lost
+equilibrium under concentration control, the pool's volume goes on as the control from its last state (as the path's
+own continuation does, :func:`sphgag.engine.pool_volume.continue_path`), so a ``J`` beyond it is reached from there.
+One that volume control cannot reach is logged and left out.
 """
 
 from __future__ import annotations
@@ -40,9 +43,9 @@ def at_volume_ratios(
     model: Model, states: list[protocols.PoolState], targets, numerics
 ) -> dict[float, protocols.PoolState]:
     """``{J: state}``: the state of the swelling path ``states`` (converted stage, in order of concentration) at
-    which the pool holds the volume ratio ``J``, for each ``J`` of ``targets`` that the path passes. Each is solved from
-    the last state below it, with the concentration as the unknown; its ``control`` is ``volume`` and its stage
-    :data:`STAGE`."""
+    which the pool holds the volume ratio ``J``, for each ``J`` of ``targets`` that the path passes, or beyond the end
+    of a path that lost equilibrium. Each is solved from the last state below it (of the path, or one reached beyond
+    it), with the concentration as the unknown; its ``control`` is ``volume`` and its stage :data:`STAGE`."""
     numerics = Numerics.of(numerics)
     opts = numerics.solver_options()
     path = [s for s in states if s.stage == "converted"]
@@ -50,13 +53,19 @@ def at_volume_ratios(
         return {}
     measured = [volume_of(model, s) for s in path]
     ratios = np.array([v / v0 for _, v, v0 in measured])
+    # a path that lost equilibrium under concentration control goes on under volume control: its J beyond the last
+    # state are reached from there (each from the last one reached); a complete path ends at the top of the ramp
+    open_end = path[-1].path_end != "complete"
     out = {}
     for J in sorted(float(t) for t in targets):
         below = np.flatnonzero(ratios <= J)
-        if below.size == 0 or below[-1] == len(path) - 1:  # not passed by the path: no state is extrapolated
+        beyond = below.size > 0 and below[-1] == len(path) - 1
+        if below.size == 0 or (beyond and not open_end):  # not passed by the path: no state is extrapolated
             continue
         k = int(below[-1])
         start, (pool, _, v0) = path[k], measured[k]
+        if beyond and out and max(out) > ratios[k]:
+            start = out[max(out)]
         at = protocols.state_model(model, start.cavity, start.x)
         run = f"{model.name}_J{J:g}"
         try:
@@ -68,5 +77,6 @@ def at_volume_ratios(
             continue
         reached = solver.State(vs.load, vs.x, None, vs.convergence)
         state = protocols.PoolState.of(STAGE, vs.concentration, reached, "volume", at, start.pool_model)
-        out[J] = replace(state, path_end=start.path_end, end_reason=start.end_reason)
+        out[J] = replace(state, path_end=path[k].path_end, end_reason=path[k].end_reason)
+        log.info("[%s] the pool holds J = %g at c = %.4g mEq/l", run, J, vs.concentration)
     return out
