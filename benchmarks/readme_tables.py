@@ -9,6 +9,7 @@ Reads, where they exist (:data:`SOURCES`: README marker -> the table it is made 
 * ``results/sensitivity/morris/indices.csv`` (Morris screening): ``morris-ranking``, the inputs ranked by mu* per
   output and charge law, with the numerics' share of the top input's mu*;
 * ``results/verification/annulus.csv`` (the pressurised annulus): ``annulus-verification``;
+* ``results/swelling/tip_stress.csv`` (figure 4's runs): ``figure4-runs``;
 * ``results/swelling/gci.csv`` (figure 4's resolution study with its uncertainty): ``swelling-gci``;
 * ``results/claims.csv``: ``figure4-claims``, claims C6-C12 on figure 4's runs and across the resolution band;
 
@@ -227,6 +228,29 @@ def swelling_gci_table(table: pd.DataFrame) -> str:
     return "\n".join(rows)
 
 
+def figure4_runs_table(tips: pd.DataFrame) -> str:
+    """Figure 4's runs per charge law and pool model: how many reach the top of the ramp, where the others' last
+    equilibrium is, and the tip radial stress and pool volume ratio there."""
+    rows = [
+        "| law | pool | runs reaching the top of the ramp | last equilibrium of the others (mEq/l) | "
+        "tip radial stress at each run's last equilibrium (kPa) | pool volume ratio J there |",
+        "|" + " --- |" * 6,
+    ]
+    conv = tips[tips.stage == "converted"]
+    top = conv.concentration_mEq_l.max()
+    for (law, pool), g in conv.groupby(["charge_law", "pool_model"], sort=False):
+        last = g.loc[g.groupby(["model", "pressure_mmHg", "case"]).concentration_mEq_l.idxmax()]
+        short = last[last.concentration_mEq_l < top - 1e-9]
+        ends = f"{short.concentration_mEq_l.min():g}-{short.concentration_mEq_l.max():g}" if len(short) else "-"
+        J = last.pool_volume_change + 1.0
+        tip = last.tip_radial_stress_kPa
+        rows.append(
+            f"| {law} | {pool} | {len(last) - len(short)} of {len(last)} (to {top:g} mEq/l) | {ends} | "
+            f"{tip.min():.0f} to {tip.max():.0f} (tensile in {int((tip > 0).sum())}) | {J.min():.3g}-{J.max():.3g} |"
+        )
+    return "\n".join(rows)
+
+
 def figure4_claims_table(claims: pd.DataFrame) -> str:
     """Claims C6-C12 (every charge law and pool model): the verdict on figure 4's runs and across the resolution
     band, with the margin."""
@@ -246,6 +270,7 @@ SOURCES = {  # README marker -> (the result table's path pattern under results/,
     "hourglass-variants": ("variants/hourglass_*_summary.csv", variants_table),
     "morris-ranking": ("sensitivity/morris/indices.csv", morris_table),
     "annulus-verification": ("verification/annulus.csv", annulus_table),
+    "figure4-runs": ("swelling/tip_stress.csv", figure4_runs_table),
     "swelling-gci": ("swelling/gci.csv", swelling_gci_table),
     "figure4-claims": ("claims.csv", figure4_claims_table),
 }
