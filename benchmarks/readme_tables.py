@@ -11,6 +11,7 @@ Reads, where they exist (:data:`SOURCES`: README marker -> the table it is made 
 * ``results/verification/annulus.csv`` (the pressurised annulus): ``annulus-verification``;
 * ``results/swelling/tip_stress.csv`` (figure 4's runs): ``figure4-runs``;
 * ``results/swelling/gci.csv`` (figure 4's resolution study with its uncertainty): ``swelling-gci``;
+* ``results/swelling/gci_band.csv`` (figure 4's bands): ``figure4-bands``, where each band first exceeds 10 %;
 * ``results/claims.csv``: ``figure4-claims``, claims C6-C12 on figure 4's runs and across the resolution band;
 
 and writes each as a Markdown table between the README's markers ``<!-- name -->`` and ``<!-- /name -->``.
@@ -251,6 +252,26 @@ def figure4_runs_table(tips: pd.DataFrame) -> str:
     return "\n".join(rows)
 
 
+def band_limit_table(band: pd.DataFrame, limit: float = 0.10) -> str:
+    """Figure 4's bands: per charge law, wall, case and stress, the first concentration of the ramp at which the GCI
+    of the finest spacing exceeds ``limit`` (or the three spacings give no order there), and the GCI at the top."""
+    conv = band[(band.stage == "converted") & (band.dx_um == band.dx_um.min())]
+    names = {"tip_radial_stress_kPa": "tip radial stress", "top_circ_stress_kPa": "top hoop stress"}
+    rows = [
+        f"| law | wall | case | stress | band above {limit:.0%} from (mEq/l) | GCI at each step: "
+        + ", ".join(f"{c:g}" for c in sorted(conv.concentration_mEq_l.unique()))
+        + " mEq/l |",
+        "|" + " --- |" * 6,
+    ]
+    for (law, wall, case, quantity), g in conv.groupby(["charge_law", "model", "case", "quantity"], sort=True):
+        g = g.sort_values("concentration_mEq_l")
+        wide = g[~(g.gci_fine <= limit)]
+        first = f"{wide.concentration_mEq_l.iloc[0]:g}" if len(wide) else "never"
+        steps = ", ".join(f"{100 * v:.0f} %" if np.isfinite(v) else "no order" for v in g.gci_fine)
+        rows.append(f"| {law} | {wall} | {case} | {names[quantity]} | {first} | {steps} |")
+    return "\n".join(rows)
+
+
 def figure4_claims_table(claims: pd.DataFrame) -> str:
     """Claims C6-C12 (every charge law and pool model): the verdict on figure 4's runs and across the resolution
     band, with the margin."""
@@ -272,6 +293,7 @@ SOURCES = {  # README marker -> (the result table's path pattern under results/,
     "annulus-verification": ("verification/annulus.csv", annulus_table),
     "figure4-runs": ("swelling/tip_stress.csv", figure4_runs_table),
     "swelling-gci": ("swelling/gci.csv", swelling_gci_table),
+    "figure4-bands": ("swelling/gci_band.csv", band_limit_table),
     "figure4-claims": ("claims.csv", figure4_claims_table),
 }
 

@@ -214,3 +214,5 @@ def test_a_figure_4_claim_holds_only_if_it_holds_at_every_spacing_and_extrapolat
     alone = claims.across_band(replace(e, resolution=None, band=None), claims.swelling_claims(tips, CASES, 150.0))
     assert all(c.across_band == "not run: `snakemake resolution`" for c in alone)
     assert [c.holds for c in alone] == [c.holds for c in claims.swelling_claims(tips, CASES, 150.0)]
+    other = claims.across_band(replace(e, resolution=resolution.iloc[:0]), claims.swelling_claims(tips, CASES, 150.0))
+    assert all(c.across_band.startswith("not in the resolution study") for c in other)

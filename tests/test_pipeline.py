@@ -16,6 +16,7 @@ import pytest
 import yaml
 
 from sphgag.studies import convergence, delamination, pool_response
+from sphgag.studies.claims import COLUMNS as CLAIMS_COLUMNS
 from sphgag.studies.claims import PAPER_POOL
 from sphgag.studies.protocols import POOL_MODELS
 
@@ -67,17 +68,7 @@ CONTRACT = {
         "top_circ_stress_kPa",
         "residual",
     ],
-    "results/claims.csv": [
-        "claim_id",
-        "charge_law",
-        "pool_model",
-        "statement",
-        "paper_value",
-        "our_value",
-        "holds",
-        "margin",
-        "across_band",
-    ],
+    "results/claims.csv": CLAIMS_COLUMNS,
     "results/verification/pressurised_crack.csv": [
         "dx_um",
         "half_length_um",

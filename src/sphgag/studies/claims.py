@@ -708,7 +708,8 @@ def across_band(e: Evidence, found: list[Claim]) -> list[Claim]:
     """The figure 4 claims of ``found`` (one charge law and pool model) judged again on the resolution study
     (:func:`study_sets`): each gets ``across_band``, its verdict and margin at every spacing and extrapolated, with
     the widest GCI band it reads (:func:`band_width`); a claim holds only if it also holds on every one of them
-    that has its data (n/a: the study lacks it, e.g. a second pressure). Without the study, ``not run``."""
+    that has its data (n/a: the study lacks it, e.g. a second pressure). Without the study, ``not run``; for a
+    charge law or pool model the study does not run, ``not in the resolution study``."""
     sets = study_sets(e)
     fns = {fn.__name__.split("_")[0].upper(): fn for fn in SWELLING}
     out = []
@@ -716,8 +717,11 @@ def across_band(e: Evidence, found: list[Claim]) -> list[Claim]:
         if claim.claim_id not in fns:
             out.append(claim)
             continue
-        if not sets:
+        if e.resolution is None:
             out.append(replace(claim, across_band=f"not run: `snakemake {TARGETS['resolution']}`"))
+            continue
+        if not sets:
+            out.append(replace(claim, across_band="not in the resolution study (swelling_convergence.pool_models)"))
             continue
         verdicts = {name: fns[claim.claim_id](study) for name, study in sets.items()}
         verdicts = {name: v for name, v in verdicts.items() if v is not None and v.holds != "n/a"}
