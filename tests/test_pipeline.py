@@ -451,10 +451,11 @@ def test_nothing_to_do_after_a_complete_run(workdir):
     run = snakemake(workdir, "-n", "everything")
     assert run.returncode == 0
     assert "Nothing to be done" in run.stdout + run.stderr
-    # `all` after `everything`: the claims read the sensitivity study as it stands instead of waiting for it (a
-    # parameter where it was an input), so their one job reruns, to the same bytes; nothing else does
+    # `all` after `everything`: the claims and figure 4 read the sensitivity and resolution studies as they stand
+    # instead of waiting for them (a parameter where it was an input), so their jobs rerun, to the same bytes;
+    # nothing else does
     run = snakemake(workdir, "-n", "all")
-    assert planned_jobs(run.stdout + run.stderr) == {"claims": 1, "all": 1}
+    assert planned_jobs(run.stdout + run.stderr) == {"claims": 1, "fig4": 1, "all": 1}
 
 
 def test_changing_a_parameter_reruns_only_what_it_affects(workdir, ci_config, tmp_path):
@@ -1018,15 +1019,15 @@ def test_an_edit_plans_only_the_jobs_that_read_the_key_and_what_follows(workdir,
 
 
 def test_a_claim_whose_target_has_not_run_says_so(workdir, ci_config, tmp_path):
-    """Without the sensitivity study, `snakemake all` redraws the claims table alone, and C18 is in it, once per law,
-    naming the command that makes its evidence."""
+    """Without the sensitivity study, `snakemake all` redraws the claims table (and figure 4, which reads the
+    resolution study as it stands), and C18 is in it, once per law, naming the command that makes its evidence."""
     copy_dir = tmp_path / "copy"
     shutil.copytree(workdir, copy_dir, symlinks=True)
     shutil.rmtree(copy_dir / "results/sensitivity")
     run = snakemake(copy_dir, "all")
     out = run.stdout + run.stderr
     assert run.returncode == 0, out[-3000:]
-    assert planned_jobs(out) == {"claims": 1, "all": 1}
+    assert planned_jobs(out) == {"claims": 1, "fig4": 1, "all": 1}
     claims = pd.read_csv(copy_dir / "results/claims.csv", keep_default_na=False)
     c18 = claims[claims.claim_id == "C18"]
     assert sorted(c18.charge_law) == sorted(ci_config["gag"]["charge_laws"])

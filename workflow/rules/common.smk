@@ -191,11 +191,11 @@ wildcard_constraints:
     run=r"[^/]+",
 
 
-# Evidence of the claims that a target other than `all` makes (the sensitivity study's samples, say). Where this run
-# makes it (its target or `everything` asked for), it is an input, so that the claims wait for it. Otherwise the claims
-# read it as an earlier run left it, and its digest is a parameter: a new result redraws the claims table, but
-# `snakemake all` never pulls in the study that makes it. Without it, the claim's row says "not run". (Switching
-# between the two ways reruns the claims rule alone, to the same bytes.)
+# Evidence of the claims and figures that a target other than `all` makes (the sensitivity study's samples, figure 4's
+# resolution bands). Where this run makes it (its target or `everything` asked for), it is an input, so that the
+# claims and figures wait for it. Otherwise they read it as an earlier run left it, and its digest is a parameter: a new
+# result redraws them, but `snakemake all` never pulls in the study that makes it. Without it, the claim's row (or the
+# figure) says "not run". (Switching between the two ways reruns the rules that read it alone, to the same bytes.)
 def requested(target):
     """Whether this invocation asked for the rule ``target`` (or `everything`)."""
     asked = workflow.dag_settings.targets if workflow.dag_settings is not None else ()
