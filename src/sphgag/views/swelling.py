@@ -295,7 +295,7 @@ def fig4(
         labels = [BAND, EXTRAPOLATED, NO_ORDER]
         grid.figure.legend(proxies, labels, loc="lower right", fontsize=7, frameon=False)
     else:
-        grid.figure.text(0.99, 0.003, NOT_RUN, ha="right", va="bottom", fontsize=7, color="0.3")
+        grid.figure.text(0.99, 0.998, NOT_RUN, ha="right", va="top", fontsize=7, color="0.3")
     if resolution is not None:
         for ax, name in zip(grid.axes[-1], names):
             volume_panel(ax, resolution, name)
