@@ -268,21 +268,27 @@ def figure4_runs_table(tips: pd.DataFrame) -> str:
 
 def band_limit_table(band: pd.DataFrame, limit: float = 0.10) -> str:
     """Figure 4's bands: per charge law, wall, case and stress, the first concentration of the ramp at which the GCI
-    of the finest spacing exceeds ``limit`` (or the three spacings give no order there), and the GCI at the top."""
+    of the finest spacing exceeds ``limit`` (or the three spacings give no order there), and the GCI at every step
+    (``-``: a step that not every spacing reached)."""
     conv = band[(band.stage == "converted") & (band.dx_um == band.dx_um.min())]
     names = {"tip_radial_stress_kPa": "tip radial stress", "top_circ_stress_kPa": "top hoop stress"}
+    levels = sorted(conv.concentration_mEq_l.unique())
     rows = [
-        f"| law | wall | case | stress | band above {limit:.0%} from (mEq/l) | GCI at each step: "
-        + ", ".join(f"{c:g}" for c in sorted(conv.concentration_mEq_l.unique()))
-        + " mEq/l |",
-        "|" + " --- |" * 6,
+        f"| law | wall | case | stress | band above {limit:.0%} from (mEq/l) | "
+        + " | ".join(f"GCI at {c:g}" for c in levels)
+        + " |",
+        "|" + " --- |" * (5 + len(levels)),
     ]
     for (law, wall, case, quantity), g in conv.groupby(["charge_law", "model", "case", "quantity"], sort=True):
         g = g.sort_values("concentration_mEq_l")
         wide = g[~(g.gci_fine <= limit)]
         first = f"{wide.concentration_mEq_l.iloc[0]:g}" if len(wide) else "never"
-        steps = ", ".join(f"{100 * v:.0f} %" if np.isfinite(v) else "no order" for v in g.gci_fine)
-        rows.append(f"| {law} | {wall} | {case} | {names[quantity]} | {first} | {steps} |")
+        gci_at = g.set_index("concentration_mEq_l").gci_fine
+        steps = [
+            "-" if c not in gci_at.index else f"{100 * gci_at[c]:.0f} %" if np.isfinite(gci_at[c]) else "no order"
+            for c in levels
+        ]
+        rows.append(f"| {law} | {wall} | {case} | {names[quantity]} | {first} | {' | '.join(steps)} |")
     return "\n".join(rows)
 
 

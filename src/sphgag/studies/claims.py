@@ -690,14 +690,21 @@ BAND_READS = {
 }
 
 
-def band_width(band: pd.DataFrame | None, claim_id: str) -> float:
-    """The widest GCI band (kPa: GCI times the finest value's magnitude) among the rows claim ``claim_id`` reads."""
+def band_width(band: pd.DataFrame | None, claim_id: str) -> str:
+    """The widest GCI band (kPa: GCI times the finest value's magnitude) among the rows claim ``claim_id`` reads, as
+    the claims table says it (empty without them)."""
     if band is None or claim_id not in BAND_READS or not len(band):
-        return np.nan
+        return ""
     quantities, levels = BAND_READS[claim_id]
     fine = band[(band.dx_um == band.dx_um.min()) & band.quantity.isin(quantities)]
     fine = fine[levels(fine.concentration_mEq_l)]
-    return float((fine.gci_fine * fine.value.abs()).max()) if len(fine) else np.nan
+    if not len(fine):
+        return ""
+    half = fine.gci_fine * fine.value.abs()
+    width = f"widest band it reads +-{half.max():.0f} kPa" if half.notna().any() else ""
+    missing = int(half.isna().sum())
+    none = f"no order (no band) at {missing} of the {len(half)} values it reads" if missing else ""
+    return "; " + ", ".join(t for t in (width, none) if t) if (width or none) else ""
 
 
 def _margin(m: float) -> str:
@@ -728,9 +735,8 @@ def across_band(e: Evidence, found: list[Claim]) -> list[Claim]:
         if not verdicts:
             out.append(replace(claim, across_band="n/a (the resolution study lacks its data)"))
             continue
-        width = band_width(e.band, claim.claim_id)
         text = ", ".join(f"{name}: {v.holds} ({_margin(v.margin)})" for name, v in verdicts.items())
-        text += f" kPa; widest band it reads +-{width:.0f} kPa" if np.isfinite(width) else " kPa"
+        text += " kPa" + band_width(e.band, claim.claim_id)
         holds = claim.holds if all(v.holds == "yes" for v in verdicts.values()) else "no"
         out.append(replace(claim, holds=holds, across_band=text))
     return out
@@ -824,7 +830,10 @@ def markdown(df: pd.DataFrame) -> str:
         "",
         "The figure 4 claims (C6-C12) are judged again on figure 4's resolution study (target `resolution`: cases I "
         "and IV at its pressure, at three spacings, and the Richardson-extrapolated values): a claim holds only if it "
-        "holds there too, at every spacing and extrapolated. `margin` is the criterion's smallest slack (kPa; "
+        "holds there too, at every spacing and extrapolated (where the three spacings give no order, the finest "
+        "value stands in for the extrapolated one). Where a run ends below the top of the ramp, a claim that reads "
+        "the highest concentration reads its last equilibrium, as on figure 4's runs. `margin` is the criterion's "
+        "smallest slack (kPa; "
         "positive where it holds) on figure 4's runs; `across the band` gives it at each spacing and extrapolated, "
         "beside the widest GCI band among the values the claim reads. A margin smaller than that band is not "
         "resolved by the discretisation.",
