@@ -29,7 +29,7 @@ rule delaminate:
     threads: 1
     resources:
         runtime=5,
-        mem_mb=1000,
+        mem_mb=1500,
     params:
         state_slice=dict(PRESSURISED_SLICE, model="passive"),
         pools=lambda wildcards: DE["pool_sets"][wildcards.poolset],

@@ -23,7 +23,7 @@ rule swell:
         "../envs/sphgag.yaml"
     threads: 1
     resources:
-        runtime=7,
+        runtime=8,
         mem_mb=1500,
     params:
         state_slice=lambda wildcards: dict(PRESSURISED_SLICE, model=wildcards.model),
@@ -128,8 +128,8 @@ rule swelling_convergence_dx:
         "../envs/sphgag.yaml"
     threads: 1
     resources:
-        runtime=26,
-        mem_mb=2500,
+        runtime=90,
+        mem_mb=4500,
     params:
         **SC_SIMULATION,
         gag=lambda wildcards: GAG[wildcards.law],
@@ -156,7 +156,7 @@ rule swelling_convergence_stresses:
     threads: 1
     resources:
         runtime=5,
-        mem_mb=1500,
+        mem_mb=2000,
     params:
         **SC_SIMULATION,
         gag=lambda wildcards: GAG[wildcards.law],
