@@ -103,11 +103,6 @@ SC_POOLS = "{law}/{pool}"
 SC_NAME = f"{SC_POOLS}/{{model}}_dx{{dx}}"
 
 
-def sc_runs(pattern):
-    """``pattern`` for every run of the study: its charge laws and pool models, walls and spacings."""
-    return swell_runs(pattern, pools=SC["pool_models"], model=SC["models"], case=[], pressure=[], dx=CONVERGENCE_DX)
-
-
 wildcard_constraints:
     dx="|".join(re.escape(dx) for dx in CONVERGENCE_DX),
 
@@ -169,7 +164,14 @@ rule swelling_convergence_stresses:
 rule swelling_convergence:
     """The resolution study of the pool stresses (every charge law and pool model) in one tidy table."""
     input:
-        sc_runs(rules.swelling_convergence_stresses.output.table),
+        swell_runs(  # every run of the study: its charge laws and pool models, walls and spacings
+            rules.swelling_convergence_stresses.output.table,
+            pools=SC["pool_models"],
+            model=SC["models"],
+            case=[],
+            pressure=[],
+            dx=CONVERGENCE_DX,
+        ),
     output:
         report(
             "results/swelling/convergence.csv",
