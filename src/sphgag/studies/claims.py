@@ -102,27 +102,23 @@ def _hoop_range(profile: pd.DataFrame) -> float:
     return float((s.max() - s.min()) / s.mean())
 
 
+def _size_groups(table: pd.DataFrame, ordered: list) -> list[pd.DataFrame]:
+    """Per model and pressure, the rows indexed by case in the pool-size order ``ordered``: the groups with more than
+    one pool."""
+    groups = [g.set_index("case") for _, g in table.groupby(["model", "pressure_mmHg"])]
+    groups = [g.loc[[c for c in ordered if c in g.index]] for g in groups]
+    return [g for g in groups if len(g) > 1]
+
+
 def _monotone_groups(table: pd.DataFrame, ordered: list, holds) -> tuple[int, int]:
     """(groups where ``holds(rows ordered by pool size)``, groups with more than one pool) per model and pressure."""
-    hits = groups = 0
-    for _, g in table.groupby(["model", "pressure_mmHg"]):
-        g = g.set_index("case")
-        g = g.loc[[c for c in ordered if c in g.index]]
-        if len(g) > 1:
-            groups += 1
-            hits += bool(holds(g))
-    return hits, groups
+    groups = _size_groups(table, ordered)
+    return sum(bool(holds(g)) for g in groups), len(groups)
 
 
 def _group_slack(table: pd.DataFrame, ordered: list, slack) -> float:
     """The smallest ``slack(rows ordered by pool size)`` over the model-pressure groups with more than one pool."""
-    out = []
-    for _, g in table.groupby(["model", "pressure_mmHg"]):
-        g = g.set_index("case")
-        g = g.loc[[c for c in ordered if c in g.index]]
-        if len(g) > 1:
-            out.append(float(slack(g)))
-    return min(out) if out else np.nan
+    return min((float(slack(g)) for g in _size_groups(table, ordered)), default=np.nan)
 
 
 def last_converged(tips: pd.DataFrame) -> pd.DataFrame:
@@ -701,10 +697,10 @@ def band_width(band: pd.DataFrame | None, claim_id: str) -> str:
     if not len(fine):
         return ""
     half = fine.gci_fine * fine.value.abs()
-    width = f"widest band it reads +-{half.max():.0f} kPa" if half.notna().any() else ""
     missing = int(half.isna().sum())
-    none = f"no order (no band) at {missing} of the {len(half)} values it reads" if missing else ""
-    return "; " + ", ".join(t for t in (width, none) if t) if (width or none) else ""
+    parts = [f"widest band it reads +-{half.max():.0f} kPa"] if missing < len(half) else []
+    parts += [f"no order (no band) at {missing} of the {len(half)} values it reads"] if missing else []
+    return "; " + ", ".join(parts) if parts else ""
 
 
 def _margin(m: float) -> str:
