@@ -115,10 +115,13 @@ rule sensitivity:
 
 
 rule variants:
-    """The numerical variants beside the default: eq. (2.14) as printed and its energy form, on figure 4's first pool
-    and figure 5's pool, with the figure that compares them."""
+    """The variants beside the default: eq. (2.14) as printed and its energy form, on figure 4's first pool and
+    figure 5's pool, with the figure that compares them; and figure 4 and its claims with every pool model
+    (swelling.variant_pool_models beside the paper's)."""
     input:
         rules.variants_figure.output,
+        rules.variants_fig4.output,
+        rules.variants_claims.output,
 
 
 rule views:

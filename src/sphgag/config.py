@@ -178,6 +178,7 @@ def _registries() -> dict:
     return {
         ("gag", "charge_laws"): list(donnan.LAWS),
         ("swelling", "pool_models"): list(POOL_MODELS),
+        ("swelling", "variant_pool_models"): list(POOL_MODELS),
         ("delamination", "criteria"): list(CRITERIA),
         ("delamination", "candidates"): list(RULES),
     }
@@ -373,15 +374,22 @@ def _pool_angles(pool: dict) -> tuple[float, float]:
     return pool["centre_angle_deg"] - half, pool["centre_angle_deg"] + half
 
 
-def _pool_models(pool_models: list, laws: list) -> list[str]:
-    """Each pool model of the swelling runs must carry one of the configured charge laws (it runs under those)."""
+def _pool_models(swelling: dict, laws: list) -> list[str]:
+    """Each pool model of the swelling runs (figure 4's and the variants') must carry one of the configured charge
+    laws (it runs under those), and a variant is not also one of figure 4's."""
     from .studies.protocols import POOL_MODELS
 
-    return [
-        f"swelling.pool_models[{k}] = {name!r} carries the charge laws {', '.join(POOL_MODELS[name].laws)}, none of "
+    problems = [
+        f"swelling.{key}[{k}] = {name!r} carries the charge laws {', '.join(POOL_MODELS[name].laws)}, none of "
         f"gag.charge_laws = {laws}"
-        for k, name in enumerate(pool_models)
+        for key in ("pool_models", "variant_pool_models")
+        for k, name in enumerate(swelling.get(key, []))
         if name in POOL_MODELS and not set(POOL_MODELS[name].laws) & set(laws)
+    ]
+    return problems + [
+        f"swelling.variant_pool_models[{k}] = {name!r} is one of swelling.pool_models: it runs in target all already"
+        for k, name in enumerate(swelling.get("variant_pool_models", []))
+        if name in swelling.get("pool_models", [])
     ]
 
 
@@ -446,13 +454,14 @@ def _composition(config: dict) -> list[str]:
 def _swelling(config: dict) -> list[str]:
     """The pool models carry a configured charge law, and the resolution study's cases are pools of the sweeps."""
     sw = config.get("swelling", {})
-    problems = _pool_models(sw.get("pool_models", []), config.get("gag", {}).get("charge_laws", []))
+    problems = _pool_models(sw, config.get("gag", {}).get("charge_laws", []))
     sc = config.get("swelling_convergence", {})
+    pools = sw.get("pool_models", []) + sw.get("variant_pool_models", [])
     for k, name in enumerate(sc.get("pool_models", [])):
-        if name not in sw.get("pool_models", []):
+        if name not in pools:
             problems.append(
-                f"swelling_convergence.pool_models[{k}] = {name!r} is not one of swelling.pool_models "
-                f"({', '.join(sw.get('pool_models', []))})"
+                f"swelling_convergence.pool_models[{k}] = {name!r} is not one of swelling.pool_models or "
+                f"swelling.variant_pool_models ({', '.join(pools)})"
             )
     for k, name in enumerate(sc.get("cases", [])):
         if name not in sw.get("cases", {}):

@@ -80,11 +80,15 @@ CASES = list(SW["cases"])
 SWELL_PRESSURES = [f"{p:g}" for p in SW["pressures_mmHg"]]
 # what the simulations depend on; probe_length_um only sets where rule pool_stresses measures
 SWELL_SETTINGS = {
-    k: v for k, v in SW.items() if k not in ("cases", "models", "pool_models", "pressures_mmHg", "probe_length_um")
+    k: v
+    for k, v in SW.items()
+    if k not in ("cases", "models", "pool_models", "variant_pool_models", "pressures_mmHg", "probe_length_um")
 }
 # the pool models run side by side (wildcard {pool}), each under the charge laws it carries
-# (sphgag.studies.protocols.POOL_MODELS); a run's settings hold its own pool model only
-LAWS_OF_POOL = {pool: [law for law in LAWS if law in POOL_MODELS[pool].laws] for pool in SW["pool_models"]}
+# (sphgag.studies.protocols.POOL_MODELS); a run's settings hold its own pool model only. Figure 4's pool models
+# (swelling.pool_models) run in `all`; the variants' (swelling.variant_pool_models) in target `variants` only.
+SWELL_POOLS = SW["pool_models"] + SW["variant_pool_models"]
+LAWS_OF_POOL = {pool: [law for law in LAWS if law in POOL_MODELS[pool].laws] for pool in SWELL_POOLS}
 SWELL_LAWS_POOLS = dict(
     zip(("law", "pool"), zip(*((law, pool) for pool, laws in LAWS_OF_POOL.items() for law in laws)))
 )
@@ -95,15 +99,15 @@ def swell_settings(wildcards):
     return dict(SWELL_SETTINGS, pool_model=wildcards.pool)
 
 
-def swell_runs(pattern, pools=None, **wildcards):
-    """``pattern`` expanded for every (charge law, pool model) pair that runs (of the pool models ``pools`` if
+def swell_runs(pattern, pools=SW["pool_models"], **wildcards):
+    """``pattern`` expanded for every (charge law, pool model) pair of the pool models ``pools`` (figure 4's unless
     given), and every other wildcard of the swelling runs (``model``, ``case``, ``pressure``) unless given."""
     others = dict(dict(model=SW["models"], case=CASES, pressure=SWELL_PRESSURES), **wildcards)
     pairs = zip(SWELL_LAWS_POOLS["law"], SWELL_LAWS_POOLS["pool"])
     return [
         path
         for law, pool in pairs
-        if pools is None or pool in pools
+        if pool in pools
         for path in expand(pattern, law=law, pool=pool, **others)
     ]
 
@@ -186,7 +190,7 @@ def law_and_run(names):
 
 wildcard_constraints:
     law="|".join(LAWS),
-    pool="|".join(SW["pool_models"]),
+    pool="|".join(SWELL_POOLS),
     criterion="|".join(CRITERIA),
     run=r"[^/]+",
 

@@ -64,7 +64,7 @@ rule pool_stresses:
 
 
 rule tip_stress:
-    """All swelling runs (every charge law and pool model) in one tidy table (figure 4)."""
+    """Figure 4's swelling runs (every charge law and pool model of swelling.pool_models) in one tidy table."""
     input:
         swell_runs(rules.pool_stresses.output.table),
     output:

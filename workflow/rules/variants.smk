@@ -78,3 +78,71 @@ rule variants_figure:
         default=config["numerics"]["hourglass"],
     script:
         "../scripts/variants_figure.py"
+
+
+# The pool models beside the paper's (swelling.variant_pool_models): figure 4's swelling runs of every pool model, and
+# figure 4 and its claims redrawn with them, by the rules of target `all` with these tables.
+VARIANT_POOLS = SW["pool_models"] + SW["variant_pool_models"]
+
+
+use rule tip_stress as variants_tip_stress with:
+    input:
+        swell_runs(rules.pool_stresses.output.table, pools=VARIANT_POOLS),
+    output:
+        report(
+            "results/variants/tip_stress.csv",
+            caption="../report/tip_stress.rst",
+            category="6 Variants",
+            labels={"result": "Table: figure 4's swelling runs of every pool model"},
+        ),
+    log:
+        "logs/variants_tip_stress.log",
+    benchmark:
+        "results/benchmarks/variants_tip_stress.tsv"
+
+
+use rule fig4 as variants_fig4 with:
+    input:
+        code=VIEWS["swelling"],
+        tips=rules.variants_tip_stress.output[0],
+        particles=rules.homeostasis.output.particles,
+    output:
+        pdf="figures/variants_pool_models.pdf",
+        png=report(
+            "figures/variants_pool_models.png",
+            caption="../report/variants_pool_models.rst",
+            category="6 Variants",
+            labels={"result": "Figure 4 with every pool model"},
+        ),
+    log:
+        "logs/variants_fig4.log",
+    benchmark:
+        "results/benchmarks/variants_fig4.tsv"
+
+
+use rule claims as variants_claims with:
+    input:
+        code=CLAIMS,
+        mean=rules.calibrate_mean.output.states,
+        bilayer=rules.bilayer_table.output.table,
+        activation=rules.bilayer_table.output.activation,
+        layers=rules.homeostasis.output.layers,
+        transmural=rules.transmural.output[0],
+        tips=rules.variants_tip_stress.output[0],
+        growth=rules.delamination_growth.output[0],
+        delamination=rules.delamination_summary.output[0],
+        sensitivity=study_input(lambda: rules.sensitivity_tables.output.samples, "sensitivity"),
+        band=study_input(lambda: rules.swelling_gci.output.band, "resolution"),
+        resolution=study_input(lambda: rules.swelling_convergence.output[0], "resolution"),
+    output:
+        table=report(
+            "results/variants/claims.csv",
+            caption="../report/claims.rst",
+            category="6 Variants",
+            labels={"result": "The paper's claims against our numbers, every pool model"},
+        ),
+        markdown="results/variants/claims.md",
+    log:
+        "logs/variants_claims.log",
+    benchmark:
+        "results/benchmarks/variants_claims.tsv"

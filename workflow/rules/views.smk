@@ -72,7 +72,7 @@ rule animation:
 
 # every run's series and animation: the target views (VIEWS is common.smk's figure code by family)
 RUN_VIEWS = (
-    swell_runs(rules.paraview_swelling.output.series)
+    swell_runs(rules.paraview_swelling.output.series, pools=SWELL_POOLS)
     + expand(rules.paraview_delamination.output.series, zip, **law_and_run(DE_SNAPSHOT_NAMES))
     + expand(rules.animation.output, zip, **law_and_run(DE_SNAPSHOT_NAMES))
 )
