@@ -104,12 +104,7 @@ def swell_runs(pattern, pools=SW["pool_models"], **wildcards):
     given), and every other wildcard of the swelling runs (``model``, ``case``, ``pressure``) unless given."""
     others = dict(dict(model=SW["models"], case=CASES, pressure=SWELL_PRESSURES), **wildcards)
     pairs = zip(SWELL_LAWS_POOLS["law"], SWELL_LAWS_POOLS["pool"])
-    return [
-        path
-        for law, pool in pairs
-        if pool in pools
-        for path in expand(pattern, law=law, pool=pool, **others)
-    ]
+    return [path for law, pool in pairs if pool in pools for path in expand(pattern, law=law, pool=pool, **others)]
 
 
 # the key of a swelling run (rules swell, pool_stresses, paraview_swelling): one run per (charge law, pool model,
