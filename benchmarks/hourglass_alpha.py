@@ -4,7 +4,7 @@ The pool verification problem (sphgag.studies.inclusion: elliptical GAG inclusio
 elastin matrix, exact far field, Pi = 0.5 kPa) at one aspect ratio and two
 resolutions, for several alpha, with the hourglass penalty measured within each
 material (the package's scheme) and, for comparison, across the interface (the
-scheme before issue 7). Prints and writes benchmarks/out/hourglass_alpha.csv.
+scheme without the interface treatment). Prints and writes benchmarks/out/hourglass_alpha.csv.
 
     python benchmarks/hourglass_alpha.py [--ratio 2] [--resolutions 8 16] [--alpha 1 2 5 10 20 50]
 """

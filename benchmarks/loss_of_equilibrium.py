@@ -1,6 +1,6 @@
 """Why growth under the prescribed Donnan law loses equilibrium: a residual floor, a kink, or the discretisation?
 
-Issue 15, section 3. The single pool (case I) under the paper's law (Pi(c) prescribed,
+The single pool (case I) under the paper's law (Pi(c) prescribed,
 eqs. 2.25-2.27), averaged onset, sigma_cr = 40 kPa, passive wall at 103 mmHg:
 
 1. grow it with a snapshot at every pass until the first damage pass whose transition

@@ -78,7 +78,7 @@ def test_all_problems_are_reported_at_once(full_config):
     assert "mean.dx_um" in str(info.value) and "numerics.tolerance" in str(info.value)
 
 
-# -- inputs a schema alone lets through (issue 10) ----------------------------------------------------------------
+# -- inputs a schema alone lets through ----------------------------------------------------------------
 
 
 @pytest.mark.parametrize(
@@ -144,7 +144,7 @@ def test_a_corrupt_state_file_names_the_file_and_the_remedy(tmp_path):
         state.load(path)
 
 
-# -- charge laws and pool-set roles (issue 15) ------------------------------------------------------------------
+# -- charge laws and pool-set roles ------------------------------------------------------------------
 
 
 @pytest.mark.parametrize(
@@ -282,7 +282,7 @@ def test_the_schemas_enumerations_are_the_registries():
 
 @pytest.mark.parametrize("value", ["foo", ["contact"], 1, KeyError])
 def test_a_bad_candidate_rule_is_rejected_naming_the_key_and_the_rules(ci_config, value):
-    """``delamination.candidates`` (issue 25) is one name of :data:`sphgag.studies.candidates.RULES`."""
+    """``delamination.candidates`` is one name of :data:`sphgag.studies.candidates.RULES`."""
     msg = bad(ci_config, ["delamination", "candidates"], value)
     if value is KeyError:
         assert "missing key 'delamination.candidates'" in msg

@@ -198,7 +198,7 @@ def test_a_run_restarted_from_a_snapshot_reaches_the_same_end_state(ci_config, w
     assert again.growth[last].iloc[-1].equals(full.growth[last].iloc[-1])
 
 
-# -- damage candidates and islands (issue 25) ---------------------------------------------------------------------
+# -- damage candidates and islands ---------------------------------------------------------------------
 
 
 @pytest.fixture(scope="module")
@@ -227,7 +227,8 @@ def distance(layout, a, b):
 
 
 def window_candidates(layout, sectors, hist, window_deg):
-    """Front.candidates before issue 25 (the authors' script's candidates), copied: the reference of ``window``."""
+    """The candidates of the authors' script (Front.candidates before the candidate rules), copied: ``window``'s
+    reference."""
     surface = np.zeros(layout.n, dtype=bool)
     surface[layout.inner_surface] = surface[layout.outer_surface] = True
     interior = layout.layer_mask("media") & ~surface
@@ -283,7 +284,7 @@ def test_the_delaminated_length_counts_the_damage_connected_to_its_pool_and_isla
 @pytest.mark.parametrize("pools", [[51.5], [42.1, 47.9]])
 def test_contact_candidates_touch_their_pool_and_window_candidates_are_the_authors(layout, island_history, pools):
     """``contact``: every candidate has a GAG particle of its pool within 1.5 dx (reference positions), and lies in
-    the window; ``window``: the candidates of the code before issue 25 (the authors' script), unchanged."""
+    the window; ``window``: the candidates of the code before the candidate rules (the authors' script), unchanged."""
     sectors = [sector(a) for a in pools]
     histories = [seeded(layout, sectors)]
     if len(pools) == 1:

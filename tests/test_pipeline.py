@@ -677,7 +677,7 @@ def test_a_nested_config_override_is_read_as_yaml(fresh_copy):
     assert run.returncode != 0 and "write 1.0e-4" in out
 
 
-# -- charge laws and pool sets by name (issue 15) ----------------------------------------------------------------
+# -- charge laws and pool sets by name ----------------------------------------------------------------
 
 SIMULATIONS = {
     "swell",
@@ -921,7 +921,7 @@ def test_the_source_of_a_range_is_documentation_and_reruns_nothing(workdir, ci_c
     assert run.returncode == 0 and "Nothing to be done" in run.stdout + run.stderr, run.stdout[-3000:]
 
 
-# -- targets by purpose, params that hold what a job reads, claims of targets not run, resources (issue 24) --------
+# -- targets by purpose, params that hold what a job reads, claims of targets not run, resources --------
 
 HEAVY = {
     "swelling_convergence_dx",

@@ -143,7 +143,7 @@ def hourglass_gradients(nb: Neighbours, V, tissue):
     boundary of a soft GAG pool the real displacement field has a kink, which
     an F averaged over both materials cannot predict, so a penalty measured
     with it resists the kink itself (a stiff spurious interface layer, the
-    ringing of issue 7). The penalty is therefore measured within each
+    ringing at the interface). The penalty is therefore measured within each
     material: pair ``(i, j)`` has weight ``beta_ij = 1 - |tissue_i - tissue_j|``
     (1 within tissue or within GAG, 0 across, continuous while a particle is
     converted), and its hourglass deformation gradient ``F~_i`` comes from the

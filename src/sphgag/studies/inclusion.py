@@ -361,7 +361,7 @@ def ring_profile(model: Model, state: solver.State, pressure_kPa: float, mat: Ma
 
 
 def study(aspect_ratio: float, vp: dict, matrix: dict, gag: dict, numerics: Numerics, log=None):
-    """The verification of issue 7 for one aspect ratio ``a/b`` at every resolution of ``vp['resolutions']``.
+    """The pool verification for one aspect ratio ``a/b`` at every resolution of ``vp['resolutions']``.
 
     ``vp``: the ``verification.pool`` configuration; ``matrix``: shear modulus,
     Lame parameter and hourglass modulus of the matrix (the elastin law of the

@@ -1,4 +1,4 @@
-"""One GAG pool's response to the model's inputs: the sample of the sensitivity study (issue 17).
+"""One GAG pool's response to the model's inputs: the sample of the sensitivity study.
 
 A *scenario* is everything one response depends on, as the pipeline's own configuration slices (so that a scenario at
 its nominal values reruns exactly the pipeline's runs): ``bilayer``, ``numerics``, ``homeostasis`` (figure 2b),

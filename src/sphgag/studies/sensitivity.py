@@ -1,6 +1,6 @@
 """Global sensitivity analysis: Morris screening, then Sobol variance indices (SALib), with failed runs accounted for.
 
-The study (issue 17) is model-agnostic here: a *problem* is a list of inputs with uniform ranges; a *design* is a
+The study is model-agnostic here: a *problem* is a list of inputs with uniform ranges; a *design* is a
 table of input values, one row per sample (:func:`morris_design`, :func:`sobol_design`); a model evaluated on every
 row gives a table of outputs (:func:`sphgag.studies.pool_response.sample_rows`, which records a sample whose run fails
 by its inputs and its error instead of dropping it); the indices come back as one tidy table (:func:`morris_indices`,

@@ -1,4 +1,4 @@
-"""The sensitivity study's figures (issue 17, not in the paper): the Morris and Sobol indices (figure
+"""The sensitivity study's figures (not in the paper): the Morris and Sobol indices (figure
 sensitivity) and the delamination map (figure delamination_map)."""
 
 from __future__ import annotations
