@@ -48,6 +48,7 @@ include: "workflow/rules/figures.smk"
 include: "workflow/rules/sensitivity.smk"
 include: "workflow/rules/views.smk"
 include: "workflow/rules/variants.smk"
+include: "workflow/rules/docs.smk"
 
 
 # Targets by purpose. `all` (the default) regenerates the paper: figures 1 and 3-7 and the claims table, for every
@@ -130,6 +131,13 @@ rule views:
         RUN_VIEWS,
 
 
+rule docs:
+    """The documentation site in site/ (open site/index.html): the physics, the API, contributing, and the results
+    pages generated from this run's tables (with the studies' tables where they have run)."""
+    input:
+        rules.site.output,
+
+
 rule everything:
     """Every output the configuration defines."""
     input:
@@ -140,3 +148,4 @@ rule everything:
         rules.sensitivity.input,
         rules.variants.input,
         rules.views.input,
+        rules.docs.input,

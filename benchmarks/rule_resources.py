@@ -1,19 +1,25 @@
-"""Every rule's declared threads and resources against what its jobs measured, and the README's table of them.
+"""Every rule's declared threads and resources against what its jobs measured, and the committed table of those
+measurements (``benchmarks/resources.csv``).
 
 The declared values are Snakemake's own: the jobs of a dry run of a target (``snakemake -n --forceall``), each with
 its benchmark file, threads and evaluated resources (``runtime`` in minutes, ``mem_mb``; expressions, callables and
 the profile's ``default-resources`` included). The measured values are the benchmark files of a finished run of the
-same configuration (``s`` = wall seconds, ``max_rss`` = peak resident memory in MB), matched job by job.
+same configuration (``s`` = wall seconds, ``max_rss`` = peak resident memory in MB), matched job by job, or the
+committed table: per rule and configuration, the longest wall time and the largest peak memory of its jobs, where
+and at which commit they were measured.
 
-    python benchmarks/rule_resources.py                                   # full configuration, target everything
-    python benchmarks/rule_resources.py --configfile config/ci.yaml --benchmarks DIR --check
-    python benchmarks/rule_resources.py --readme README.md                # rewrite the README's table
+    python benchmarks/rule_resources.py --check                      # the table against the full configuration
+    python benchmarks/rule_resources.py --configfile config/ci.yaml --check          # ... and the reduced one
+    python benchmarks/rule_resources.py --benchmarks DIR --check     # a finished run's own jobs
+    python benchmarks/rule_resources.py --benchmarks DIR --record --commit SHA --measured-on "2 cores, ..."
+    python benchmarks/rule_resources.py --guide docs/guide.md        # rewrite the guide's table
 
-``--check`` exits with status 1 and names every rule whose measured runtime or memory exceeds its declaration in
-some job (``--margin`` > 1 demands that much headroom). ``--readme`` replaces the table between the README's markers
-``<!-- rule-resources -->`` and ``<!-- /rule-resources -->``. The declared values follow one policy: at least twice
-the largest measurement of a full run from a fresh clone (cold Numba cache, both cores busy), runtime in whole
-minutes (at least 5), memory in steps of 500 MB (at least 1000); ``suggested`` shows what it gives.
+``--check`` exits with status 1 and names every rule whose declaration is below its measurement: against the table,
+below ``--margin`` (default 1.5) times the rule's longest job; against a run's benchmarks (``--benchmarks``), below
+the job itself (margin 1). ``--record`` writes the rules measured in ``--benchmarks`` into the table (replacing
+their rows for this configuration: the newest measurement of a rule wins). The declared values follow one policy:
+about twice the longest measurement on the full configuration from a fresh clone (cold Numba cache, both cores
+busy), runtime in whole minutes (at least 5), memory in steps of 500 MB (at least 1000); ``suggested`` shows it.
 """
 
 from __future__ import annotations
@@ -28,6 +34,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
+TABLE = ROOT / "benchmarks" / "resources.csv"
+TABLE_COLUMNS = ["rule", "configuration", "jobs", "longest_wall_s", "peak_rss_mb", "measured_on", "commit"]
+MARGIN = 1.5  # a declaration is at least this many times its rule's longest measured job
 JOB = re.compile(r"^(?:local)?rule (\w+):$")
 FIELD = re.compile(r"^    (\w+): (.*)$")
 
@@ -87,7 +96,17 @@ def cluster_defaults(project: Path = ROOT) -> dict:
     return {k: str(found[k]) for k in ("runtime", "mem_mb") if k in found}
 
 
-TARGETS = ("all", "everything", "resolution", "verification", "fracture_energy", "sensitivity", "views")
+TARGETS = (
+    "all",
+    "everything",
+    "resolution",
+    "verification",
+    "fracture_energy",
+    "sensitivity",
+    "variants",
+    "views",
+    "docs",
+)
 
 
 def read_benchmark(path: Path) -> tuple[float, float]:
@@ -107,6 +126,54 @@ def measure(jobs: list[Job], bench_dirs: list[Path]) -> None:
         found = next((d / name for d in bench_dirs if (d / name).exists()), None)
         if found is not None:
             job.seconds, job.max_rss_mb = read_benchmark(found)
+
+
+def configuration_name(configfile: str | None) -> str:
+    """The table's name of a configuration: ``full`` (config/config.yaml), else the file's stem (``ci``)."""
+    return "full" if configfile is None else Path(configfile).stem
+
+
+def read_table(path: Path, configuration: str) -> dict[str, tuple[float, float]]:
+    """The committed measurements of one configuration: rule -> (longest wall s, peak RSS MB)."""
+    with path.open() as f:
+        rows = [r for r in csv.DictReader(f) if r["configuration"] == configuration]
+    return {r["rule"]: (float(r["longest_wall_s"]), float(r["peak_rss_mb"])) for r in rows}
+
+
+def from_table(jobs: list[Job], table: dict[str, tuple[float, float]]) -> None:
+    """Each job's measurement: its rule's longest job in the table (every job of a rule must fit that one)."""
+    for job in jobs:
+        if job.rule in table:
+            job.seconds, job.max_rss_mb = table[job.rule]
+
+
+def record(jobs: list[Job], path: Path, configuration: str, measured_on: str, commit: str) -> int:
+    """Write the rules of ``jobs`` that have measurements into the table at ``path`` (their rows of
+    ``configuration`` replaced); the number of rules written."""
+    rows = []
+    if path.exists():
+        with path.open() as f:
+            rows = list(csv.DictReader(f))
+    new = {}
+    for rule in dict.fromkeys(j.rule for j in jobs):
+        done = [j for j in jobs if j.rule == rule and j.seconds is not None]
+        if done:
+            new[rule] = dict(
+                rule=rule,
+                configuration=configuration,
+                jobs=len(done),
+                longest_wall_s=f"{max(j.seconds for j in done):.1f}",
+                peak_rss_mb=f"{max(j.max_rss_mb for j in done):.0f}",
+                measured_on=measured_on,
+                commit=commit,
+            )
+    rows = [r for r in rows if not (r["configuration"] == configuration and r["rule"] in new)] + list(new.values())
+    rows.sort(key=lambda r: (r["configuration"], r["rule"]))
+    with path.open("w", newline="") as f:
+        writer = csv.DictWriter(f, TABLE_COLUMNS, lineterminator="\n")
+        writer.writeheader()
+        writer.writerows(rows)
+    return len(new)
 
 
 def exceeded(jobs: list[Job], margin: float = 1.0) -> list[str]:
@@ -184,7 +251,7 @@ def replace_block(text: str, block: str, name: str = "rule-resources") -> str:
     """``text`` with the part between the markers ``<!-- name -->`` and ``<!-- /name -->`` replaced by ``block``."""
     begin, end = f"<!-- {name} -->", f"<!-- /{name} -->"
     if begin not in text or end not in text:
-        raise SystemExit(f"the README has no {begin} ... {end} block")
+        raise SystemExit(f"the file has no {begin} ... {end} block")
     head, rest = text.split(begin, 1)
     _, tail = rest.split(end, 1)
     return f"{head}{begin}\n{block}\n{end}{tail}"
@@ -195,22 +262,43 @@ def main(argv=None) -> int:
     ap.add_argument("--target", default="everything", help="the target whose jobs are listed (default: everything)")
     ap.add_argument("--configfile", default=None, help="the configuration (default: config/config.yaml)")
     ap.add_argument("--project", type=Path, default=ROOT, help="the checkout to plan in (default: this one)")
-    ap.add_argument("--benchmarks", type=Path, nargs="+", default=[ROOT / "results" / "benchmarks"])
-    ap.add_argument("--check", action="store_true", help="exit 1 if a measurement exceeds its declaration")
-    ap.add_argument("--margin", type=float, default=1.0, help="with --check: demand margin x the measurement")
-    ap.add_argument("--readme", type=Path, help="rewrite the table between the markers of this README")
-    ap.add_argument("--note", default="", help="with --readme: the line above the table (where it was measured)")
+    ap.add_argument("--benchmarks", type=Path, nargs="+", help="a finished run's benchmark folders (else: the table)")
+    ap.add_argument("--table", type=Path, default=TABLE, help="the committed measurements (benchmarks/resources.csv)")
+    ap.add_argument("--check", action="store_true", help="exit 1 if a declaration is below its measurement")
+    ap.add_argument(
+        "--margin", type=float, help=f"with --check: demand margin x the measurement ({MARGIN:g} on the table)"
+    )
+    ap.add_argument("--record", action="store_true", help="write the rules measured in --benchmarks into the table")
+    ap.add_argument("--commit", default="", help="with --record: the commit the run was made at")
+    ap.add_argument("--measured-on", default="", help="with --record: the machine and how the run was made")
+    ap.add_argument("--guide", type=Path, help="rewrite the table between the rule-resources markers of this file")
+    ap.add_argument("--note", default="", help="with --guide: the line above the table (where it was measured)")
     args = ap.parse_args(argv)
 
+    configuration = configuration_name(args.configfile)
     jobs = planned_jobs(args.target, args.configfile, args.project)
-    measure(jobs, args.benchmarks)
+    if args.benchmarks:
+        measure(jobs, args.benchmarks)
+        source, margin = ", ".join(map(str, args.benchmarks)), args.margin or 1.0
+    else:
+        from_table(jobs, read_table(args.table, configuration))
+        source, margin = f"{args.table} ({configuration})", args.margin or MARGIN
     measured = sum(j.seconds is not None for j in jobs)
-    print(f"{len(jobs)} jobs of {args.target}; {measured} measured in {', '.join(map(str, args.benchmarks))}")
+    print(f"{len(jobs)} jobs of {args.target}; {measured} measured in {source}")
+    if args.record:
+        if not args.benchmarks:
+            raise SystemExit("--record needs --benchmarks: the run whose measurements go into the table")
+        print(
+            f"recorded {record(jobs, args.table, configuration, args.measured_on, args.commit)} rules in {args.table}"
+        )
     text = markdown(jobs, args.note)
     print(text)
-    if args.readme:
-        args.readme.write_text(replace_block(args.readme.read_text(), text))
-    over = exceeded(jobs, args.margin)
+    if args.guide:
+        args.guide.write_text(replace_block(args.guide.read_text(), text))
+    unmeasured = sorted({j.rule for j in jobs if j.seconds is None})
+    if unmeasured:
+        print("NOT MEASURED:", ", ".join(unmeasured))
+    over = exceeded(jobs, margin)
     for line in over:
         print("EXCEEDS:", line)
     return 1 if args.check and over else 0

@@ -1,0 +1,428 @@
+"""The pipeline's result tables as Markdown: the documentation site's results pages (``snakemake docs``) and the
+README's generated blocks (``benchmarks/readme_tables.py``). Nothing here computes a number: every cell is read from
+a table a rule wrote (its source in :data:`SECTIONS`), and every page is stamped with the commit and configuration
+its tables came from.
+"""
+
+from __future__ import annotations
+
+import shutil
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from ..studies import annulus, gci
+from ..studies import claims as claims_
+
+
+def _c(value: float) -> str:
+    return f"{value:.1f}" if np.isfinite(value) else "-"
+
+
+def _um(value: float) -> str:
+    return f"{value:.2g} um" if np.isfinite(value) else "-"
+
+
+def runs_table(summary: pd.DataFrame) -> str:
+    """One row per run of figures 5-7: how it ended and the concentrations of its events [mEq/l]."""
+    head = (
+        "| law | onset measure | pool set | sigma_cr (kPa) | stop | onset | runaway | merge | limit | "
+        "arrested length (um) | final length (um) | passes | largest residual |"
+    )
+    rows = [head, "|" + " --- |" * 13]
+    order = summary.sort_values(["charge_law", "criterion", "case", "sigma_cr_kPa"], kind="stable")
+    for r in order.itertuples():
+        rows.append(
+            f"| {r.charge_law} | {r.criterion} | {r.case} | {r.sigma_cr_kPa:g} | {r.stop_kind} | "
+            f"{_c(r.onset_concentration_mEq_l)} | {_c(r.runaway_concentration_mEq_l)} | "
+            f"{_c(r.merge_concentration_mEq_l)} | {_c(r.limit_concentration_mEq_l)} | {r.arrested_length_um:.1f} | "
+            f"{r.final_length_um:.1f} | {r.passes:.0f} | {r.max_residual:.1e} |"
+        )
+    return "\n".join(rows)
+
+
+def gci_table(table: pd.DataFrame) -> str:
+    """Per event concentration: its value at every spacing, the observed order, the extrapolated value and the GCI."""
+    spacings = sorted(table.dx_um.unique(), reverse=True)
+    head = (
+        "| law | onset measure | pool set | quantity | "
+        + " | ".join(f"dx = {dx:g} um" for dx in spacings)
+        + " | observed order | extrapolated | GCI (finest) | spacing for a GCI of 10 % |"
+    )
+    rows = [head, "|" + " --- |" * (8 + len(spacings))]
+    groups = table.groupby(["charge_law", "criterion", "case", "quantity"], sort=False)
+    for (law, criterion, case, quantity), g in groups:
+        values = g.set_index("dx_um").value
+        first = g.iloc[0]
+        cells = " | ".join(_c(values.get(dx, np.nan)) for dx in spacings)
+        finest = values.sort_index().iloc[:3]
+        e = gci.estimate(finest.index, finest.to_numpy()) if len(finest) == 3 else None
+        order = f"{first.observed_order:.2f}" if np.isfinite(first.observed_order) else "-"
+        if e is not None and e.diverging:
+            order = "none: the differences grow"
+        elif e is not None and e.oscillatory and np.isfinite(first.observed_order):
+            order += " (oscillating)"
+        gci_fine = f"{100 * first.gci_fine:.1f} %" if np.isfinite(first.gci_fine) else "-"
+        name = quantity.removesuffix("_concentration_mEq_l")
+        target = e.spacing_for(0.1) if e is not None and not e.diverging else np.nan
+        target = "reached" if np.isfinite(first.gci_fine) and first.gci_fine <= 0.1 else _um(target)
+        rows.append(
+            f"| {law} | {criterion} | {case} | {name} | {cells} | {order} | {_c(first.extrapolated)} | {gci_fine} | "
+            f"{target} |"
+        )
+    return "\n".join(rows)
+
+
+def variants_table(summary: pd.DataFrame) -> str:
+    """Figure 5's pool under each form of the hourglass control."""
+    rows = ["| hourglass | stop | onset | runaway | final length (um) | passes | stop text |", "|" + " --- |" * 7]
+    for r in summary.itertuples():
+        rows.append(
+            f"| {r.hourglass} | {r.stop_kind} | {_c(r.onset_concentration_mEq_l)} | "
+            f"{_c(r.runaway_concentration_mEq_l)} | {r.final_length_um:.1f} | {r.passes:.0f} | {r.stop} |"
+        )
+    return "\n".join(rows)
+
+
+NUMERICS = "numerics."  # the sensitivity inputs that are numerical choices, not physics
+SHOWN_INPUTS = 5
+
+
+def morris_table(indices: pd.DataFrame) -> str:
+    """Per output and charge law: the inputs ranked by Morris mu* (with the bootstrap interval of the first), and the
+    numerics' share: the largest mu* of a numerical input over the top input's mu*."""
+    mu = indices[(indices.method == "morris") & (indices["index"] == "mu_star")]
+    head = (
+        "| output | law | samples used (failed) | inputs by mu* (per full range), largest first | "
+        "numerics' share of the top mu* |"
+    )
+    rows = [head, "|" + " --- |" * 5]
+    for (output, law), g in mu.groupby(["output", "charge_law"], sort=False):
+        g = g[np.isfinite(g.value)].sort_values("value", ascending=False)
+        used = f"{g.samples_used.iloc[0]:.0f} ({g.samples_failed.iloc[0]:.0f})" if len(g) else "-"
+        if g.empty or g.value.iloc[0] <= 0.0:
+            rows.append(f"| {output} | {law} | {used} | does not vary | - |")
+            continue
+        top = g.iloc[0]
+        ranked = [f"**{top.input}** {top.value:.3g} [{top.conf_low:.3g}, {top.conf_high:.3g}]"]
+        ranked += [f"{r.input} {r.value:.3g}" for r in g.iloc[1:SHOWN_INPUTS].itertuples()]
+        numerics = g[g.input.str.startswith(NUMERICS)]
+        share = (
+            f"{numerics.value.iloc[0] / top.value:.0%} ({numerics.input.iloc[0].removeprefix(NUMERICS)})"
+            if len(numerics)
+            else "-"
+        )
+        rows.append(f"| {output} | {law} | {used} | {'; '.join(ranked)} | {share} |")
+    return "\n".join(rows)
+
+
+def _pct(value: float) -> str:
+    return f"{100 * value:+.2f} %" if np.isfinite(value) else "-"
+
+
+def annulus_table(table: pd.DataFrame) -> str:
+    """The pressurised annulus: per pool model, B/A and fraction of the exact limit, the errors of the volume ratio and
+    of the hoop stress at the hole at every spacing with the observed order of the finer pair, how far the GAG reach
+    outside the lining; and, above the limit, how each spacing's run ended."""
+    spacings = sorted(table.dx_um.unique(), reverse=True)
+    orders = annulus.orders(table).set_index(["pool_model", "outer_ratio", "fraction", "quantity"])
+    head = (
+        "| pool | B/A | Pi / limit | volume ratio error: "
+        + " / ".join(f"dx {d:g}" for d in spacings)
+        + " (order) | hoop stress error: same spacings (order) | GAG beyond the lining, finest (um) |"
+    )
+    rows = [head, "|" + " --- |" * 6]
+    below = table[(table.fraction < 1.0)]
+    for (model, ratio, f), g in below.groupby(["pool_model", "outer_ratio", "fraction"], sort=True):
+        g = g.set_index("dx_um").reindex(spacings)
+        cells = []
+        for quantity, error in (("volume_ratio", "volume_error"), ("lining_hoop_kPa", "lining_hoop_error")):
+            key = (model, ratio, f, quantity)
+            order = f"{orders.loc[key, 'order_fine']:.2f}" if key in orders.index else "-"
+            cells.append(" / ".join(_pct(v) for v in g[error]) + f" ({order})")
+        crossing = g.ring_crossing_um.iloc[-1]
+        rows.append(
+            f"| {model} | {ratio:g} | {f:g} | {cells[0]} | {cells[1]} | "
+            + (f"{crossing:+.2f} |" if np.isfinite(crossing) else "- |")
+        )
+    above = table[table.fraction > 1.0]
+    for (model, ratio), g in above.groupby(["pool_model", "outer_ratio"], sort=True):
+        limit = g.limit_pressure_kPa.iloc[0]
+        ends = []
+        for r in g.sort_values("dx_um", ascending=False).itertuples():
+            held = r.discrete_limit_kPa if r.beyond_end == "limit point" else r.largest_held_kPa
+            what = "a STATE" if r.state else f"{r.beyond_end}, {held / limit:.4f} x the limit held"
+            ends.append(f"dx {r.dx_um:g}: {what}")
+        rows.append(
+            f"| {model} | {ratio:g} | {g.fraction.iloc[0]:g} (exact {g.limit_kind.iloc[0]} {limit:.2f} kPa) | "
+            + "; ".join(ends)
+            + " | | |"
+        )
+    return "\n".join(rows)
+
+
+def _value(value: float, digits: int = 3) -> str:
+    return f"{value:.{digits}g}" if np.isfinite(value) else "-"
+
+
+SWELLING_GCI_SHOWN = [  # the README's selection of gci.csv (quantity, walls, concentration or None: every J)
+    ("concentration_at_volume_mEq_l", ("passive", "active"), None),
+    ("tip_radial_stress_at_volume_kPa", ("passive",), None),
+    ("tip_radial_stress_kPa", ("passive",), 150.0),
+    ("volume_ratio", ("passive",), 150.0),
+]
+
+
+def swelling_gci_table(table: pd.DataFrame) -> str:
+    """Figure 4's resolution study (the selection :data:`SWELLING_GCI_SHOWN` of gci.csv): per charge law, wall, case,
+    quantity and where it is read (at a volume ratio J or a concentration), the value at every spacing, the observed
+    order, the extrapolated value, the GCI of the finest spacing and the spacing at which the observed order puts a
+    GCI of 5 %."""
+    shown = np.zeros(len(table), dtype=bool)
+    for quantity, walls, at in SWELLING_GCI_SHOWN:
+        rows = (table.quantity == quantity) & table.model.isin(walls)
+        shown |= (rows & (table["at"] == at)) if at is not None else rows
+    table = table[shown]
+    spacings = sorted(table.dx_um.unique(), reverse=True)
+    names = {
+        "concentration_at_volume_mEq_l": ("c holding J (mEq/l)", "J = {:g}"),
+        "tip_radial_stress_at_volume_kPa": ("tip radial stress (kPa)", "J = {:g}"),
+        "top_circ_stress_at_volume_kPa": ("top hoop stress (kPa)", "J = {:g}"),
+        "tip_radial_stress_kPa": ("tip radial stress (kPa)", "{:g} mEq/l"),
+        "top_circ_stress_kPa": ("top hoop stress (kPa)", "{:g} mEq/l"),
+        "volume_ratio": ("pool volume ratio J", "{:g} mEq/l"),
+    }
+    head = (
+        "| law | wall | case | quantity | at | "
+        + " | ".join(f"dx = {dx:g} um" for dx in spacings)
+        + " | observed order | extrapolated | GCI (finest) | dx for a GCI of 5 % |"
+    )
+    rows = [head, "|" + " --- |" * (9 + len(spacings))]
+    order = table.assign(_q=table.quantity.map(list(names).index))
+    order = order.sort_values(["charge_law", "_q", "model", "case", "at", "dx_um"], kind="stable")
+    for (law, quantity, wall, case, at), g in order.groupby(
+        ["charge_law", "quantity", "model", "case", "at"], sort=False
+    ):
+        values = g.set_index("dx_um").value
+        first = g.sort_values("dx_um").iloc[0]
+        finest = values.sort_index().iloc[:3]
+        e = gci.estimate(finest.index, finest.to_numpy()) if len(finest) == 3 and finest.notna().all() else None
+        if not np.isfinite(first.observed_order):
+            order_text = "none: the differences grow" if e is not None and e.diverging else "-"
+        else:
+            order_text = f"{first.observed_order:.2f}" + ("" if first.order_in_range else " (outside 0.5-3)")
+        gci_text = f"{100 * first.gci_fine:.1f} %" if np.isfinite(first.gci_fine) else "-"
+        target = "reached" if np.isfinite(first.gci_fine) and first.gci_fine <= 0.05 else "-"
+        if target == "-" and e is not None and np.isfinite(e.order):
+            target = _um(e.spacing_for(0.05))
+        label, where = names[quantity]
+        cells = " | ".join(_value(values.get(dx, np.nan)) for dx in spacings)
+        rows.append(
+            f"| {law} | {wall} | {case} | {label} | {where.format(at)} | {cells} | {order_text} | "
+            f"{_value(first.extrapolated)} | {gci_text} | {target} |"
+        )
+    return "\n".join(rows)
+
+
+def figure4_runs_table(tips: pd.DataFrame) -> str:
+    """Figure 4's runs per charge law and pool model: how many reach the top of the ramp, where the others' last
+    equilibrium is, and the tip radial stress and pool volume ratio there."""
+    rows = [
+        "| law | pool | runs reaching the top of the ramp | last equilibrium of the others (mEq/l) | "
+        "tip radial stress at each run's last equilibrium (kPa) | pool volume ratio J there |",
+        "|" + " --- |" * 6,
+    ]
+    conv = tips[tips.stage == "converted"]
+    top = conv.concentration_mEq_l.max()
+    for (law, pool), g in conv.groupby(["charge_law", "pool_model"], sort=False):
+        last = g.loc[g.groupby(["model", "pressure_mmHg", "case"]).concentration_mEq_l.idxmax()]
+        short = last[last.concentration_mEq_l < top - 1e-9]
+        ends = f"{short.concentration_mEq_l.min():g}-{short.concentration_mEq_l.max():g}" if len(short) else "-"
+        J = last.pool_volume_change + 1.0
+        tip = last.tip_radial_stress_kPa
+        rows.append(
+            f"| {law} | {pool} | {len(last) - len(short)} of {len(last)} (to {top:g} mEq/l) | {ends} | "
+            f"{tip.min():.0f} to {tip.max():.0f} (tensile in {int((tip > 0).sum())}) | {J.min():.3g}-{J.max():.3g} |"
+        )
+    return "\n".join(rows)
+
+
+def band_limit_table(band: pd.DataFrame, limit: float = 0.10) -> str:
+    """Figure 4's bands: per charge law, wall, case and stress, the first concentration of the ramp at which the GCI
+    of the finest spacing exceeds ``limit`` (or the three spacings give no order there), and the GCI at every step
+    (``-``: a step that not every spacing reached)."""
+    conv = band[(band.stage == "converted") & (band.dx_um == band.dx_um.min())]
+    names = {"tip_radial_stress_kPa": "tip radial stress", "top_circ_stress_kPa": "top hoop stress"}
+    levels = sorted(conv.concentration_mEq_l.unique())
+    rows = [
+        f"| law | wall | case | stress | band above {limit:.0%} from (mEq/l) | "
+        + " | ".join(f"GCI at {c:g}" for c in levels)
+        + " |",
+        "|" + " --- |" * (5 + len(levels)),
+    ]
+    for (law, wall, case, quantity), g in conv.groupby(["charge_law", "model", "case", "quantity"], sort=True):
+        g = g.sort_values("concentration_mEq_l")
+        wide = g[~(g.gci_fine <= limit)]
+        first = f"{wide.concentration_mEq_l.iloc[0]:g}" if len(wide) else "never"
+        gci_at = g.set_index("concentration_mEq_l").gci_fine
+        steps = [
+            "-" if c not in gci_at.index else f"{100 * gci_at[c]:.0f} %" if np.isfinite(gci_at[c]) else "no order"
+            for c in levels
+        ]
+        rows.append(f"| {law} | {wall} | {case} | {names[quantity]} | {first} | {' | '.join(steps)} |")
+    return "\n".join(rows)
+
+
+def figure4_claims_table(claims: pd.DataFrame) -> str:
+    """Claims C6-C12 (every charge law and pool model): the verdict on figure 4's runs and across the resolution
+    band, with the margin."""
+    rows = ["| claim | law | pool | holds | margin (kPa) | at every spacing and extrapolated (margin, kPa) |"]
+    rows.append("|" + " --- |" * 6)
+    figure4 = claims[claims.claim_id.isin([f"C{k}" for k in range(6, 13)])]
+    figure4 = figure4.assign(holds=figure4.holds.fillna("n/a"), across_band=figure4.across_band.fillna("n/a"))
+    for r in figure4.itertuples():
+        margin = f"{r.margin:+.0f}" if np.isfinite(r.margin) else "-"
+        rows.append(f"| {r.claim_id} | {r.charge_law} | {r.pool_model} | {r.holds} | {margin} | {r.across_band} |")
+    return "\n".join(rows)
+
+
+def _claim_list(ids) -> str:
+    return ", ".join(dict.fromkeys(ids)) or "-"
+
+
+def holds_table(claims: pd.DataFrame, pool_model: str = "particles") -> str:
+    """What holds and what does not: per charge law, the claims (of the pool model ``pool_model`` where a claim is
+    about a pool) that hold, that do not, and that could not be judged (``n/a`` or not run)."""
+    rows = ["| law | holds | does not hold | not judged |", "|" + " --- |" * 4]
+    general = claims[claims.charge_law == "-"]
+    laws = [law for law in dict.fromkeys(claims.charge_law) if law != "-"]
+    for law in laws:
+        mine = pd.concat([general, claims[(claims.charge_law == law) & (claims.pool_model == pool_model)]])
+        judged = mine.holds.fillna("n/a")
+        rows.append(
+            f"| {law} | {_claim_list(mine.claim_id[judged == 'yes'])} | {_claim_list(mine.claim_id[judged == 'no'])} "
+            f"| {_claim_list(mine.claim_id[~judged.isin(['yes', 'no'])])} |"
+        )
+    return "\n".join(rows)
+
+
+def gci_summary(table: pd.DataFrame, quantity: str = "concentration_at_volume_mEq_l") -> str:
+    """Figure 4's uncertainty in one table: per charge law, wall and case, the GCI of the finest spacing of
+    ``quantity`` (by default the concentration that holds each volume ratio J, the study's well-conditioned number),
+    with its observed order."""
+    dx = table.dx_um.min()
+    rows = [
+        f"| law | wall | case | J | value at dx = {dx:g} um | GCI | observed order | extrapolated |",
+        "|" + " --- |" * 8,
+    ]
+    finest = table[(table.quantity == quantity) & (table.dx_um == dx)]
+    for r in finest.sort_values(["charge_law", "model", "case", "at"]).itertuples():
+        gci_text = f"{100 * r.gci_fine:.1f} %" if np.isfinite(r.gci_fine) else "no estimate"
+        rows.append(
+            f"| {r.charge_law} | {r.model} | {r.case} | {r.at:g} | {_value(r.value)} | {gci_text} | "
+            f"{_value(r.observed_order, 2)} | {_value(r.extrapolated)} |"
+        )
+    return "\n".join(rows)
+
+
+@dataclass(frozen=True)
+class Section:
+    """One section of a results page: its title, the table it is made from (a key of the tables a page reads), the
+    function that writes it, and the target that makes the table where `all` does not."""
+
+    title: str
+    source: str
+    render: Callable[[pd.DataFrame], str]
+    target: str = "all"
+
+
+def _claims_page(table: pd.DataFrame) -> str:
+    return claims_.markdown(table)
+
+
+# page -> (title, its figures (PNG names under figures/), its sections)
+PAGES: dict[str, tuple[str, tuple[str, ...], tuple[Section, ...]]] = {
+    "index": (
+        "Results",
+        ("fig1.png", "fig3.png", "fig4.png", "fig5.png", "fig6.png", "fig7.png"),
+        (
+            Section("What holds and what does not (the paper's pool of GAG particles)", "claims", holds_table),
+            Section(
+                "Figure 4's uncertainty: the concentration that holds a pool volume",
+                "swelling_gci",
+                gci_summary,
+                "resolution",
+            ),
+        ),
+    ),
+    "claims": ("The paper's claims against our numbers", (), (Section("Claims", "claims", _claims_page),)),
+    "swelling": (
+        "Swelling (figure 4)",
+        ("fig4.png",),
+        (
+            Section("Figure 4's runs", "tips", figure4_runs_table),
+            Section("Claims C6-C12 across the resolution band", "claims", figure4_claims_table),
+            Section(
+                "Resolution study: observed order, extrapolation and GCI",
+                "swelling_gci",
+                swelling_gci_table,
+                "resolution",
+            ),
+            Section("Where each band first exceeds 10 %", "swelling_band", band_limit_table, "resolution"),
+        ),
+    ),
+    "delamination": (
+        "Delamination (figures 5-7)",
+        ("fig5.png", "fig6.png", "fig7.png"),
+        (
+            Section("Every run of figures 5-7", "delamination", runs_table),
+            Section("Resolution study of the event concentrations", "delamination_gci", gci_table, "resolution"),
+        ),
+    ),
+    "verification": (
+        "Verification and variants",
+        ("verification_pool.png",),
+        (
+            Section("The pressurised annulus", "annulus", annulus_table, "verification"),
+            Section("The hourglass control's forms on figure 5's pool", "variants", variants_table, "variants"),
+            Section("Morris screening: which inputs decide the results", "morris", morris_table, "sensitivity"),
+        ),
+    ),
+}
+
+
+def stamp(commit: str, configuration: dict) -> str:
+    """The line that says where a page's numbers came from."""
+    files = ", ".join(f"`{f}`" for f in configuration["files"]) or "`config/config.yaml`"
+    return (
+        f"*Generated by `snakemake docs` from the tables of commit `{commit}`, configuration {files} "
+        f"(sha256 `{configuration['sha256'][:12]}`). Every number on this page is read from those tables.*"
+    )
+
+
+def page(name: str, tables: dict[str, pd.DataFrame | None], header: str) -> str:
+    """The Markdown of results page ``name``: its title, the stamp ``header``, its figures (copied beside the page
+    under figures/) and its sections; a section whose table was not made says which target makes it."""
+    title, figures, sections = PAGES[name]
+    out = [f"# {title}", "", header, ""]
+    if name == "index":
+        out += [f"- [{PAGES[p][0]}]({p}.md)" for p in PAGES if p != "index"] + [""]
+    out += [f"![{figure}](figures/{figure})\n" for figure in figures]
+    for s in sections:
+        table = tables.get(s.source)
+        body = s.render(table) if table is not None else f"Not run: `snakemake {s.target}` makes it."
+        out += [f"## {s.title}", "", body, ""]
+    return "\n".join(out)
+
+
+def write(out_dir: Path, tables: dict[str, pd.DataFrame | None], figures: dict[str, Path], header: str) -> None:
+    """Every page of :data:`PAGES` as ``out_dir/{page}.md``, with the figures they show copied from ``figures``
+    (name -> path) into ``out_dir/figures``."""
+    (out_dir / "figures").mkdir(parents=True, exist_ok=True)
+    for name in PAGES:
+        (out_dir / f"{name}.md").write_text(page(name, tables, header))
+    for figure in dict.fromkeys(f for _, shown, _ in PAGES.values() for f in shown):
+        shutil.copyfile(figures[figure], out_dir / "figures" / figure)
