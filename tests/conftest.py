@@ -4,6 +4,7 @@ import os
 import shutil
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -57,22 +58,63 @@ def snakemake(project, *args, configfile="config/ci.yaml", env=None):
     return subprocess.run(cmd, cwd=project, capture_output=True, text=True, env=dict(os.environ, **(env or {})))
 
 
-@pytest.fixture(scope="session")
-def numba_cache(tmp_path_factory):
-    """An empty Numba cache for the CI run: its jobs compile every kernel themselves, as on a fresh machine."""
-    return tmp_path_factory.mktemp("numba_cache")
+class _Pipeline:
+    """The CI configuration's run of target ``everything`` in a copy of the project, from a cold Numba cache: started
+    in the background as soon as the tests are collected (when a test needs it), so that it computes on the cores the
+    unit tests leave idle; the tests that read it run last (:func:`pytest_collection_modifyitems`)."""
+
+    def __init__(self):
+        self.root = Path(tempfile.mkdtemp(prefix="sphgag-pipeline-"))
+        self.cache = self.root / "numba_cache"
+        self.project = project_copy(self.root / "project")
+        self.log = (self.root / "snakemake.log").open("w")
+        cmd = [sys.executable, "-m", "snakemake", "everything", "--cores", "2", "--configfile", "config/ci.yaml"]
+        env = dict(os.environ, NUMBA_CACHE_DIR=str(self.cache))
+        self.process = subprocess.Popen(cmd, cwd=self.project, stdout=self.log, stderr=subprocess.STDOUT, env=env)
+
+    def wait(self) -> Path:
+        code = self.process.wait()
+        self.log.close()
+        assert code == 0, (self.root / "snakemake.log").read_text()[-6000:]
+        return self.project
+
+    def remove(self):
+        if self.process.poll() is None:
+            self.process.kill()
+            self.process.wait()
+        shutil.rmtree(self.root, ignore_errors=True)
+
+
+_PIPELINE: list[_Pipeline] = []
+
+
+def pytest_collection_modifyitems(session, config, items):
+    """Start the pipeline run if a collected test reads it, and run those tests last (in their collected order)."""
+    if config.option.collectonly:
+        return
+    reads = [item for item in items if "workdir" in getattr(item, "fixturenames", ())]
+    if reads:
+        _PIPELINE.append(_Pipeline())
+        items[:] = [item for item in items if item not in reads] + reads
+
+
+def pytest_sessionfinish(session, exitstatus):
+    for run in _PIPELINE:
+        run.remove()
 
 
 @pytest.fixture(scope="session")
-def workdir(tmp_path_factory, numba_cache):
+def numba_cache():
+    """The Numba cache the pipeline run compiled into (empty when it started: as on a fresh machine)."""
+    return _PIPELINE[0].cache
+
+
+@pytest.fixture(scope="session")
+def workdir():
     """A copy of the project root in which the CI configuration ran to the end (target ``everything``: every job it
-    defines), from a cold Numba cache (one run for the session: tests/test_pipeline.py reads and reruns it,
-    tests/test_slurm.py compares the Slurm run with it)."""
-    wd = project_copy(tmp_path_factory.mktemp("pipeline"))
-    run = snakemake(wd, "everything", env=dict(NUMBA_CACHE_DIR=str(numba_cache)))
-    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
-    yield wd
-    shutil.rmtree(wd, ignore_errors=True)
+    defines), from a cold Numba cache (one run for the session, started at collection: tests/test_pipeline.py reads
+    and reruns it, tests/test_slurm.py compares the Slurm run with it)."""
+    return _PIPELINE[0].wait()
 
 
 @pytest.fixture(scope="session")

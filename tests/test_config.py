@@ -179,6 +179,12 @@ def test_a_pool_model_without_any_of_its_charge_laws_is_rejected(ci_config):
     assert expected in bad(cfg, ["swelling", "pool_models"], ["particles", "cavity"])
 
 
+def test_a_variant_pool_model_that_figure_4_runs_already_is_rejected(ci_config):
+    """swelling.variant_pool_models runs beside figure 4's pool models in target variants: not one of them."""
+    expected = "swelling.variant_pool_models[0] = 'particles' is one of swelling.pool_models"
+    assert expected in bad(ci_config, ["swelling", "variant_pool_models"], ["particles"])
+
+
 def test_the_old_charge_switch_is_an_unknown_key(ci_config):
     cfg = copy.deepcopy(ci_config)
     cfg["gag"]["fixed_charge_dilution"] = True

@@ -240,6 +240,7 @@ FIGURES = [
         "sensitivity",
         "delamination_map",
         "variants_hourglass",
+        "variants_pool_models",
     )
     for ext in ("pdf", "png")
 ]
@@ -259,6 +260,8 @@ REPORT_TABLES = [
     "results/delamination/gci.csv",
     "results/sensitivity/indices.csv",
     "results/sensitivity/delamination_map.csv",
+    "results/variants/tip_stress.csv",
+    "results/variants/claims.csv",
 ]
 
 
@@ -359,8 +362,11 @@ def test_outputs_follow_the_data_contracts(workdir, ci_config):
     assert set(claims[calibration].charge_law) == {"-"}
     pool = claims[~calibration & (claims.pool_model == PAPER_POOL)]  # C6-C17: one row per claim and law
     assert all(sorted(rows.charge_law) == sorted(laws) for _, rows in pool.groupby("claim_id"))
-    for model in set(ci_config["swelling"]["pool_models"]) - {PAPER_POOL}:  # figure 4's claims under its laws
-        other = claims[claims.pool_model == model]
+    # target variants: the claims of figure 4 under every other pool model, under each law it carries
+    variant_claims = pd.read_csv(workdir / "results/variants/claims.csv", keep_default_na=False)
+    assert variant_claims[variant_claims.pool_model == PAPER_POOL].equals(claims[claims.pool_model == PAPER_POOL])
+    for model in ci_config["swelling"]["variant_pool_models"]:
+        other = variant_claims[variant_claims.pool_model == model]
         carried = sorted(set(laws) & set(POOL_MODELS[model].laws))
         assert set(other.claim_id) == {f"C{k}" for k in range(6, 13)}
         assert all(sorted(rows.charge_law) == carried for _, rows in other.groupby("claim_id"))
@@ -497,7 +503,7 @@ def test_a_measurement_setting_reruns_the_measurement_not_the_simulations(workdi
     assert run.returncode == 0, out
     jobs = planned_jobs(out)
     print("\nprobe_length_um edit reruns:", jobs)
-    sw, variants = ci_config["swelling"], pool_variants(ci_config)
+    sw, variants = ci_config["swelling"], pool_variants(ci_config, every_pool_model(ci_config))
     assert jobs.pop("pool_stresses") == variants * len(sw["models"]) * len(sw["cases"]) * len(sw["pressures_mmHg"])
     sc = ci_config["swelling_convergence"]
     assert jobs.pop("swelling_convergence_stresses") == study_variants(ci_config) * len(sc["dx_um"]) * len(sc["models"])
@@ -648,12 +654,15 @@ def test_a_configfile_stands_alone(fresh_copy, ci_config):
     run, out = plan(fresh_copy, "--configfile", "config/ci.yaml")
     assert run.returncode == 0, out
     sw = ci_config["swelling"]
-    expected = pool_variants(ci_config) * len(sw["models"]) * len(sw["cases"]) * len(sw["pressures_mmHg"])
+    expected = pool_variants(ci_config, every_pool_model(ci_config)) * len(sw["models"]) * len(sw["cases"])
+    expected *= len(sw["pressures_mmHg"])
     swell = [line for line in out.splitlines() if line.startswith("swell ")]
     assert swell and int(swell[0].split()[-1]) == expected, swell
     run, out = plan(fresh_copy)  # no --configfile: the full study
     full = yaml.safe_load((ROOT / "config/config.yaml").read_text())
-    runs = pool_variants(full) * len(full["swelling"]["models"]) * len(full["swelling"]["cases"])
+    runs = (
+        pool_variants(full, every_pool_model(full)) * len(full["swelling"]["models"]) * len(full["swelling"]["cases"])
+    )
     assert f"swell {runs * len(full['swelling']['pressures_mmHg'])}".split() in [
         line.split() for line in out.splitlines()
     ]
@@ -707,6 +716,11 @@ def pool_variants(cfg, pools=None) -> int:
     return sum(len(laws & set(POOL_MODELS[pool].laws)) for pool in pools)
 
 
+def every_pool_model(cfg) -> list[str]:
+    """Figure 4's pool models and the variants' (target `variants`): every pool model that `everything` runs."""
+    return cfg["swelling"]["pool_models"] + cfg["swelling"]["variant_pool_models"]
+
+
 def study_variants(cfg) -> int:
     """The (charge law, pool model) pairs of figure 4's resolution study."""
     return pool_variants(cfg, cfg["swelling_convergence"]["pool_models"])
@@ -736,6 +750,7 @@ def test_removing_a_charge_law_reruns_no_simulation(workdir, ci_config, tmp_path
     cfg = copy.deepcopy(ci_config)
     cfg["gag"]["charge_laws"] = ["conserved"]
     cfg["swelling"]["pool_models"] = ["particles"]  # the cavity carries the prescribed law only
+    cfg["swelling"]["variant_pool_models"] = []
     run = snakemake(workdir, "-n", "everything", configfile=written_config(tmp_path, cfg))
     out = run.stdout + run.stderr
     assert run.returncode == 0, out[-3000:]
@@ -754,6 +769,7 @@ def test_adding_a_charge_law_adds_its_own_jobs(fresh_copy, ci_config, tmp_path):
     one = copy.deepcopy(ci_config)
     one["gag"]["charge_laws"] = ["conserved"]
     one["swelling"]["pool_models"] = ["particles"]
+    one["swelling"]["variant_pool_models"] = []
     alone = planned_jobs(plan(fresh_copy, "--configfile", str(written_config(tmp_path, one)))[1])
     both = planned_jobs(plan(fresh_copy, "--configfile", "config/ci.yaml")[1])
     assert ci_config["gag"]["charge_laws"] == ["prescribed", "conserved"]
@@ -761,7 +777,7 @@ def test_adding_a_charge_law_adds_its_own_jobs(fresh_copy, ci_config, tmp_path):
     # the G_c the paper's law dissipates comes from its prescribed-law run of figure 5's pool at critical_stress_kPa,
     # which runs for that alone where figure 5's sigmas do not include it
     matched = de["fracture_energy"]["match_paper"] and de["critical_stress_kPa"] not in de["critical_stresses_kPa"]
-    variants = pool_variants(ci_config)
+    variants = pool_variants(ci_config, every_pool_model(ci_config))
     for rule, n in law_jobs(ci_config).items():
         per_law = variants if rule in SWELLING_RULES else study_variants(ci_config) if rule in STUDY_RULES else 2
         assert (alone[rule], both[rule]) == (n, per_law * n + (matched if rule == "delaminate" else 0)), rule

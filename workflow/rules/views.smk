@@ -7,7 +7,7 @@
 rule paraview_delamination:
     """Delamination run {law}/{run}: its snapshots as a ParaView series (a .vtu file per snapshot, a .pvd collection)."""
     input:
-        code=SPHGAG + [PARAVIEW],
+        code=[SPHGAG, PARAVIEW],
         states=DE_SNAPSHOTS,
     output:
         series=directory(f"results/paraview/delamination/{DE_ANY_NAME}"),
@@ -29,7 +29,7 @@ rule paraview_swelling:
     """Swelling run {law}/{pool}/{model}_{case}_{pressure}mmHg: its states as a ParaView series (a .vtu file per state, a .pvd
     collection)."""
     input:
-        code=SPHGAG + [PARAVIEW],
+        code=[SPHGAG, PARAVIEW],
         states=rules.swell.output.states,
     output:
         series=directory(f"results/paraview/swelling/{SWELL_NAME}"),

@@ -404,17 +404,18 @@ def stamp(commit: str, configuration: dict) -> str:
 
 
 def page(name: str, tables: dict[str, pd.DataFrame | None], header: str) -> str:
-    """The Markdown of results page ``name``: its title, the stamp ``header``, its figures (copied beside the page
-    under figures/) and its sections; a section whose table was not made says which target makes it."""
+    """The Markdown of results page ``name``: its title, the stamp ``header``, its sections (a section whose table
+    was not made says which target makes it), then its figures (copied beside the page under figures/)."""
     title, figures, sections = PAGES[name]
     out = [f"# {title}", "", header, ""]
     if name == "index":
         out += [f"- [{PAGES[p][0]}]({p}.md)" for p in PAGES if p != "index"] + [""]
-    out += [f"![{figure}](figures/{figure})\n" for figure in figures]
     for s in sections:
         table = tables.get(s.source)
         body = s.render(table) if table is not None else f"Not run: `snakemake {s.target}` makes it."
         out += [f"## {s.title}", "", body, ""]
+    if figures:
+        out += ["## Figures", "", *(f"![{figure}](figures/{figure})\n" for figure in figures)]
     return "\n".join(out)
 
 

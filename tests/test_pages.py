@@ -1,0 +1,40 @@
+"""The documentation site's results pages (sphgag.views.pages): written from the tables alone."""
+
+import pandas as pd
+
+from sphgag.views import pages
+
+CLAIMS = pd.DataFrame(
+    dict(
+        claim_id=["C1", "C6", "C6", "C6", "C8", "C8", "C18"],
+        charge_law=["-", "prescribed", "conserved", "prescribed", "prescribed", "conserved", "prescribed"],
+        pool_model=["-", "particles", "particles", "cavity", "particles", "particles", "particles"],
+        holds=["yes", "yes", "no", "no", "no", "yes", None],
+    )
+).assign(statement="s", paper_value="p", our_value="o", criterion="c", margin=1.0, across_band="n/a")
+
+
+def test_what_holds_is_read_per_law_for_the_paper_pool_with_the_general_claims():
+    table = pages.holds_table(CLAIMS)
+    assert "| prescribed | C1, C6 | C8 | C18 |" in table
+    assert "| conserved | C1, C8 | C6 | - |" in table  # the cavity's C6 is not the paper's pool
+
+
+def test_a_section_whose_table_was_not_made_names_the_target_that_makes_it(tmp_path):
+    text = pages.page("swelling", {"tips": None, "claims": None}, "stamp")
+    assert text.startswith("# Swelling (figure 4)\n\nstamp\n")
+    assert "Not run: `snakemake resolution` makes it." in text and "Not run: `snakemake all` makes it." in text
+    assert text.index("## Figures") > text.index("## Figure 4's runs")  # the tables first, then the figures
+
+
+def test_every_page_is_written_with_its_figures_beside_it(tmp_path):
+    figures = {}
+    for name in {f for _, shown, _ in pages.PAGES.values() for f in shown}:
+        figures[name] = tmp_path / name
+        figures[name].write_bytes(b"png")
+    out = tmp_path / "results"
+    pages.write(out, {"claims": CLAIMS}, figures, pages.stamp("abc", {"files": ["config/ci.yaml"], "sha256": "f" * 64}))
+    assert sorted(p.stem for p in out.glob("*.md")) == sorted(pages.PAGES)
+    index = (out / "index.md").read_text()
+    assert "commit `abc`, configuration `config/ci.yaml` (sha256 `ffffffffffff`)" in index
+    assert all((out / "figures" / name).read_bytes() == b"png" for name in figures)
