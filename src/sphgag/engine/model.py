@@ -325,8 +325,10 @@ class Model:
     @cached_property
     def band(self) -> tuple[int, int, np.ndarray]:
         """``(kl, ku, index)``: lower and upper bandwidth of the Jacobian (in dofs, fixed by the neighbour lists)
-        and the flat position of every block entry ``data[b, c, d]`` in LAPACK's band storage
-        ``ab[kl + ku + row - col, col]`` (shape ``(2 kl + ku + 1, 2 N)``); computed once."""
+        and the position of every block entry ``data[b, c, d]`` in LAPACK's band storage
+        ``ab[kl + ku + row - col, col]`` (shape ``(2 kl + ku + 1, 2 N)``), counted in column-major order: the
+        order LAPACK reads it in, so that the matrix is scattered straight into the array it factorises (no copy);
+        computed once."""
         rows = np.repeat(np.arange(self.n), np.diff(self.block_indptr))
         r = 2 * rows[:, None, None] + np.arange(2)[None, :, None] + np.zeros(2, dtype=np.int64)[None, None, :]
         c = (
@@ -335,4 +337,4 @@ class Model:
             + np.zeros(2, dtype=np.int64)[None, :, None]
         )
         kl, ku = int((r - c).max()), int((c - r).max())
-        return kl, ku, ((kl + ku + r - c) * (2 * self.n) + c).ravel()
+        return kl, ku, (c * (2 * kl + ku + 1) + kl + ku + r - c).ravel()

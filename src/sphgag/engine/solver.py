@@ -187,9 +187,9 @@ def lu_solver(model: Model, data: np.ndarray) -> Callable[[np.ndarray], np.ndarr
     kl, ku, index = model.band
     n2 = 2 * model.n
     if (2 * kl + ku + 1) * n2 * 8 <= BAND_BYTES and index.size >= BAND_FILL * n2 * (kl + ku + 1):
-        ab = np.zeros((2 * kl + ku + 1, n2))
-        ab.flat[index] = data.ravel()
-        lub, piv, info = lapack.dgbtrf(ab, kl, ku, overwrite_ab=True)
+        ab = np.zeros((n2, 2 * kl + ku + 1))  # the band storage's transpose: ab.T is the Fortran array LAPACK takes
+        np.put(ab, index, data)
+        lub, piv, info = lapack.dgbtrf(ab.T, kl, ku, overwrite_ab=True)
         if info > 0:
             raise RuntimeError(f"U({info},{info}) is exactly zero")
 
