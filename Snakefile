@@ -39,6 +39,7 @@ report: "workflow/report/workflow.rst"
 
 
 include: "workflow/rules/common.smk"
+include: "workflow/rules/package.smk"
 include: "workflow/rules/calibration.smk"
 include: "workflow/rules/homeostasis.smk"
 include: "workflow/rules/swelling.smk"

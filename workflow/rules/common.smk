@@ -44,7 +44,7 @@ PRESENTATION = {
 PACKAGE = Path(SRC, "sphgag")
 MODULES = {p.relative_to(PACKAGE).as_posix(): os.path.relpath(p) for p in sorted(PACKAGE.rglob("*.py"))}
 SPHGAG_MODULES = [path for name, path in MODULES.items() if name not in PRESENTATION]
-# The simulations' code input is one digest of those modules (rule package_digest), not the modules themselves: an
+# The simulations' code input is one digest of those modules (package.smk), not the modules themselves; an
 # edit of any of them reruns the same jobs, while the scheduler, which checks every input of every ready job at each
 # pass, checks one file per job instead of fifty (with the modules listed, a tenth of a core on `all`).
 SPHGAG = "results/code/sphgag.sha256"
@@ -57,17 +57,6 @@ VIEWS = {
 CLAIMS = MODULES["studies/claims.py"]
 SENSITIVITY = MODULES["studies/sensitivity.py"]  # the indices, not the samples' simulations
 PARAVIEW = MODULES["views/paraview.py"]
-
-
-rule package_digest:
-    """The sha256 of every module the simulations depend on, one per line: their code input (SPHGAG)."""
-    input:
-        SPHGAG_MODULES,
-    output:
-        SPHGAG,
-    localrule: True
-    script:
-        "../scripts/package_digest.py"
 
 
 # Configuration slices that saved states depend on: a later rule refuses a state made with others.
@@ -235,3 +224,17 @@ def study_evidence(path, target):
         return dict(path=str(file), state="not run")
 
     return param
+
+
+def studies_input(studies):
+    """Rule input: the files of the studies ``studies`` (name -> (a function giving its paths, its target)) that this
+    run makes (their targets asked for)."""
+    return lambda wildcards: [path for paths, target in studies.values() if requested(target) for path in paths()]
+
+
+def studies_evidence(studies):
+    """Rule parameter: every file's evidence (study_evidence) of the studies ``studies``, a list per study."""
+    return lambda wildcards: {
+        name: [study_evidence(lambda p=p: p, target)(wildcards) for p in paths()]
+        for name, (paths, target) in studies.items()
+    }

@@ -22,19 +22,6 @@ DOCS_FIGURES = [
 DOCS_PAGES = ("index", "claims", "swelling", "delamination", "verification")
 
 
-def docs_studies_input(wildcards):
-    """The study tables this run makes (their targets asked for), as inputs."""
-    return [path for paths, target in DOCS_STUDIES.values() if requested(target) for path in paths()]
-
-
-def docs_studies_evidence(wildcards):
-    """Every study table's evidence (study_evidence), by its name: a list, one per file."""
-    return {
-        name: [study_evidence(lambda p=p: p, target)(wildcards) for p in paths()]
-        for name, (paths, target) in DOCS_STUDIES.items()
-    }
-
-
 rule docs_pages:
     """The site's results pages, every number read from the pipeline's tables, stamped with their commit and the
     configuration."""
@@ -44,7 +31,7 @@ rule docs_pages:
         tips=rules.tip_stress.output[0],
         delamination=rules.delamination_summary.output[0],
         figures=DOCS_FIGURES,
-        studies=docs_studies_input,
+        studies=studies_input(DOCS_STUDIES),
     output:
         pages=expand("docs/results/{page}.md", page=DOCS_PAGES),
         figures=[f"docs/results/figures/{Path(f).name}" for f in DOCS_FIGURES],
@@ -55,7 +42,7 @@ rule docs_pages:
     conda:
         "../envs/sphgag.yaml"
     params:
-        studies=docs_studies_evidence,
+        studies=studies_evidence(DOCS_STUDIES),
         configuration=dict(
             files=[os.path.relpath(f) for f in workflow.configfiles],
             sha256=hashlib.sha256(repr(config).encode()).hexdigest(),
