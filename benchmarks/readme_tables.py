@@ -27,22 +27,22 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def _minutes(seconds: float) -> str:
-    return "-" if pd.isna(seconds) else f"{int(seconds // 60)} min {int(round(seconds % 60)):02d} s"
+    return "-" if pd.isna(seconds) else f"{int(seconds // 60)} min {int(seconds % 60):02d} s"
 
 
 def targets_table(targets: pd.DataFrame) -> str:
-    """Per target and configuration: jobs, the measured wall time end to end (where timed), the sum and the longest
-    of its jobs' wall times, where and at which commit."""
+    """Per target and configuration: jobs, the measured wall time from a fresh clone and once `all` has run (where
+    timed), the sum and the longest of its jobs' wall times, where and at which commit."""
     rows = [
-        "| target | configuration | jobs | time on 2 cores, end to end | job time (sum; longest job) | measured on "
+        "| target | jobs | time on 2 cores: fresh clone | after `all` | job time (sum; longest job) | measured on "
         "| commit |",
         "|" + " --- |" * 7,
     ]
     for r in targets.itertuples():
         jobs = f"{r.jobs}" + (f" ({r.jobs_measured} measured)" if r.jobs_measured < r.jobs else "")
         rows.append(
-            f"| `{r.target}` | {r.configuration} | {jobs} | {_minutes(r.wall_s) if pd.notna(r.wall_s) else 'not timed'}"
-            f" | {_minutes(r.job_wall_sum_s)}; {_minutes(r.longest_job_s)} | {r.measured_on} | `{str(r.commit)[:7]}` |"
+            f"| `{r.target}` ({r.configuration}) | {jobs} | {_minutes(r.wall_s)} | {_minutes(r.wall_after_all_s)} | "
+            f"{_minutes(r.job_wall_sum_s)}; {_minutes(r.longest_job_s)} | {r.measured_on} | `{str(r.commit)[:7]}` |"
         )
     return "\n".join(rows)
 
