@@ -9,6 +9,8 @@ rule package_digest:
         SPHGAG,
     log:
         "logs/package_digest.log",
+    benchmark:
+        "results/benchmarks/package_digest.tsv"
     localrule: True
     conda:
         "../envs/sphgag.yaml"

@@ -106,6 +106,8 @@ use rule fig4 as variants_fig4 with:
         code=VIEWS["swelling"],
         tips=rules.variants_tip_stress.output[0],
         particles=rules.homeostasis.output.particles,
+        band=study_input(lambda: rules.swelling_gci.output.band, "resolution"),
+        resolution=study_input(lambda: rules.swelling_convergence.output[0], "resolution"),
     output:
         pdf="figures/variants_pool_models.pdf",
         png=report(
