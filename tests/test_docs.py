@@ -71,3 +71,29 @@ def test_no_file_test_or_heading_is_named_after_an_issue():
     texts = [f for f in files if f.endswith((".py", ".md", ".smk", ".yaml", ".rst")) and Path(ROOT, f).exists()]
     named = [f"{f}: {line}" for f in texts for line in Path(ROOT, f).read_text().splitlines() if issue.search(line)]
     assert not named, named[:10]
+
+
+def mkdocs_build(project: Path) -> subprocess.CompletedProcess:
+    """``mkdocs build --strict`` of ``project`` (its mkdocs.yml and docs/) into a folder of its own."""
+    cmd = [sys.executable, "-m", "mkdocs", "build", "--strict", "--site-dir", str(project / "site_test")]
+    return subprocess.run(cmd, cwd=project, capture_output=True, text=True)
+
+
+@pytest.mark.pipeline
+def test_the_site_build_fails_on_a_broken_link_and_on_a_missing_results_page(workdir, tmp_path):
+    """The site of the CI run builds in strict mode, and the same build fails once a page links to a page that does
+    not exist, or once a results page (a table the pipeline did not write) is missing."""
+    project = tmp_path / "project"
+    project.mkdir()
+    for name in ("mkdocs.yml", "docs", "src"):
+        copy = shutil.copytree if (workdir / name).is_dir() else shutil.copyfile
+        copy(workdir / name, project / name)
+    assert mkdocs_build(project).returncode == 0
+    claims = project / "docs/results/claims.md"
+    text = claims.read_text()
+    claims.write_text(text + "\n[the swelling study](swelling_study.md)\n")
+    broken = mkdocs_build(project)
+    assert broken.returncode != 0 and "swelling_study.md" in broken.stdout + broken.stderr
+    claims.unlink()
+    missing = mkdocs_build(project)
+    assert missing.returncode != 0 and "results/claims.md" in missing.stdout + missing.stderr
