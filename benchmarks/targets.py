@@ -18,6 +18,17 @@ from pathlib import Path
 from rule_resources import ROOT, configuration_name, measure, planned_jobs
 
 TABLE = ROOT / "benchmarks" / "targets.csv"
+ORDER = (
+    "all",
+    "variants",
+    "fracture_energy",
+    "docs",
+    "views",
+    "resolution",
+    "verification",
+    "sensitivity",
+    "everything",
+)
 COLUMNS = ["target", "configuration", "jobs", "jobs_measured", "wall_s", "wall_after_all_s", "job_wall_sum_s",
            "longest_job_s", "measured_on", "commit"]  # fmt: skip
 
@@ -46,6 +57,7 @@ def write(new: dict, path: Path = TABLE) -> None:
     """``new`` into the table at ``path``, replacing the row of its target and configuration."""
     rows = list(csv.DictReader(path.open())) if path.exists() else []
     rows = [r for r in rows if (r["target"], r["configuration"]) != (new["target"], new["configuration"])] + [new]
+    rows.sort(key=lambda r: (r["configuration"], ORDER.index(r["target"]) if r["target"] in ORDER else len(ORDER)))
     with path.open("w", newline="") as f:
         writer = csv.DictWriter(f, COLUMNS, lineterminator="\n")
         writer.writeheader()
@@ -62,9 +74,8 @@ def main(argv=None) -> int:
     ap.add_argument("--commit", required=True)
     ap.add_argument("--measured-on", required=True)
     args = ap.parse_args(argv)
-    new = row(
-        args.target, args.configfile, args.benchmarks, args.wall, measured_on=args.measured_on, commit=args.commit
-    )
+    where = dict(measured_on=args.measured_on, commit=args.commit)
+    new = row(args.target, args.configfile, args.benchmarks, args.wall, args.after_all, **where)
     write(new)
     print(new)
     return 0
