@@ -52,12 +52,11 @@ def test_every_image_of_the_report_loads_in_a_browser(browser, workdir, tmp_path
 
 
 def test_every_figure_of_the_results_pages_loads_in_a_browser(browser, workdir, tmp_path):
-    """``snakemake docs`` builds the site; each of its results pages, opened in Chromium from ``site/``, shows its
+    """The CI run built the site (target docs, in everything); each of its results pages, opened in Chromium from
+    ``site/``, shows its
     figures: at least one image on the results pages in all, every one complete with a nonzero natural size as the
     browser reports it, and a screenshot of each page that is not blank."""
-    run = snakemake(workdir, "docs")
-    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
-    site = workdir / "site"
+    site = workdir / "site"  # built by the CI run of everything (target docs)
     assert (site / "index.html").is_file() and (site / "results" / "index.html").is_file()
     images = []
     for n, page in enumerate(sorted((site / "results").rglob("*.html"))):

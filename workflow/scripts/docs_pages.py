@@ -4,10 +4,12 @@ from pathlib import Path
 
 import pandas as pd
 
+from sphgag import threads
 from sphgag.records import provenance, runlog
 from sphgag.views import pages
 
 sm = snakemake  # noqa: F821
+threads.use(sm.threads)
 with runlog.run("docs_pages", sm.log[0]):
     tables = {k: pd.read_csv(sm.input[k]) for k in ("claims", "tips", "delamination")}
     for name, evidence in sm.params.studies.items():  # a study's table where this run or an earlier one made it
