@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from sphgag import config
+from sphgag import config, threads
 from sphgag.engine import geometry, kernel, solver
 from sphgag.engine.model import Model
 from sphgag.physics import materials
@@ -96,6 +96,9 @@ def pytest_collection_modifyitems(session, config, items):
     if reads:
         _PIPELINE.append(_Pipeline())
         items[:] = [item for item in items if item not in reads] + reads
+        # the run takes both cores: the tests compute on one thread meanwhile, so that no BLAS or Numba pool of this
+        # process spins on a core the run holds (oversubscribed, the LU-heavy tests ran ten times slower)
+        threads.use(1)
 
 
 def pytest_sessionfinish(session, exitstatus):

@@ -493,7 +493,9 @@ def test_a_reference_value_reruns_only_the_table_and_figures_that_show_it(workdi
     run = snakemake(workdir, "-n", "everything", configfile=edited)
     out = run.stdout + run.stderr
     assert run.returncode == 0, out
-    assert planned_jobs(out) == {"homeostasis_target": 1, "fig3a_mean": 1, "fig3": 1, "everything": 1}, out[-3000:]
+    # and the site's results pages, which show figure 3
+    expected = {"homeostasis_target": 1, "fig3a_mean": 1, "fig3": 1, "docs_pages": 1, "site": 1, "everything": 1}
+    assert planned_jobs(out) == expected, out[-3000:]
 
 
 def test_a_measurement_setting_reruns_the_measurement_not_the_simulations(workdir, ci_config, tmp_path):
@@ -521,9 +523,11 @@ def edited_copy(workdir, tmp_path, module: str) -> Path:
     return dest
 
 
-def test_a_comment_in_a_module_that_computes_no_number_reruns_nothing(workdir, tmp_path):
+def test_a_comment_in_a_module_that_computes_no_number_reruns_nothing_but_the_site(workdir, tmp_path):
+    """No simulation, table or figure: only the site, whose API page documents the module."""
     run = snakemake(edited_copy(workdir, tmp_path, "records/provenance.py"), "-n", "everything")
-    assert run.returncode == 0 and "Nothing to be done" in run.stdout + run.stderr, run.stdout[-3000:]
+    assert run.returncode == 0, run.stdout[-3000:]
+    assert planned_jobs(run.stdout + run.stderr) == {"site": 1, "everything": 1}
 
 
 def test_an_edit_of_a_figure_family_redraws_its_figures_only(workdir, tmp_path):
@@ -932,12 +936,14 @@ def test_the_sensitivity_study_accounts_for_every_sample_and_maps_every_level(wo
     assert set(table.charge_law) == set(laws)
 
 
-def test_the_source_of_a_range_is_documentation_and_reruns_nothing(workdir, ci_config, tmp_path):
+def test_the_source_of_a_range_is_documentation_and_reruns_nothing_but_the_site_stamp(workdir, ci_config, tmp_path):
+    """No simulation, table or figure: only the site's results pages, stamped with the configuration's digest."""
     cfg = copy.deepcopy(ci_config)
     first = next(iter(cfg["sensitivity"]["inputs"]))
     cfg["sensitivity"]["inputs"][first]["source"] = "a better reference"
     run = snakemake(workdir, "-n", "everything", configfile=written_config(tmp_path, cfg))
-    assert run.returncode == 0 and "Nothing to be done" in run.stdout + run.stderr, run.stdout[-3000:]
+    assert run.returncode == 0, run.stdout[-3000:]
+    assert planned_jobs(run.stdout + run.stderr) == {"docs_pages": 1, "site": 1, "everything": 1}
 
 
 # -- targets by purpose, params that hold what a job reads, claims of targets not run, resources --------
