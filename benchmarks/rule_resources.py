@@ -70,7 +70,7 @@ def planned_jobs(target: str, configfile: str | None, project: Path = ROOT) -> l
             fields = None
     defaults = cluster_defaults(project)
     out = []
-    for f in jobs:
+    for f in (f for f in jobs if "output" in f):  # a target rule (all, everything, ...) has no output: no job
         resources = dict(kv.split("=", 1) for kv in f.get("resources", "").split(", ") if "=" in kv)
         resources = {**defaults, **resources}  # what a cluster job of a rule without its own gets
         out.append(
@@ -82,7 +82,7 @@ def planned_jobs(target: str, configfile: str | None, project: Path = ROOT) -> l
                 float(resources["mem_mb"]) if "mem_mb" in resources else None,
             )
         )
-    return [j for j in out if j.rule not in TARGETS]
+    return out
 
 
 def cluster_defaults(project: Path = ROOT) -> dict:
@@ -94,19 +94,6 @@ def cluster_defaults(project: Path = ROOT) -> dict:
     if isinstance(found, list):
         found = dict(item.split("=", 1) for item in found)
     return {k: str(found[k]) for k in ("runtime", "mem_mb") if k in found}
-
-
-TARGETS = (
-    "all",
-    "everything",
-    "resolution",
-    "verification",
-    "fracture_energy",
-    "sensitivity",
-    "variants",
-    "views",
-    "docs",
-)
 
 
 def read_benchmark(path: Path) -> tuple[float, float]:
@@ -150,10 +137,6 @@ def from_table(jobs: list[Job], table: dict[str, tuple[float, float]]) -> None:
 def record(jobs: list[Job], path: Path, configuration: str, measured_on: str, commit: str) -> int:
     """Write the rules of ``jobs`` that have measurements into the table at ``path`` (their rows of
     ``configuration`` replaced); the number of rules written."""
-    rows = []
-    if path.exists():
-        with path.open() as f:
-            rows = list(csv.DictReader(f))
     new = {}
     for rule in dict.fromkeys(j.rule for j in jobs):
         done = [j for j in jobs if j.rule == rule and j.seconds is not None]
@@ -167,13 +150,21 @@ def record(jobs: list[Job], path: Path, configuration: str, measured_on: str, co
                 measured_on=measured_on,
                 commit=commit,
             )
-    rows = [r for r in rows if not (r["configuration"] == configuration and r["rule"] in new)] + list(new.values())
-    rows.sort(key=lambda r: (r["configuration"], r["rule"]))
+    replace_rows(path, TABLE_COLUMNS, list(new.values()), key=("configuration", "rule"))
+    return len(new)
+
+
+def replace_rows(path: Path, columns: list[str], new: list[dict], key: tuple[str, ...], order=None) -> None:
+    """Write ``new`` into the CSV table at ``path``, in place of its rows with the same ``key`` columns, sorted by
+    ``order`` (a row's sort key; default: the key columns)."""
+    rows = list(csv.DictReader(path.open())) if path.exists() else []
+    keys = {tuple(str(r[k]) for k in key) for r in new}
+    rows = [r for r in rows if tuple(r[k] for k in key) not in keys] + new
+    rows.sort(key=order or (lambda r: tuple(str(r[k]) for k in key)))
     with path.open("w", newline="") as f:
-        writer = csv.DictWriter(f, TABLE_COLUMNS, lineterminator="\n")
+        writer = csv.DictWriter(f, columns, lineterminator="\n")
         writer.writeheader()
         writer.writerows(rows)
-    return len(new)
 
 
 def exceeded(jobs: list[Job], margin: float = 1.0) -> list[str]:

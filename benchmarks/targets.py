@@ -12,10 +12,9 @@ at which commit.
 from __future__ import annotations
 
 import argparse
-import csv
 from pathlib import Path
 
-from rule_resources import ROOT, configuration_name, measure, planned_jobs
+from rule_resources import ROOT, configuration_name, measure, planned_jobs, replace_rows
 
 TABLE = ROOT / "benchmarks" / "targets.csv"
 ORDER = (
@@ -55,13 +54,11 @@ def row(
 
 def write(new: dict, path: Path = TABLE) -> None:
     """``new`` into the table at ``path``, replacing the row of its target and configuration."""
-    rows = list(csv.DictReader(path.open())) if path.exists() else []
-    rows = [r for r in rows if (r["target"], r["configuration"]) != (new["target"], new["configuration"])] + [new]
-    rows.sort(key=lambda r: (r["configuration"], ORDER.index(r["target"]) if r["target"] in ORDER else len(ORDER)))
-    with path.open("w", newline="") as f:
-        writer = csv.DictWriter(f, COLUMNS, lineterminator="\n")
-        writer.writeheader()
-        writer.writerows(rows)
+
+    def position(r):
+        return r["configuration"], ORDER.index(r["target"]) if r["target"] in ORDER else len(ORDER)
+
+    replace_rows(path, COLUMNS, [new], key=("target", "configuration"), order=position)
 
 
 def main(argv=None) -> int:
