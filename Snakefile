@@ -49,6 +49,7 @@ include: "workflow/rules/figures.smk"
 include: "workflow/rules/sensitivity.smk"
 include: "workflow/rules/views.smk"
 include: "workflow/rules/variants.smk"
+include: "workflow/rules/procedure.smk"
 include: "workflow/rules/docs.smk"
 
 
@@ -126,6 +127,14 @@ rule variants:
         rules.variants_claims.output,
 
 
+rule paper_procedure:
+    """The authors' explicit, fixed-step procedure beside our equilibria: figure 4's pools swollen by leapfrog
+    pseudo-dynamics at the script's step counts and multiples of them, with their residuals."""
+    input:
+        rules.procedure_summary.output,
+        rules.procedure_figure.output,
+
+
 rule views:
     """A ParaView series of every swelling and delamination run, and an animation of every delamination run."""
     input:
@@ -148,5 +157,6 @@ rule everything:
         rules.fracture_energy.input,
         rules.sensitivity.input,
         rules.variants.input,
+        rules.paper_procedure.input,
         rules.views.input,
         rules.docs.input,

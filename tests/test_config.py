@@ -219,7 +219,17 @@ def test_pool_sets_with_any_name_are_valid(ci_config):
     de["pool_sets"]["extra"] = de["pool_sets"]["high_separation"]
     de["figures"] = dict(fig5="alone", fig6=["pair_2deg", "high_separation"], fig7="radial_offset")
     de["convergence"]["pool_sets"] = ["alone", "pair_2deg"]
+    cfg["paper_procedure"]["pool_sets"] = {"alone": [40.0]}
     config.validate(cfg, SCHEMA)
+
+
+def test_the_procedures_pools_must_be_configured_pools(ci_config):
+    message = bad(ci_config, ["paper_procedure", "pool_sets"], {"lonely": [40.0]})
+    assert "paper_procedure.pool_sets.lonely is not a set of delamination.pool_sets" in message
+    message = bad(ci_config, ["paper_procedure", "cases"], ["I", "V"])
+    assert "paper_procedure.cases[1] = 'V' is not a pool of swelling.cases" in message
+    message = bad(ci_config, ["paper_procedure", "swelling", "stop_concentration_mEq_l"], 400.0)
+    assert "paper_procedure.swelling.stop_concentration_mEq_l = 400 is above the ramp's top" in message
 
 
 def test_a_resolution_set_that_is_not_a_pool_set_is_rejected_by_name(ci_config):

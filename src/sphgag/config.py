@@ -469,6 +469,20 @@ def _swelling(config: dict) -> list[str]:
                 f"swelling_convergence.cases[{k}] = {name!r} is not a pool of swelling.cases "
                 f"({', '.join(sw.get('cases', {}))})"
             )
+    pp = config.get("paper_procedure", {})
+    for k, name in enumerate(pp.get("cases", [])):
+        if name not in sw.get("cases", {}):
+            pools = ", ".join(sw.get("cases", {}))
+            problems.append(f"paper_procedure.cases[{k}] = {name!r} is not a pool of swelling.cases ({pools})")
+    for name in pp.get("pool_sets", {}):
+        if name not in config.get("delamination", {}).get("pool_sets", {}):
+            problems.append(f"paper_procedure.pool_sets.{name} is not a set of delamination.pool_sets")
+    ramp_ = pp.get("swelling", {})
+    if ramp_.get("stop_concentration_mEq_l", 0.0) > ramp_.get("max_concentration_mEq_l", float("inf")):
+        problems.append(
+            f"paper_procedure.swelling.stop_concentration_mEq_l = {ramp_['stop_concentration_mEq_l']:g} is above the "
+            f"ramp's top, paper_procedure.swelling.max_concentration_mEq_l = {ramp_['max_concentration_mEq_l']:g}"
+        )
     if "max_concentration_mEq_l" in sw and "concentration_points" in sw:
         top, points = sw["max_concentration_mEq_l"], sw["concentration_points"]
         ramp = [top * i / (points - 1) for i in range(points)]
@@ -490,6 +504,7 @@ def _file_names(config: dict) -> list[str]:
         ("calibration", "transmural_pressures_mmHg"),
         ("swelling", "pressures_mmHg"),
         ("swelling_convergence", "dx_um"),
+        ("paper_procedure", "step_factors"),
         ("delamination", "critical_stresses_kPa"),
     ]
     for section, key in named:

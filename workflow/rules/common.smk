@@ -25,7 +25,16 @@ GAG = {law: canonical(law_gag(config["gag"], law)) for law in LAWS}
 # compute no number (validation, logging, provenance records) are inputs of nothing.
 # The figures are drawn by families (sphgag.views.<family>: figure 1, the wall models of figure 3, the swelling of
 # figure 4, the verification problems, the delamination of figures 5-7, the sensitivity study), on a shared style.
-FIGURE_FAMILIES = ("layout", "wall", "swelling", "verification", "delamination", "sensitivity", "variants")
+FIGURE_FAMILIES = (
+    "layout",
+    "wall",
+    "swelling",
+    "verification",
+    "delamination",
+    "sensitivity",
+    "variants",
+    "procedure",
+)
 PRESENTATION = {
     "views/style.py",
     *(f"views/{family}.py" for family in FIGURE_FAMILIES),

@@ -1,53 +1,204 @@
-"""Pseudo-dynamic relaxation as in the paper: leapfrog steps with artificial viscosity (eqs. 2.12-2.13).
+"""Pseudo-dynamics as in the paper: leapfrog steps with mass scaling and artificial viscosity (eqs. 2.12-2.13).
 
-The production solver is Newton's method (:mod:`sphgag.engine.solver`); this module
-keeps the paper's explicit scheme as an independent route to the same
-equilibrium (the tests check that both agree) and as a reference for the
-benchmark. Masses are scaled (``m_i = density * V_i``); the viscous first
-Piola-Kirchhoff stress of section 2.3, ``P_visc = 2 eta J d F^-T`` with
-``d = sym(F_dot F^-1)`` and ``F_dot = (F^t - F^(t-1)) / dt``, is added to P.
-(The paper writes ``2 eta d F^-T``; the factor J is the Piola transform of the
-Cauchy stress ``2 eta d`` and is ~1 here.) Optionally the velocities are reset
-whenever the kinetic energy peaks (kinetic damping), which reaches the
-quasi-static state much faster than viscosity alone.
+The production solver is Newton's method (:mod:`sphgag.engine.solver`). This module is the paper's explicit scheme:
+an independent route to the same equilibrium (:func:`relax`, the tests check that both agree) and the step loop of
+the authors' fixed-step procedure (:mod:`sphgag.studies.paper_procedure`). The steps run in one Numba loop
+(:func:`leapfrog`) over the same forces as the quasi-static solver: the elastic and hourglass forces of
+:func:`sphgag.engine.forces.forces_and_stresses`, the energy hourglass form's ``-K (x - X)``
+(:mod:`sphgag.engine.hourglass`) and the lumen pressure (:func:`sphgag.engine.loading.pressure_forces`).
+
+Masses are scaled (``m_i = density * V_i``, a pseudo-density, not physical inertia); the viscous first
+Piola-Kirchhoff stress of section 2.3, ``P_visc = 2 eta J d F^-T`` with ``d = sym(F_dot F^-1)`` and
+``F_dot = (F^t - F^(t-1)) / dt``, is added to P. (The paper writes ``2 eta d F^-T``; the factor J is the Piola
+transform of the Cauchy stress ``2 eta d``, as in the authors' script.) Optionally the velocities are reset whenever
+the kinetic energy peaks (kinetic damping), which reaches the quasi-static state much faster than viscosity alone.
 """
 
 from __future__ import annotations
 
 import time
+from dataclasses import dataclass
 
 import numpy as np
 from numba import njit
 
-from .loading import Load
+from . import forces
+from .loading import Load, lumen_area_gradient
 from .model import Model
 from .solver import Convergence, Diverged, Inverted, NotConverged, relative_residual
 
 
 @njit(cache=True, error_model="numpy")
 def viscous_stress(F, F_old, dt, eta, out):
-    """``P_visc = 2 eta J d F^-T`` per particle (section 2.3), into ``out`` (N, 4)."""
+    """``P_visc = 2 eta J d F^-T`` per particle (section 2.3) from (N, 4) rows of F, into ``out`` (N, 4)."""
     for i in range(F.shape[0]):
-        f00, f01, f10, f11 = F[i, 0, 0], F[i, 0, 1], F[i, 1, 0], F[i, 1, 1]
+        f00, f01, f10, f11 = F[i, 0], F[i, 1], F[i, 2], F[i, 3]
         det = f00 * f11 - f01 * f10
-        # F^-1
-        g00, g01, g10, g11 = f11 / det, -f01 / det, -f10 / det, f00 / det
-        d00 = (F[i, 0, 0] - F_old[i, 0, 0]) / dt
-        d01 = (F[i, 0, 1] - F_old[i, 0, 1]) / dt
-        d10 = (F[i, 1, 0] - F_old[i, 1, 0]) / dt
-        d11 = (F[i, 1, 1] - F_old[i, 1, 1]) / dt
-        # l = F_dot F^-1, d = sym(l)
-        l00 = d00 * g00 + d01 * g10
+        g00, g01, g10, g11 = f11 / det, -f01 / det, -f10 / det, f00 / det  # F^-1
+        d00 = (f00 - F_old[i, 0]) / dt
+        d01 = (f01 - F_old[i, 1]) / dt
+        d10 = (f10 - F_old[i, 2]) / dt
+        d11 = (f11 - F_old[i, 3]) / dt
+        l00 = d00 * g00 + d01 * g10  # l = F_dot F^-1, d = sym(l)
         l01 = d00 * g01 + d01 * g11
         l10 = d10 * g00 + d11 * g10
         l11 = d10 * g01 + d11 * g11
         s00, s11, s01 = l00, l11, 0.5 * (l01 + l10)
         c = 2.0 * eta * det
-        # (2 eta J d) F^-T
-        out[i, 0] = c * (s00 * g00 + s01 * g01)
+        out[i, 0] = c * (s00 * g00 + s01 * g01)  # (2 eta J d) F^-T
         out[i, 1] = c * (s00 * g10 + s01 * g11)
         out[i, 2] = c * (s01 * g00 + s11 * g01)
         out[i, 3] = c * (s01 * g10 + s11 * g11)
+
+
+@njit(cache=True, error_model="numpy")
+def _deformation_gradient_rows(x, pair_ptr, pair_j, pair_a, solo_ptr, solo_j, solo_a, owner, mirror, xe, FP, out):
+    """``F`` of every particle (eq. 2.9) as (N, 4) rows into ``out`` (the first pass of the force kernel)."""
+    n = x.shape[0]
+    for i in range(n):
+        xe[i, 0], xe[i, 1] = x[i, 0], x[i, 1]
+    for g in range(owner.shape[0]):
+        xe[n + g, 0] = mirror[g, 0] * x[owner[g], 0]
+        xe[n + g, 1] = mirror[g, 1] * x[owner[g], 1]
+    forces._deformation_gradients(xe, pair_ptr, pair_j, pair_a, solo_ptr, solo_j, solo_a, False, FP, n)
+    for i in range(n):
+        for k in range(4):
+            out[i, k] = FP[i, k]
+
+
+@njit(cache=True, error_model="numpy")
+def _net_forces(x, pd, lz, cth, sth, props, extra, xe, fe, FP, f, hg_ptr, hg_idx, hg_val, X, inner, pressure, g):
+    """``f_int + f_ext`` at ``x`` into ``f``: elastic and eq. (2.14) forces, ``-K (x - X)`` of the energy hourglass
+    form (CSR ``hg_*``, empty under eq. 2.14) and the lumen pressure ``p lz dA/dx``; returns the smallest det F."""
+    dmin = forces.forces_and_stresses(
+        x, pd[0], pd[1], pd[2], pd[3], pd[4], pd[5], pd[6], pd[7], pd[8], pd[9], pd[10], pd[11], pd[12],
+        lz, cth, sth, props, extra, xe, fe, FP, f,
+    )  # fmt: skip
+    if hg_ptr.shape[0] > 1:
+        u, ff = (x - X).reshape(-1), f.reshape(-1)
+        for row in range(hg_ptr.shape[0] - 1):
+            acc = 0.0
+            for k in range(hg_ptr[row], hg_ptr[row + 1]):
+                acc += hg_val[k] * u[hg_idx[k]]
+            ff[row] -= acc
+    if pressure != 0.0:
+        lumen_area_gradient(x, inner, g)
+        for k in range(inner.shape[0]):
+            f[inner[k], 0] += pressure * lz * g[k, 0]
+            f[inner[k], 1] += pressure * lz * g[k, 1]
+    return dmin
+
+
+@njit(cache=True, error_model="numpy")
+def leapfrog(
+    x, v, inv_m, held, held_x, pd, lz, cth, sth, props, hg_ptr, hg_idx, hg_val, X, inner, pressure,
+    dt, eta, damping, steps, F_old, extra, xe, fe, FP, f, g,
+):  # fmt: skip
+    """``steps`` leapfrog steps (eq. 2.13) in place: ``v^(t+1/2) = v^(t-1/2) + dt f(x^t) / m``,
+    ``x^(t+1) = x^t + dt v^(t+1/2)``, the ``held`` particles at ``held_x``. With ``eta > 0`` the viscous stress of
+    :func:`viscous_stress` (``F_old``: the previous step's F rows, updated) is added to P; with ``damping`` the
+    velocities are zeroed whenever the kinetic energy falls (kinetic damping). Returns ``(kinetic energy
+    1/2 sum m v^2 of the last half step, smallest det F, steps done)``; it stops early at an inversion or a
+    non-finite force."""
+    n = x.shape[0]
+    kinetic_prev = 0.0
+    kinetic = 0.0
+    dmin = np.inf
+    for step in range(steps):
+        if eta > 0.0:
+            _deformation_gradient_rows(x, pd[0], pd[1], pd[3], pd[5], pd[6], pd[8], pd[11], pd[12], xe, FP, extra)
+            for i in range(n):
+                for k in range(4):
+                    F_new = extra[i, k]
+                    extra[i, k] = F_old[i, k]
+                    F_old[i, k] = F_new
+            # extra holds F^(t-1) and F_old holds F^t: P_visc from them, into extra
+            viscous_stress(F_old, extra, dt, eta, extra)
+        dmin = _net_forces(x, pd, lz, cth, sth, props, extra, xe, fe, FP, f, hg_ptr, hg_idx, hg_val, X, inner,
+                           pressure, g)  # fmt: skip
+        if not dmin > 0.0:
+            return kinetic, dmin, step
+        kinetic = 0.0
+        for i in range(n):
+            for d in range(2):
+                v[i, d] += dt * f[i, d] * inv_m[i]
+        for k in range(held.shape[0]):
+            v[held[k], 0] = v[held[k], 1] = 0.0
+        for i in range(n):
+            kinetic += 0.5 * (v[i, 0] * v[i, 0] + v[i, 1] * v[i, 1]) / inv_m[i]
+        if not np.isfinite(kinetic):
+            return kinetic, dmin, step
+        if damping and kinetic < kinetic_prev:
+            v[:, :] = 0.0
+            kinetic = 0.0
+        kinetic_prev = kinetic
+        for i in range(n):
+            x[i, 0] += dt * v[i, 0]
+            x[i, 1] += dt * v[i, 1]
+        for k in range(held.shape[0]):
+            x[held[k], 0], x[held[k], 1] = held_x[k, 0], held_x[k, 1]
+    return kinetic, dmin, steps
+
+
+@dataclass
+class Motion:
+    """The state of the pseudo-dynamics: positions ``x`` at step ``step`` and velocities ``v`` at the half step
+    before it, with ``F_old`` (the deformation gradients of the last step, for the viscous stress)."""
+
+    x: np.ndarray
+    v: np.ndarray
+    step: int = 0
+    F_old: np.ndarray | None = None
+
+    @classmethod
+    def at_rest(cls, x: np.ndarray) -> Motion:
+        return cls(np.array(x, dtype=float), np.zeros_like(x, dtype=float))
+
+
+@dataclass(frozen=True)
+class Stepping:
+    """How the pseudo-dynamics step: pseudo-time step ``dt``, mass scaling ``density`` (``m_i = density V_i``),
+    viscosity ``eta`` of the viscous stress (0: none) and kinetic ``damping``."""
+
+    dt: float
+    density: float
+    eta: float = 0.0
+    damping: bool = False
+
+
+def advance(model: Model, motion: Motion, load: Load, steps: int, stepping: Stepping, run: str | None = None) -> float:
+    """``steps`` leapfrog steps of ``motion`` under ``load`` (held fixed), in place (:func:`leapfrog`); returns the
+    kinetic energy of the last half step. Raises :class:`~sphgag.engine.solver.Inverted` or
+    :class:`~sphgag.engine.solver.Diverged` naming the run, the load and the step."""
+    run = run or model.name
+    props, _, pairs = model.material(load)
+    K = model._cache["hg_matrix"]
+    hg = (np.zeros(1, np.int32), np.zeros(0, np.int32), np.zeros(0)) if K is None else (K.indptr, K.indices, K.data)
+    held, held_x = model.constraints(load)
+    n = model.n
+    if motion.F_old is None:
+        motion.F_old = np.empty((n, 4))
+        _deformation_gradient_rows(motion.x, pairs.pair_ptr, pairs.pair_j, pairs.pair_a, pairs.solo_ptr,
+                                   pairs.solo_j, pairs.solo_a, pairs.ghost_owner, pairs.ghost_mirror, model._xe,
+                                   np.empty((n, 12)), motion.F_old)  # fmt: skip
+    pd = (
+        pairs.pair_ptr, pairs.pair_j, pairs.pair_geo, pairs.pair_a, pairs.pair_hgc, pairs.solo_ptr, pairs.solo_j,
+        pairs.solo_geo, pairs.solo_a, pairs.solo_hgc, pairs.split, pairs.ghost_owner, pairs.ghost_mirror,
+    )  # fmt: skip
+    inner = model.layout.inner_surface
+    extra = np.zeros((n, 4)) if stepping.eta > 0.0 else forces.NO_EXTRA_STRESS
+    kinetic, dmin, done = leapfrog(
+        motion.x, motion.v, 1.0 / (stepping.density * model.layout.volume), np.asarray(held, np.int64),
+        np.ascontiguousarray(held_x, dtype=float).reshape(-1, 2), pd, load.axial_stretch, model.cth, model.sth, props,
+        *hg, model.layout.X, inner, load.pressure_kPa or 0.0, stepping.dt, stepping.eta, stepping.damping, steps,
+        motion.F_old, extra, model._xe, model._fe, np.empty((n, 12)), np.empty((n, 2)), np.empty((inner.size, 2)),
+    )  # fmt: skip
+    motion.step += done
+    if done < steps:
+        what = "particle inversion" if not dmin > 0.0 else "non-finite velocities"
+        error = Inverted if not dmin > 0.0 else Diverged
+        raise error(run, load, f"{what} at pseudo-dynamic step {motion.step}")
+    return float(kinetic)
 
 
 def relax(
@@ -64,43 +215,18 @@ def relax(
     check_every: int = 50,
     run: str | None = None,
 ):
-    """Leapfrog relaxation (eq. 2.13) to the equilibrium at ``load``; returns ``(x, evaluation, convergence)``."""
+    """Leapfrog relaxation (eq. 2.13) to the equilibrium at ``load``; returns ``(x, evaluation, convergence)``: the
+    relative residual (:func:`~sphgag.engine.solver.relative_residual`) is checked every ``check_every`` steps."""
     run = run or model.name
     t0 = time.perf_counter()
-    x = x0.copy()
-    m = (density * model.layout.volume)[:, None]
-    v = np.zeros_like(x)
     cons, target = model.constraints(load)
-    x[cons] = target
-    extra = np.zeros((model.n, 4))
-    ev = model.evaluate(x, load)
-    F_old = ev.F.copy()
-    kinetic_prev = 0.0
-    for step in range(1, max_steps + 1):
-        if eta:
-            viscous_stress(ev.F, F_old, dt, eta, extra)
-            F_old = ev.F.copy()
-            ev = model.evaluate(x, load, extra)
-        acc = (ev.f_int + ev.f_ext) / m
-        acc[cons] = 0.0
-        v += acc * dt  # v^(t+1/2) = v^(t-1/2) + a^t dt
-        kinetic = float((m * v * v).sum())
-        if kinetic_damping and kinetic < kinetic_prev:
-            v[:] = 0.0
-            kinetic = 0.0
-        kinetic_prev = kinetic
-        x += v * dt  # x^(t+1) = x^t + v^(t+1/2) dt
-        ev = model.evaluate(x, load)
-        if ev.min_det <= 0.0:
-            raise Inverted(run, load, f"particle inversion during relaxation step {step}")
-        if not ev.finite:
-            raise Diverged(run, load, f"non-finite forces at relaxation step {step}")
-        if step % check_every == 0:
-            rel = relative_residual(model, ev)
-            if rel < tol:
-                return x, ev, Convergence(rel, step, step + 1, 0, time.perf_counter() - t0)
-    raise NotConverged(
-        run,
-        load,
-        f"relaxation did not converge in {max_steps} steps (relative residual {relative_residual(model, ev):.3g})",
-    )
+    motion = Motion.at_rest(x0)
+    motion.x[cons] = target
+    stepping = Stepping(dt, density, eta, kinetic_damping)
+    while motion.step < max_steps:
+        advance(model, motion, load, min(check_every, max_steps - motion.step), stepping, run)
+        ev = model.evaluate(motion.x, load)
+        rel = relative_residual(model, ev)
+        if rel < tol:
+            return motion.x, ev, Convergence(rel, motion.step, motion.step + 1, 0, time.perf_counter() - t0)
+    raise NotConverged(run, load, f"relaxation did not converge in {max_steps} steps (relative residual {rel:.3g})")

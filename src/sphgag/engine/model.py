@@ -154,6 +154,9 @@ class Model:
             out.append((float(rows[0, materials.PI]), (float(rows[0, materials.MU]), float(rows[0, materials.LAM]))))
         return out
 
+    #: what :meth:`_stencil` caches (a function of the hourglass form, alpha and the stencil's columns alone)
+    STENCIL = ("nb_elastic", "stencil_of", "hgc", "pairs", "hg", "hg_stiffness", "hg_matrix")
+
     def _stencil(self, props) -> None:
         """Hourglass coefficients, hourglass stencil and packed pair data of ``props``: rebuilt only where what they
         read (alpha, each particle's hourglass modulus and tissue fraction) changed, not for a new swelling pressure
@@ -188,8 +191,15 @@ class Model:
             pairs=pairs,
             hg=(ah, sh),
             hg_stiffness=stiffness,
-            hg_matrix=None if stiffness is None else self.block_matrix(stiffness).tocsr(),
+            hg_matrix=None if stiffness is None else self._sparse(stiffness),
         )
+
+    def _sparse(self, blocks) -> sp.csr_matrix:
+        """The CSR matrix of 2 x 2 ``blocks`` without their stored zeros (the energy hourglass form's blocks are
+        diagonal: half the entries, and the same products, in the same order, as with them)."""
+        K = self.block_matrix(blocks).tocsr()
+        K.eliminate_zeros()
+        return K
 
     def hourglass_forces(self, x: np.ndarray, load: Load) -> np.ndarray | None:
         """``-K (x - X)``: the forces of the ``energy`` hourglass form (:mod:`sphgag.engine.hourglass`); None under
@@ -206,9 +216,12 @@ class Model:
         return self._cache["hg"]
 
     def set_props(self, props) -> None:
-        """Replace the property table (a copy is kept: edit tables through this method, not in place)."""
+        """Replace the property table (a copy is kept: edit tables through this method, not in place). The hourglass
+        stencil is kept: :meth:`material` rebuilds it only if the columns it reads changed (:meth:`_stencil`)."""
         self.props = props if callable(props) else np.array(props, dtype=float)
+        stencil = {k: self._cache[k] for k in self.STENCIL if k in self._cache}
         self._cache.clear()
+        self._cache.update(stencil)
 
     # -- boundary conditions --------------------------------------------------
     def constraints(self, load: Load):

@@ -50,16 +50,31 @@ def swell_cases(
     wall_at`; ``calibration``: the ``bilayer_calibration`` section, its activation pressure and steps), then each
     pool converted and swollen (:func:`sphgag.studies.protocols.swell_pool`), followed by the states at which it
     holds each of ``volume_ratios`` (:func:`sphgag.studies.volume_states.at_volume_ratios`, stage ``at volume``)."""
-    p = dict(bilayer, dx_um=float(dx))
-    wall = artery.bilayer_model(p, numerics, name=name)
-    h = protocols.homeostasis(wall, numerics, homeostasis)
-    start = protocols.wall_at(wall, h.state, numerics, calibration, active, pressure_mmHg)
+    start = pressurised_wall(dx, bilayer, numerics, homeostasis, calibration, active, pressure_mmHg, name)
     out = {}
     for case, entry in cases.items():
         model = case_model(dx, bilayer, numerics, gag, entry, f"{name}_{case}")
         path = protocols.swell_pool(model, start, numerics, swelling)
         out[case] = path + list(volume_states.at_volume_ratios(model, path, volume_ratios, numerics).values())
     return out
+
+
+def pressurised_wall(
+    dx: float,
+    bilayer: dict,
+    numerics: dict,
+    homeostasis: dict,
+    calibration: dict,
+    active: bool,
+    pressure_mmHg: float,
+    name: str,
+):
+    """The converged state of the passive or ``active`` wall at particle spacing ``dx`` [um] and ``pressure_mmHg``:
+    the homeostatic state (figure 2b), then the path of the pressure-diameter sweep
+    (:func:`sphgag.studies.protocols.wall_at`)."""
+    wall = artery.bilayer_model(dict(bilayer, dx_um=float(dx)), numerics, name=name)
+    h = protocols.homeostasis(wall, numerics, homeostasis)
+    return protocols.wall_at(wall, h.state, numerics, calibration, active, pressure_mmHg)
 
 
 def case_model(dx: float, bilayer: dict, numerics: dict, gag: dict, entry: dict, name: str):

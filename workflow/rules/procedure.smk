@@ -1,0 +1,177 @@
+# The authors' explicit, fixed-step procedure beside our equilibria (target paper_procedure): figure 4's pools
+# swollen by leapfrog pseudo-dynamics at the script's step counts and at multiples of them, against the equilibrium
+# path of the same walls, at the same spacing and temperature.
+PP = config["paper_procedure"]
+PP_FACTORS = [str(f) for f in PP["step_factors"]]
+# the equilibrium runs of this target: the figure 4 protocol at its spacing, its pools and its temperature
+# (wall: what the pressurised wall depends on, the slice its saved state records)
+PP_SIMULATION = dict(
+    wall=dict(
+        dx=PP["dx_um"],
+        bilayer=config["bilayer"],
+        numerics=config["numerics"],
+        homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
+        calibration={k: config["bilayer_calibration"][k] for k in ("activation_pressure_mmHg", "activation_steps")},
+        pressure_mmHg=PP["pressure_mmHg"],
+    ),
+    gag=dict(GAG["prescribed"], temperature_K=PP["temperature_K"]),
+    cases={c: SW["cases"][c] for c in PP["cases"]},
+)
+PP_TIMING = {k: PP[k] for k in ("time_step", "load_update_steps")}
+PP_RUN = "{model}/{case}_x{factor}"
+# the damage runs: each pool set of paper_procedure.pool_sets at each of its sigma_cr and every step factor
+PP_DAMAGE = "{poolset}/{sigma}kPa_x{factor}"
+PP_DAMAGE_RUNS = [
+    f"{name}/{sigma:g}kPa_x{factor}"
+    for name, sigmas in PP["pool_sets"].items()
+    for sigma in sigmas
+    for factor in PP_FACTORS
+]
+
+
+wildcard_constraints:
+    factor="|".join(PP_FACTORS),
+
+
+rule procedure_equilibrium:
+    """The {model} wall at the procedure's spacing and pressure (equilibrium, saved for the explicit runs) and
+    figure 4's equilibrium path of each of its pools, measured."""
+    input:
+        code=SPHGAG,
+    output:
+        start=f"results/paper_procedure/{{model}}/start.npz",
+        table=f"results/paper_procedure/{{model}}/equilibrium.csv",
+        provenance="results/provenance/procedure_equilibrium_{model}.json",
+    log:
+        "logs/paper_procedure/{model}/equilibrium.log",
+    benchmark:
+        "results/benchmarks/procedure_equilibrium_{model}.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=20,
+        mem_mb=1500,
+    params:
+        **PP_SIMULATION,
+        settings=dict(SWELL_SETTINGS, pool_model="particles"),
+        probe_length=SW["probe_length_um"],
+    script:
+        "../scripts/procedure_equilibrium.py"
+
+
+rule procedure_explicit:
+    """Figure 4's pool {case} in the {model} wall by the explicit procedure, every stage's steps times {factor}:
+    the recorded states and their pool stresses, residuals and kinetic energies."""
+    input:
+        code=SPHGAG,
+        start=rules.procedure_equilibrium.output.start,
+    output:
+        states=f"results/paper_procedure/states/{PP_RUN}.npz",
+        table=f"results/paper_procedure/runs/{PP_RUN}.csv",
+        provenance=f"results/provenance/procedure_explicit_{flat(PP_RUN)}.json",
+    log:
+        f"logs/paper_procedure/{PP_RUN}.log",
+    benchmark:
+        f"results/benchmarks/procedure_explicit_{flat(PP_RUN)}.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=lambda wildcards: 5 + 4 * int(wildcards.factor),
+        mem_mb=1500,
+    params:
+        **PP_SIMULATION,
+        procedure=dict(timing=PP_TIMING, swelling=PP["swelling"]),
+        probe_length=SW["probe_length_um"],
+    script:
+        "../scripts/procedure_explicit.py"
+
+
+rule procedure_delaminate:
+    """The pools of set {poolset} in the passive wall at sigma_cr = {sigma} kPa by the explicit damage stage, every
+    count of steps times {factor}: one row per load update, and the saved states."""
+    input:
+        code=SPHGAG,
+        start=expand(rules.procedure_equilibrium.output.start, model="passive"),
+    output:
+        states=f"results/paper_procedure/states/{PP_DAMAGE}.npz",
+        table=f"results/paper_procedure/damage/{PP_DAMAGE}.csv",
+        provenance=f"results/provenance/procedure_delaminate_{flat(PP_DAMAGE)}.json",
+    log:
+        f"logs/paper_procedure/{PP_DAMAGE}.log",
+    benchmark:
+        f"results/benchmarks/procedure_delaminate_{flat(PP_DAMAGE)}.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=lambda wildcards: 5 + 5 * int(wildcards.factor),
+        mem_mb=1500,
+    params:
+        wall=PP_SIMULATION["wall"],
+        gag=PP_SIMULATION["gag"],
+        pools=lambda wildcards: config["delamination"]["pool_sets"][wildcards.poolset],
+        delamination=DE_SETTINGS,
+        criterion=config["delamination"]["criteria"][0],
+        procedure=dict(timing=PP_TIMING, damage=PP["damage"]),
+    script:
+        "../scripts/procedure_delaminate.py"
+
+
+rule procedure_summary:
+    """Every explicit run's states in one table, and figure 4's quantities at the top of the paper's range by path
+    (equilibrium, explicit at each step factor) with their residuals."""
+    input:
+        code=MODULES["studies/paper_procedure.py"],
+        equilibrium=expand(rules.procedure_equilibrium.output.table, model=PP["models"]),
+        runs=expand(rules.procedure_explicit.output.table, model=PP["models"], case=PP["cases"], factor=PP_FACTORS),
+        damage=[f"results/paper_procedure/damage/{run}.csv" for run in PP_DAMAGE_RUNS],
+    output:
+        runs="results/paper_procedure/explicit.csv",
+        damage="results/paper_procedure/damage.csv",
+        table=report(
+            "results/paper_procedure/summary.csv",
+            caption="../report/paper_procedure_table.rst",
+            category="6 Procedure",
+            labels={"result": "The explicit procedure against the equilibria (table)"},
+        ),
+    log:
+        "logs/paper_procedure/summary.log",
+    benchmark:
+        "results/benchmarks/procedure_summary.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    params:
+        concentration=SW["max_concentration_mEq_l"],
+    script:
+        "../scripts/procedure_summary.py"
+
+
+rule procedure_figure:
+    """The explicit procedure against the equilibria: figure 4's tip and top stresses and the residual against
+    concentration, per pool, wall and step factor."""
+    input:
+        code=VIEWS["procedure"],
+        equilibrium=rules.procedure_summary.input.equilibrium,
+        runs=rules.procedure_summary.output.runs,
+        damage=rules.procedure_summary.output.damage,
+        summary=rules.procedure_summary.output.table,
+    output:
+        report(
+            "figures/paper_procedure.png",
+            caption="../report/paper_procedure.rst",
+            category="6 Procedure",
+            labels={"figure": "The paper's explicit procedure against the equilibria"},
+        ),
+    log:
+        "logs/paper_procedure/figure.log",
+    benchmark:
+        "results/benchmarks/procedure_figure.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    params:
+        tolerance=config["numerics"]["tolerance"],
+        concentration=SW["max_concentration_mEq_l"],
+    script:
+        "../scripts/procedure_figure.py"
