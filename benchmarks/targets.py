@@ -23,6 +23,7 @@ ORDER = (
     "fracture_energy",
     "docs",
     "views",
+    "paper_procedure",
     "resolution",
     "verification",
     "sensitivity",

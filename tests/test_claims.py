@@ -5,6 +5,7 @@ from dataclasses import replace
 
 import numpy as np
 import pandas as pd
+import pytest
 
 from sphgag.studies import claims
 
@@ -62,7 +63,7 @@ def test_pool_claims_are_one_row_per_claim_law_and_pool_model():
     pairs = [("prescribed", "particles"), ("conserved", "particles"), ("prescribed", "cavity")]
     found = claims.by_law(pairs, lambda law, pool: claims.swelling_claims(claims.of_law(tips, law, pool), CASES, 150.0))
     table = claims.table(found)
-    assert list(table.columns[:3]) == ["claim_id", "charge_law", "pool_model"]
+    assert list(table.columns[:4]) == ["claim_id", "charge_law", "pool_model", "path"]
     assert list(table.claim_id[:6]) == ["C6"] * 3 + ["C7"] * 3
     assert list(zip(table.charge_law[:3], table.pool_model[:3])) == pairs
     c8 = table[(table.claim_id == "C8") & (table.pool_model == "particles")].set_index("charge_law")
@@ -216,3 +217,44 @@ def test_a_figure_4_claim_holds_only_if_it_holds_at_every_spacing_and_extrapolat
     assert [c.holds for c in alone] == [c.holds for c in claims.swelling_claims(tips, CASES, 150.0)]
     other = claims.across_band(replace(e, resolution=resolution.iloc[:0]), claims.swelling_claims(tips, CASES, 150.0))
     assert all(c.across_band.startswith("not in the resolution study") for c in other)
+
+
+def _procedure_summary():
+    """A summary of target paper_procedure (sphgag.studies.paper_procedure.summary): figure 4's tip stress by the
+    equilibrium and two explicit paths, figure 5's runs at two sigma_cr and a pool pair's."""
+    rows = []
+    for path, factor, tips in (("equilibrium", np.nan, (120.0, 300.0)), ("explicit", 1, (60.0, 90.0)),
+                               ("explicit", 4, (40.0, 80.0))):  # fmt: skip
+        for case, tip in zip(("I", "IV"), tips):
+            rows.append(dict(figure="4", model="passive", pool=case, sigma_cr_kPa=np.nan, path=path, step_factor=factor,
+                             quantity="tip_radial_stress_kPa", value=tip, residual=0.5))  # fmt: skip
+    for factor, (fast, slow) in ((1, (3.0, 1.0)), (4, (2.0, 1.5))):
+        for sigma, rate, teeth in ((30.0, fast, 3), (60.0, slow, 1)):
+            for quantity, value in (("growth_rate_um_per_time", rate), ("teeth", teeth)):
+                rows.append(dict(figure="5", model="passive", pool="single", sigma_cr_kPa=sigma, path="explicit",
+                                 step_factor=factor, quantity=quantity, value=value, residual=2.0))  # fmt: skip
+        for quantity, value in (("interior_particles", 5.0), ("exterior_particles", 9.0 - factor)):
+            rows.append(dict(figure="6", model="passive", pool="pair", sigma_cr_kPa=40.0, path="explicit",
+                             step_factor=factor, quantity=quantity, value=value, residual=3.0))  # fmt: skip
+    return pd.DataFrame(rows)
+
+
+def test_the_procedure_claims_judge_every_path_with_its_residual():
+    evidence = claims.Evidence(procedure=_procedure_summary())
+    found = {(c.claim_id, c.path): c for c in claims.procedure_claims(evidence, [])}
+    assert found["P1", "equilibrium"].holds == "no" and found["P1", "explicit x1"].holds == "yes"
+    assert found["P1", "explicit x4"].holds == "no" and found["P1", "explicit x4"].margin == pytest.approx(-10.0)
+    assert "residual 0.5" in found["P1", "explicit x1"].our_value
+    assert found["P2", "explicit x1"].holds == "no"  # 1 tooth at 60 kPa
+    assert found["P3", "explicit x1"].holds == "yes" and found["P3", "explicit x4"].holds == "no"  # ratios 3, 1.33
+    assert found["P4", "explicit x1"].holds == "yes" and found["P4", "explicit x4"].holds == "no"  # 8 > 5, 5 = 5
+
+
+def test_the_procedure_claims_stand_beside_the_equilibriums_and_say_when_not_run():
+    c14 = claims.Claim("C14", "sawtooth", "", "30 kPa 4 drops", "yes", "two drops", charge_law="prescribed")
+    rows = claims.procedure_claims(claims.Evidence(procedure=_procedure_summary()), [c14])
+    p2 = [c for c in rows if c.claim_id == "P2"]
+    assert p2[0].path == "equilibrium" and p2[0].holds == "yes" and p2[0].our_value.startswith("C14: ")
+    missing = claims.procedure_claims(claims.Evidence(), [])
+    assert [c.holds for c in missing] == ["not run"] * 4
+    assert all("snakemake paper_procedure" in c.our_value for c in missing)

@@ -360,8 +360,16 @@ def test_outputs_follow_the_data_contracts(workdir, ci_config):
     assert sorted(claims[claims.claim_id == "C18"].charge_law) == sorted(ci_config["gag"]["charge_laws"])
     calibration = claims.claim_id.isin([f"C{k}" for k in range(1, 6)])
     assert set(claims[calibration].charge_law) == {"-"}
-    pool = claims[~calibration & (claims.pool_model == PAPER_POOL)]  # C6-C17: one row per claim and law
-    assert all(sorted(rows.charge_law) == sorted(laws) for _, rows in pool.groupby("claim_id"))
+    equilibrium = claims.path == "equilibrium"
+    pool = claims[~calibration & (claims.pool_model == PAPER_POOL) & claims.claim_id.str.startswith("C")]
+    assert all(sorted(rows.charge_law) == sorted(laws) for _, rows in pool.groupby("claim_id"))  # C6-C18: per law
+    assert (pool.path == "equilibrium").all()
+    # target paper_procedure: P1-P4 by every explicit path (the paper's law), beside the equilibrium's verdict
+    procedure = claims[claims.claim_id.str.startswith("P")]
+    factors = ci_config["paper_procedure"]["step_factors"]
+    assert set(procedure.claim_id) == {"P1", "P2", "P3", "P4"} and set(procedure.charge_law) == {"prescribed"}
+    assert set(procedure[procedure.claim_id == "P1"].path) == {"equilibrium", *(f"explicit x{f}" for f in factors)}
+    assert set(procedure[~equilibrium].holds) <= {"yes", "no", "n/a"}
     # target variants: the claims of figure 4 under every other pool model, under each law it carries
     variant_claims = pd.read_csv(workdir / "results/variants/claims.csv", keep_default_na=False)
     paper = variant_claims[variant_claims.pool_model == PAPER_POOL].reset_index(drop=True)

@@ -63,7 +63,7 @@ VIEWS = {
     family: [MODULES["views/style.py"], MODULES["physics/donnan.py"], MODULES[f"views/{family}.py"]]
     for family in FIGURE_FAMILIES
 }
-CLAIMS = MODULES["studies/claims.py"]
+CLAIMS = [MODULES["studies/claims.py"], MODULES["physics/donnan.py"]]  # the claims and the paper's charge law
 SENSITIVITY = MODULES["studies/sensitivity.py"]  # the indices, not the samples' simulations
 PARAVIEW = MODULES["views/paraview.py"]
 

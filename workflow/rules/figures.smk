@@ -178,6 +178,7 @@ rule claims:
         sensitivity=study_input(lambda: rules.sensitivity_tables.output.samples, "sensitivity"),
         band=study_input(lambda: rules.swelling_gci.output.band, "resolution"),
         resolution=study_input(lambda: rules.swelling_convergence.output[0], "resolution"),
+        procedure=study_input(lambda: rules.procedure_summary.output.table, "paper_procedure"),
     output:
         table=report(
             "results/claims.csv",
@@ -201,6 +202,7 @@ rule claims:
         sensitivity=study_evidence(lambda: rules.sensitivity_tables.output.samples, "sensitivity"),
         band=study_evidence(lambda: rules.swelling_gci.output.band, "resolution"),
         resolution=study_evidence(lambda: rules.swelling_convergence.output[0], "resolution"),
+        procedure=study_evidence(lambda: rules.procedure_summary.output.table, "paper_procedure"),
         study_pressure=config["swelling_convergence"]["pressure_mmHg"],
     script:
         "../scripts/claims.py"

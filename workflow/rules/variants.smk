@@ -136,6 +136,7 @@ use rule claims as variants_claims with:
         sensitivity=study_input(lambda: rules.sensitivity_tables.output.samples, "sensitivity"),
         band=study_input(lambda: rules.swelling_gci.output.band, "resolution"),
         resolution=study_input(lambda: rules.swelling_convergence.output[0], "resolution"),
+        procedure=study_input(lambda: rules.procedure_summary.output.table, "paper_procedure"),
     output:
         table=report(
             "results/variants/claims.csv",

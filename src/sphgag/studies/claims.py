@@ -23,6 +23,8 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 import pandas as pd
 
+from ..physics.donnan import PAPER_LAW  # Pi(c) prescribed, eqs. 2.25-2.27 as printed
+
 #: the paper's pool model (sphgag.studies.protocols.POOL_MODELS): the pool's GAG particles carry eq. (2.27)
 PAPER_POOL = "particles"
 
@@ -39,6 +41,7 @@ class Claim:
     pool_model: str = "-"  # a pool claim's pool model (sphgag.studies.protocols.POOL_MODELS); "-": no pool
     margin: float = np.nan  # the criterion's smallest slack in its unit (kPa for C6-C12): > 0 where it holds
     across_band: str = "-"  # C6-C12: the verdict and margin at every spacing of the resolution study and extrapolated
+    path: str = "equilibrium"  # how the states were reached: equilibrium, or the authors' explicit procedure (P1-P4)
 
 
 @dataclass(frozen=True)
@@ -52,8 +55,9 @@ class Evidence:
     the onset ``criteria`` (the first is the default) and the pool sets' roles ``figures`` (``delamination.figures``).
     Other targets: ``sensitivity`` (sensitivity/samples.csv, target ``sensitivity``), ``resolution`` and ``band``
     (swelling/convergence.csv and gci_band.csv, target ``resolution``: figure 4's resolution study at
-    ``study_pressure``, :func:`across_band`); :data:`TARGETS` names the target that makes each of these, for the rows
-    of a claim whose evidence is missing.
+    ``study_pressure``, :func:`across_band`), ``procedure`` (paper_procedure/summary.csv, target
+    ``paper_procedure``: the authors' explicit procedure, :data:`PROCEDURE`); :data:`TARGETS` names the target that
+    makes each of these, for the rows of a claim whose evidence is missing.
     """
 
     mean: pd.DataFrame | None = None
@@ -72,6 +76,7 @@ class Evidence:
     resolution: pd.DataFrame | None = None
     band: pd.DataFrame | None = None
     study_pressure: float | None = None
+    procedure: pd.DataFrame | None = None
 
     def of_law(self, law: str, pool_model: str = PAPER_POOL) -> Evidence:
         """The evidence of one charge law and pool model: its rows of the pool tables (columns ``charge_law`` and,
@@ -90,7 +95,12 @@ class Evidence:
 
 
 #: the evidence the default target does not make, by the Evidence field that holds it, and the target that makes it
-TARGETS = {"sensitivity": "sensitivity", "resolution": "resolution", "band": "resolution"}
+TARGETS = {
+    "sensitivity": "sensitivity",
+    "resolution": "resolution",
+    "band": "resolution",
+    "procedure": "paper_procedure",
+}
 
 
 def _yes(flag) -> str:
@@ -644,6 +654,141 @@ SENSITIVITY = [c18_onset_across_inputs]
 POOL = SWELLING + DELAMINATION + SENSITIVITY
 
 
+# -- the authors' explicit procedure beside the equilibria (target paper_procedure) ----------------------------------
+
+
+def _read(e: Evidence, figure: str, quantity: str) -> pd.DataFrame:
+    """The rows of the procedure's summary (sphgag.studies.paper_procedure.summary) of ``figure`` and ``quantity``."""
+    t = e.procedure
+    return t[(t.figure.astype(str) == figure) & (t.quantity == quantity)]
+
+
+def _by_path(rows: pd.DataFrame):
+    """``(path name, its rows)``: the equilibrium, then the explicit runs by step factor."""
+    for path, g in rows.groupby(["path", "step_factor"], sort=False, dropna=False):
+        name = "equilibrium" if path[0] == "equilibrium" else f"explicit x{path[1]:g}"
+        yield name, g
+
+
+def _residuals(g: pd.DataFrame) -> str:
+    lo, hi = g.residual.min(), g.residual.max()
+    return f"residual {lo:.2g}" if np.isclose(lo, hi) else f"residual {lo:.2g}-{hi:.2g}"
+
+
+def p1_magnitudes(e: Evidence) -> list[Claim]:
+    """The tip radial stress at 150 mEq/l is about 50-150 kPa in every pool (figure 4's magnitudes)."""
+    out = []
+    for path, g in _by_path(_read(e, "4", "tip_radial_stress_kPa")):
+        v = g.value.to_numpy(dtype=float)
+        margin = float(min(v.min() - 50.0, 150.0 - v.max()))
+        out.append(Claim(
+            "P1",
+            p1_magnitudes.__doc__.splitlines()[0],
+            '"typically exceeding approximately 50 kPa" above 100 mEq/l; about 50-150 kPa at 150 mEq/l (figure 4)',
+            f"{v.min():.0f} to {v.max():.0f} kPa over {len(v)} pools and walls ({_residuals(g)})",
+            _yes(margin >= 0.0),
+            "every pool and wall at 150 mEq/l within 50-150 kPa; the equilibrium at the procedure's spacing and "
+            "temperature (paper_procedure)",
+            margin=margin,
+            path=path,
+        ))  # fmt: skip
+    return out
+
+
+def _damage_rows(e: Evidence, quantity: str, figure: str = "5") -> pd.DataFrame:
+    return _read(e, figure, quantity).sort_values("sigma_cr_kPa")
+
+
+def p2_sawtooth(e: Evidence) -> list[Claim]:
+    """The tip stress rises and drops repeatedly, a sawtooth (figure 5b)."""
+    out = []
+    for path, g in _by_path(_damage_rows(e, "teeth")):
+        teeth = ", ".join(f"{r.sigma_cr_kPa:g} kPa {r.value:.0f} teeth" for r in g.itertuples())
+        out.append(Claim(
+            "P2",
+            p2_sawtooth.__doc__.splitlines()[0],
+            "figure 5b (C14)",
+            f"{teeth} (median {_residuals(g)})",
+            _yes(len(g) and (g.value >= 2).all()),
+            "at least two ruptures, each followed by a drop of the tip stress by > 10 % of sigma_cr before the next, "
+            "in every run of figure 5's pool",
+            path=path,
+        ))  # fmt: skip
+    return out
+
+
+def p3_rate_ratio(e: Evidence) -> list[Claim]:
+    """Raising sigma_cr from 30 to 60 kPa slows propagation more than twofold (figure 5b)."""
+    out = []
+    for path, g in _by_path(_damage_rows(e, "growth_rate_um_per_time")):
+        lo, hi = g.iloc[0], g.iloc[-1]
+        ratio = lo.value / hi.value if hi.value > 0 else np.inf
+        rates = ", ".join(f"{r.sigma_cr_kPa:g} kPa {r.value:.3g} um" for r in g.itertuples())
+        out.append(Claim(
+            "P3",
+            p3_rate_ratio.__doc__.splitlines()[0],
+            '"increases from sigma_cr = 30 kPa to 60 kPa reduce the rate of GAG propagation by more than two-fold" '
+            "(figure 5b; C15)",
+            f"{rates} per unit pseudo-time; ratio {ratio:.2f} (median {_residuals(g)})",
+            _yes(ratio > 2.0) if len(g) > 1 else "n/a",
+            "the mean rate of growth of the delaminated length (first rupture to the run's end) at the lowest sigma_cr "
+            "over that at the highest exceeds 2",
+            margin=float(ratio - 2.0) if len(g) > 1 else np.nan,
+            path=path,
+        ))  # fmt: skip
+    return out
+
+
+def p4_exterior_faster(e: Evidence) -> list[Claim]:
+    """Two nearby pools grow faster outwards than towards each other (figure 6)."""
+    interior, exterior = _damage_rows(e, "interior_particles", "6"), _damage_rows(e, "exterior_particles", "6")
+    out = []
+    for (path, gi), (_, ge) in zip(_by_path(interior), _by_path(exterior)):
+        pairs = list(zip(gi.itertuples(), ge.itertuples()))
+        text = ", ".join(f"{i.pool} at {i.sigma_cr_kPa:g} kPa: interior {i.value:.0f} / exterior {x.value:.0f}"
+                         for i, x in pairs)  # fmt: skip
+        out.append(Claim(
+            "P4",
+            p4_exterior_faster.__doc__.splitlines()[0],
+            '"the rate of the exterior growth is faster" (figure 6; C16)',
+            f"{text} converted particles at the run's end ({_residuals(gi)})",
+            _yes(all(x.value > i.value for i, x in pairs)),
+            "more exterior than interior converted particles at the end of every pool-pair run",
+            path=path,
+        ))  # fmt: skip
+    return out
+
+
+#: the paper's figure 4-6 features by the authors' explicit procedure (target paper_procedure), one row per path
+PROCEDURE = [p1_magnitudes, p2_sawtooth, p3_rate_ratio, p4_exterior_faster]
+#: the equilibrium's claim of each procedure claim that has one (its verdict stands beside the explicit paths')
+PROCEDURE_EQUILIBRIUM = {"P2": "C14", "P3": "C15", "P4": "C16"}
+
+
+def procedure_claims(e: Evidence, found: list[Claim]) -> list[Claim]:
+    """The procedure claims (:data:`PROCEDURE`, the paper's law and pool): the equilibrium's own verdict where
+    ``found`` (the claims of the paper's law) has its counterpart, then every explicit path's; ``not run`` until
+    target paper_procedure has run."""
+
+    def bare(k, fn, our_value="", holds="", path="equilibrium"):
+        return Claim(f"P{k + 1}", fn.__doc__.splitlines()[0], "", our_value, holds, "", path=path)
+
+    if e.procedure is None:
+        return [e.not_run(bare(k, fn), "procedure") for k, fn in enumerate(PROCEDURE)]
+    equilibrium = {c.claim_id: c for c in found}
+    out = []
+    for k, fn in enumerate(PROCEDURE):
+        no_run = "n/a: the configuration runs none of its pools (paper_procedure.cases, paper_procedure.pool_sets)"
+        rows = fn(e) or [bare(k, fn, our_value=no_run, holds="n/a", path="explicit")]
+        twin = PROCEDURE_EQUILIBRIUM.get(rows[0].claim_id)
+        if twin in equilibrium:
+            c = equilibrium[twin]
+            verdict = dict(our_value=f"{twin}: {c.our_value}", holds=c.holds, criterion=f"as {twin}: {c.criterion}")
+            rows.insert(0, replace(rows[0], **verdict, margin=c.margin, path="equilibrium"))
+        out += rows
+    return out
+
+
 def _found(claims, e: Evidence) -> list[Claim]:
     """The claims of ``claims`` that ``e`` has the data for."""
     return [c for c in (claim(e) for claim in claims) if c is not None]
@@ -747,7 +892,10 @@ def evaluate(e: Evidence, laws) -> list[Claim]:
         of = e.of_law(law, pool)
         return across_band(of, _found(POOL if pool == PAPER_POOL else SWELLING, of))
 
-    return _found(CALIBRATION, e) + by_law(variants(e.tips, laws), pool_claims)
+    found = _found(CALIBRATION, e) + by_law(variants(e.tips, laws), pool_claims)
+    paper = [c for c in found if c.charge_law == PAPER_LAW and c.pool_model == PAPER_POOL]
+    procedure = [replace(c, charge_law=PAPER_LAW, pool_model=PAPER_POOL) for c in procedure_claims(e, paper)]
+    return found + procedure
 
 
 def variants(tips: pd.DataFrame | None, laws) -> list[tuple[str, str]]:
@@ -797,6 +945,7 @@ COLUMNS = [
     "claim_id",
     "charge_law",
     "pool_model",
+    "path",
     "statement",
     "paper_value",
     "our_value",
@@ -812,6 +961,8 @@ def table(claims: list[Claim]) -> pd.DataFrame:
 
 
 def markdown(df: pd.DataFrame) -> str:
+    if "path" not in df:  # a table written before the procedure claims: every claim on the equilibria
+        df = df.assign(path="equilibrium")
     lines = [
         "# The paper's claims against our numbers",
         "",
@@ -834,12 +985,18 @@ def markdown(df: pd.DataFrame) -> str:
         "beside the widest GCI band among the values the claim reads. A margin smaller than that band is not "
         "resolved by the discretisation.",
         "",
-        "| id | charge law | pool model | claim | paper | ours | holds | criterion | margin | across the band |",
-        "|---|---|---|---|---|---|---|---|---|---|",
+        "The procedure claims (P1-P4) read the same features of figures 4-6 on the authors' explicit, fixed-step "
+        "procedure (target `paper_procedure`: leapfrog pseudo-dynamics with the script's mass scaling and step "
+        "counts, and 4 and 16 times as many steps), beside the equilibrium's verdict (P1: the equilibrium at the "
+        "procedure's spacing and temperature; P2-P4: the equilibrium's C14-C16). `ours` quotes the residual at which "
+        "each number was read: an explicit state's residual above the solver tolerance (1e-4) is not an equilibrium.",
+        "",
+        "| id | charge law | pool model | path | claim | paper | ours | holds | criterion | margin | across the band |",
+        "|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     for r in df.itertuples():
         lines.append(
-            f"| {r.claim_id} | {r.charge_law} | {r.pool_model} | {r.statement} | {r.paper_value} | {r.our_value} | "
-            f"**{r.holds}** | {r.criterion} | {_margin(r.margin)} | {r.across_band} |"
+            f"| {r.claim_id} | {r.charge_law} | {r.pool_model} | {r.path} | {r.statement} | {r.paper_value} | "
+            f"{r.our_value} | **{r.holds}** | {r.criterion} | {_margin(r.margin)} | {r.across_band} |"
         )
     return "\n".join(lines) + "\n"

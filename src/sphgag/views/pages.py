@@ -297,6 +297,8 @@ def holds_table(claims: pd.DataFrame, pool_model: str = "particles") -> str:
     """What holds and what does not: per charge law, the claims (of the pool model ``pool_model`` where a claim is
     about a pool) that hold, that do not, and that could not be judged (``n/a`` or not run)."""
     rows = ["| law | holds | does not hold | not judged |", "|" + " --- |" * 4]
+    if "path" in claims:  # the claims on the equilibria (the procedure's are in procedure_table)
+        claims = claims[claims.path.fillna("equilibrium") == "equilibrium"]
     general = claims[claims.charge_law == "-"]
     laws = [law for law in dict.fromkeys(claims.charge_law) if law != "-"]
     for law in laws:
@@ -339,6 +341,16 @@ class Section:
     target: str = "all"
 
 
+def procedure_table(claims: pd.DataFrame) -> str:
+    """The paper's features of figures 4-6 by the authors' explicit procedure beside the equilibrium (claims P1-P4):
+    per feature and path, our numbers with the residual they were read at, and whether the feature holds."""
+    rows = ["| feature | path | ours | holds |", "|" + " --- |" * 4]
+    mine = claims[claims.claim_id.str.startswith("P")] if "path" in claims else claims.iloc[:0]
+    for r in mine.itertuples():
+        rows.append(f"| {r.claim_id}: {r.statement} | {r.path} | {r.our_value} | {r.holds} |")
+    return "\n".join(rows)
+
+
 def _claims_page(table: pd.DataFrame) -> str:
     return claims_.markdown(table)
 
@@ -365,6 +377,7 @@ PAGES: dict[str, tuple[str, tuple[str, ...], tuple[Section, ...]]] = {
         (
             Section("Figure 4's runs", "tips", figure4_runs_table),
             Section("Claims C6-C12 across the resolution band", "claims", figure4_claims_table),
+            Section("The paper's explicit procedure beside the equilibria (P1-P4)", "claims", procedure_table),
             Section(
                 "Resolution study: observed order, extrapolation and GCI",
                 "swelling_gci",

@@ -61,16 +61,24 @@ def _damage(fig, groups, colours, tolerance):
                 ax.plot(r.pseudo_time / factor, r[column], color=colours[factor], lw=0.8, label=f"explicit x{factor:g}")
             if column == "tip_radial_stress_kPa":
                 ax.axhline(sigma, color="k", lw=0.8, ls="--", label="sigma_cr")
-            if column == "residual":
-                ax.set_yscale("log")
-                ax.axhline(tolerance, color="grey", lw=0.8, ls=":", label="solver tolerance")
-            if row == 0:
-                ax.set_title(f"{pool_set}, sigma_cr = {sigma:g} kPa")
-            if col == 0:
-                ax.set_ylabel(label)
-            if row == len(DAMAGE_ROWS) - 1:
-                ax.set_xlabel("pseudo-time / step factor")
+            _dress(axes, row, col, column, label, f"{pool_set}, sigma_cr = {sigma:g} kPa", "pseudo-time / step factor",
+                   tolerance)  # fmt: skip
     axes[0, -1].legend(fontsize=6, frameon=False)
+
+
+def _dress(axes, row, col, column, label, title, xlabel, tolerance):
+    """The axes at ``(row, col)``: a residual on a log scale with the solver's tolerance, the column's title on the
+    first row, the row's label on the first column, ``xlabel`` on the last row."""
+    ax = axes[row, col]
+    if column == "residual":
+        ax.set_yscale("log")
+        ax.axhline(tolerance, color="grey", lw=0.8, ls=":", label="solver tolerance")
+    if row == 0:
+        ax.set_title(title)
+    if col == 0:
+        ax.set_ylabel(label)
+    if row == axes.shape[0] - 1:
+        ax.set_xlabel(xlabel)
 
 
 def _swelling(fig, cases, equilibrium, runs, colours, tolerance, concentration):
@@ -91,13 +99,5 @@ def _swelling(fig, cases, equilibrium, runs, colours, tolerance, concentration):
                     if len(r):
                         ax.plot(r.concentration_mEq_l, r[column], line, color=colours[factor], lw=1.0,
                                 label=f"explicit x{factor:g}, {wall}")  # fmt: skip
-            if column == "residual":
-                ax.set_yscale("log")
-                ax.axhline(tolerance, color="grey", lw=0.8, ls=":", label="solver tolerance")
-            if row == 0:
-                ax.set_title(f"case {case}")
-            if col == 0:
-                ax.set_ylabel(label)
-            if row == len(ROWS) - 1:
-                ax.set_xlabel(style.GAG_CONCENTRATION)
+            _dress(axes, row, col, column, label, f"case {case}", style.GAG_CONCENTRATION, tolerance)
     axes[-1, -1].legend(fontsize=6, frameon=False)
