@@ -233,21 +233,30 @@ def _procedure_summary():
             for quantity, value in (("growth_rate_um_per_time", rate), ("teeth", teeth)):
                 rows.append(dict(figure="5", model="passive", pool="single", sigma_cr_kPa=sigma, path="explicit",
                                  step_factor=factor, quantity=quantity, value=value, residual=2.0))  # fmt: skip
-        for quantity, value in (("interior_particles", 5.0), ("exterior_particles", 9.0 - factor)):
-            rows.append(dict(figure="6", model="passive", pool="pair", sigma_cr_kPa=40.0, path="explicit",
-                             step_factor=factor, quantity=quantity, value=value, residual=3.0))  # fmt: skip
+    return pd.DataFrame(rows)
+
+
+def _procedure_damage():
+    """Rows of a pool pair's damage runs (sphgag.studies.paper_procedure.delaminate): at x1 the exterior side leads
+    where the interior side stops growing (the merge), at x4 it trails there and overtakes only after."""
+    rows = []
+    for factor, exterior in ((1, (2, 6, 9, 12)), (4, (1, 2, 3, 12))):
+        for t, (interior, ext) in enumerate(zip((1, 3, 5, 5), exterior)):
+            rows.append(dict(pool_set="pair", sigma_cr_kPa=40.0, step_factor=factor, pseudo_time=100.0 * t,
+                             interior_particles=interior, exterior_particles=ext, residual=3.0))  # fmt: skip
     return pd.DataFrame(rows)
 
 
 def test_the_procedure_claims_judge_every_path_with_its_residual():
-    evidence = claims.Evidence(procedure=_procedure_summary())
+    evidence = claims.Evidence(procedure=_procedure_summary(), procedure_damage=_procedure_damage())
     found = {(c.claim_id, c.path): c for c in claims.procedure_claims(evidence, [])}
     assert found["P1", "equilibrium"].holds == "no" and found["P1", "explicit x1"].holds == "yes"
     assert found["P1", "explicit x4"].holds == "no" and found["P1", "explicit x4"].margin == pytest.approx(-10.0)
     assert "residual 0.5" in found["P1", "explicit x1"].our_value
     assert found["P2", "explicit x1"].holds == "no"  # 1 tooth at 60 kPa
     assert found["P3", "explicit x1"].holds == "yes" and found["P3", "explicit x4"].holds == "no"  # ratios 3, 1.33
-    assert found["P4", "explicit x1"].holds == "yes" and found["P4", "explicit x4"].holds == "no"  # 8 > 5, 5 = 5
+    assert found["P4", "explicit x1"].holds == "yes" and found["P4", "explicit x4"].holds == "no"  # 9 > 5, 3 < 5
+    assert "interior 5 / exterior 3 at pseudo-time 200" in found["P4", "explicit x4"].our_value
 
 
 def test_the_procedure_claims_stand_beside_the_equilibriums_and_say_when_not_run():

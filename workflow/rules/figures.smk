@@ -179,6 +179,7 @@ rule claims:
         band=study_input(lambda: rules.swelling_gci.output.band, "resolution"),
         resolution=study_input(lambda: rules.swelling_convergence.output[0], "resolution"),
         procedure=study_input(lambda: rules.procedure_summary.output.table, "paper_procedure"),
+        procedure_damage=study_input(lambda: rules.procedure_summary.output.damage, "paper_procedure"),
     output:
         table=report(
             "results/claims.csv",
@@ -203,6 +204,7 @@ rule claims:
         band=study_evidence(lambda: rules.swelling_gci.output.band, "resolution"),
         resolution=study_evidence(lambda: rules.swelling_convergence.output[0], "resolution"),
         procedure=study_evidence(lambda: rules.procedure_summary.output.table, "paper_procedure"),
+        procedure_damage=study_evidence(lambda: rules.procedure_summary.output.damage, "paper_procedure"),
         study_pressure=config["swelling_convergence"]["pressure_mmHg"],
     script:
         "../scripts/claims.py"

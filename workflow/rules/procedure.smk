@@ -50,8 +50,8 @@ rule procedure_equilibrium:
         "../envs/sphgag.yaml"
     threads: 1
     resources:
-        runtime=20,
-        mem_mb=1500,
+        runtime=5,
+        mem_mb=1000,
     params:
         **PP_SIMULATION,
         settings=dict(SWELL_SETTINGS, pool_model="particles"),
@@ -78,8 +78,8 @@ rule procedure_explicit:
         "../envs/sphgag.yaml"
     threads: 1
     resources:
-        runtime=lambda wildcards: 5 + 4 * int(wildcards.factor),
-        mem_mb=1500,
+        runtime=15,
+        mem_mb=1000,
     params:
         **PP_SIMULATION,
         procedure=dict(timing=PP_TIMING, swelling=PP["swelling"]),
@@ -106,8 +106,8 @@ rule procedure_delaminate:
         "../envs/sphgag.yaml"
     threads: 1
     resources:
-        runtime=lambda wildcards: 5 + 5 * int(wildcards.factor),
-        mem_mb=1500,
+        runtime=10,
+        mem_mb=1000,
     params:
         wall=PP_SIMULATION["wall"],
         gag=PP_SIMULATION["gag"],

@@ -137,6 +137,7 @@ use rule claims as variants_claims with:
         band=study_input(lambda: rules.swelling_gci.output.band, "resolution"),
         resolution=study_input(lambda: rules.swelling_convergence.output[0], "resolution"),
         procedure=study_input(lambda: rules.procedure_summary.output.table, "paper_procedure"),
+        procedure_damage=study_input(lambda: rules.procedure_summary.output.damage, "paper_procedure"),
     output:
         table=report(
             "results/variants/claims.csv",

@@ -56,7 +56,8 @@ class Evidence:
     Other targets: ``sensitivity`` (sensitivity/samples.csv, target ``sensitivity``), ``resolution`` and ``band``
     (swelling/convergence.csv and gci_band.csv, target ``resolution``: figure 4's resolution study at
     ``study_pressure``, :func:`across_band`), ``procedure`` (paper_procedure/summary.csv, target
-    ``paper_procedure``: the authors' explicit procedure, :data:`PROCEDURE`); :data:`TARGETS` names the target that
+    ``paper_procedure``: the authors' explicit procedure, :data:`PROCEDURE`; ``procedure_damage``, its damage runs'
+    rows, paper_procedure/damage.csv); :data:`TARGETS` names the target that
     makes each of these, for the rows of a claim whose evidence is missing.
     """
 
@@ -77,6 +78,7 @@ class Evidence:
     band: pd.DataFrame | None = None
     study_pressure: float | None = None
     procedure: pd.DataFrame | None = None
+    procedure_damage: pd.DataFrame | None = None
 
     def of_law(self, law: str, pool_model: str = PAPER_POOL) -> Evidence:
         """The evidence of one charge law and pool model: its rows of the pool tables (columns ``charge_law`` and,
@@ -100,6 +102,7 @@ TARGETS = {
     "resolution": "resolution",
     "band": "resolution",
     "procedure": "paper_procedure",
+    "procedure_damage": "paper_procedure",
 }
 
 
@@ -741,20 +744,29 @@ def p3_rate_ratio(e: Evidence) -> list[Claim]:
 
 def p4_exterior_faster(e: Evidence) -> list[Claim]:
     """Two nearby pools grow faster outwards than towards each other (figure 6)."""
-    interior, exterior = _damage_rows(e, "interior_particles", "6"), _damage_rows(e, "exterior_particles", "6")
+    rows = e.procedure_damage
+    pairs = rows[rows.interior_particles.notna()] if rows is not None and len(rows) else rows
     out = []
-    for (path, gi), (_, ge) in zip(_by_path(interior), _by_path(exterior)):
-        pairs = list(zip(gi.itertuples(), ge.itertuples()))
-        text = ", ".join(f"{i.pool} at {i.sigma_cr_kPa:g} kPa: interior {i.value:.0f} / exterior {x.value:.0f}"
-                         for i, x in pairs)  # fmt: skip
+    for factor, g in [] if pairs is None else pairs.groupby("step_factor", sort=True):
+        found = []
+        for (pool_set, sigma), run in g.groupby(["pool_set", "sigma_cr_kPa"], sort=False):
+            run = run.reset_index(drop=True)  # where the interior side stops growing: the pools merge
+            at = run.iloc[int(np.argmax(run.interior_particles.to_numpy() >= run.interior_particles.max()))]
+            found.append((pool_set, sigma, at))
+        text = ", ".join(
+            f"{p} at {s:g} kPa: interior {at.interior_particles:.0f} / exterior {at.exterior_particles:.0f} at "
+            f"pseudo-time {at.pseudo_time:.0f} (residual {at.residual:.2g})"
+            for p, s, at in found
+        )
         out.append(Claim(
             "P4",
             p4_exterior_faster.__doc__.splitlines()[0],
             '"the rate of the exterior growth is faster" (figure 6; C16)',
-            f"{text} converted particles at the run's end ({_residuals(gi)})",
-            _yes(all(x.value > i.value for i, x in pairs)),
-            "more exterior than interior converted particles at the end of every pool-pair run",
-            path=path,
+            text,
+            _yes(all(at.exterior_particles > at.interior_particles for *_, at in found)),
+            "more exterior than interior converted particles where the interior side stops growing (the pools merge, "
+            "as C16 reads it), in every pool-pair run",
+            path=f"explicit x{factor:g}",
         ))  # fmt: skip
     return out
 

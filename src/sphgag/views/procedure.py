@@ -39,6 +39,8 @@ def figure(equilibrium: pd.DataFrame, runs: pd.DataFrame, damage: pd.DataFrame, 
     style._style()
     cases = list(dict.fromkeys(equilibrium.case))
     groups = list(damage.groupby(["pool_set", "sigma_cr_kPa"], sort=False)) if len(damage) else []
+    # figure 5's single pools first (no interior side), each by sigma_cr, then the pool pairs of figure 6
+    groups.sort(key=lambda kv: (bool(kv[1].interior_particles.notna().any()), kv[0][0], kv[0][1]))
     factors = sorted(set(runs.step_factor) | set(damage.get("step_factor", [])))
     colours = dict(zip(factors, plt.cm.viridis(np.linspace(0.15, 0.85, len(factors)))))
     width = 2.9 * max(len(cases), len(groups))
@@ -61,9 +63,9 @@ def _damage(fig, groups, colours, tolerance):
                 ax.plot(r.pseudo_time / factor, r[column], color=colours[factor], lw=0.8, label=f"explicit x{factor:g}")
             if column == "tip_radial_stress_kPa":
                 ax.axhline(sigma, color="k", lw=0.8, ls="--", label="sigma_cr")
-            _dress(axes, row, col, column, label, f"{pool_set}, sigma_cr = {sigma:g} kPa", "pseudo-time / step factor",
+            _dress(axes, row, col, column, label, f"{pool_set}\nsigma_cr = {sigma:g} kPa", "pseudo-time / step factor",
                    tolerance)  # fmt: skip
-    axes[0, -1].legend(fontsize=6, frameon=False)
+    axes[0, -1].legend(fontsize=6, frameon=False, loc="upper left", bbox_to_anchor=(1.0, 1.0))
 
 
 def _dress(axes, row, col, column, label, title, xlabel, tolerance):
@@ -100,4 +102,4 @@ def _swelling(fig, cases, equilibrium, runs, colours, tolerance, concentration):
                         ax.plot(r.concentration_mEq_l, r[column], line, color=colours[factor], lw=1.0,
                                 label=f"explicit x{factor:g}, {wall}")  # fmt: skip
             _dress(axes, row, col, column, label, f"case {case}", style.GAG_CONCENTRATION, tolerance)
-    axes[-1, -1].legend(fontsize=6, frameon=False)
+    axes[-1, -1].legend(fontsize=6, frameon=False, loc="upper left", bbox_to_anchor=(1.0, 1.0))
