@@ -1,7 +1,7 @@
 """Cost of one step of the authors' explicit procedure (sphgag.engine.dynamics.advance), on one core.
 
 The bi-layered wall at the procedure's spacing (``paper_procedure.dx_um``, the script's resolution) and at the
-full configuration's (``bilayer.dx_um``), pressurised to the procedure's pressure with figure 4's case I converted:
+full configuration's (``bilayer.dx_um``), pressurised to the procedure's pressure (figure 4's case I seeded, at rest):
 the median time per leapfrog step without viscosity (the swelling ramp) and with it (the relaxation stages), beside
 the authors' script's 2.55 s per step at 1430 particles (55 MPI processes; reference-implementation notes).
 
@@ -59,7 +59,7 @@ def main():
         start = convergence.pressurised_wall(dx, cfg["bilayer"], numerics, cfg["homeostasis"], calibration, False,
                                              pp["pressure_mmHg"], "bench")  # fmt: skip
         model = convergence.case_model(dx, cfg["bilayer"], numerics, gag, case, "bench")
-        load = protocols.swelling_load(start.load, 1.0, 100.0)
+        load = protocols.swelling_load(start.load, 0.0, 0.0)  # the cost per step does not depend on the state
         swell, relax = (pp["swelling"][k] for k in ("swell", "relax"))
         row = dict(spacing=where, dx_um=dx, particles=model.n)
         for name, stage in (("no_viscosity", swell), ("viscosity", relax)):
