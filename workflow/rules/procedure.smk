@@ -14,7 +14,7 @@ PP_SIMULATION = dict(
         calibration={k: config["bilayer_calibration"][k] for k in ("activation_pressure_mmHg", "activation_steps")},
         pressure_mmHg=PP["pressure_mmHg"],
     ),
-    gag=dict(GAG["prescribed"], temperature_K=PP["temperature_K"]),
+    gag=canonical(dict(law_gag(config["gag"], PAPER_LAW), temperature_K=PP["temperature_K"])),  # configured or not
     cases={c: SW["cases"][c] for c in PP["cases"]},
 )
 PP_TIMING = {k: PP[k] for k in ("time_step", "load_update_steps")}
@@ -33,14 +33,37 @@ wildcard_constraints:
     factor="|".join(PP_FACTORS),
 
 
-rule procedure_equilibrium:
-    """The {model} wall at the procedure's spacing and pressure (equilibrium, saved for the explicit runs) and
-    figure 4's equilibrium path of each of its pools, measured."""
+rule procedure_start:
+    """The {model} wall at the procedure's spacing and pressure (equilibrium): the state its runs start from."""
     input:
         code=SPHGAG,
     output:
-        start=f"results/paper_procedure/{{model}}/start.npz",
-        table=f"results/paper_procedure/{{model}}/equilibrium.csv",
+        start="results/paper_procedure/{model}/start.npz",
+        provenance="results/provenance/procedure_start_{model}.json",
+    log:
+        "logs/paper_procedure/{model}/start.log",
+    benchmark:
+        "results/benchmarks/procedure_start_{model}.tsv"
+    conda:
+        "../envs/sphgag.yaml"
+    threads: 1
+    resources:
+        runtime=5,
+        mem_mb=1000,
+    params:
+        wall=PP_SIMULATION["wall"],
+    script:
+        "../scripts/procedure_start.py"
+
+
+rule procedure_equilibrium:
+    """Figure 4's equilibrium path of each of the procedure's pools in the {model} wall, at its spacing and
+    temperature, measured."""
+    input:
+        code=SPHGAG,
+        start=rules.procedure_start.output.start,
+    output:
+        table="results/paper_procedure/{model}/equilibrium.csv",
         provenance="results/provenance/procedure_equilibrium_{model}.json",
     log:
         "logs/paper_procedure/{model}/equilibrium.log",
@@ -65,7 +88,7 @@ rule procedure_explicit:
     the recorded states and their pool stresses, residuals and kinetic energies."""
     input:
         code=SPHGAG,
-        start=rules.procedure_equilibrium.output.start,
+        start=rules.procedure_start.output.start,
     output:
         states=f"results/paper_procedure/states/{PP_RUN}.npz",
         table=f"results/paper_procedure/runs/{PP_RUN}.csv",
@@ -93,7 +116,7 @@ rule procedure_delaminate:
     count of steps times {factor}: one row per load update, and the saved states."""
     input:
         code=SPHGAG,
-        start=expand(rules.procedure_equilibrium.output.start, model="passive"),
+        start=expand(rules.procedure_start.output.start, model="passive"),
     output:
         states=f"results/paper_procedure/states/{PP_DAMAGE}.npz",
         table=f"results/paper_procedure/damage/{PP_DAMAGE}.csv",
@@ -158,7 +181,8 @@ rule procedure_figure:
         damage=rules.procedure_summary.output.damage,
         summary=rules.procedure_summary.output.table,
     output:
-        report(
+        pdf="figures/paper_procedure.pdf",
+        png=report(
             "figures/paper_procedure.png",
             caption="../report/paper_procedure.rst",
             category="6 Procedure",

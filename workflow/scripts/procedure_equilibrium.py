@@ -1,8 +1,9 @@
-"""Rule procedure_equilibrium: the wall at the procedure's spacing and pressure, and figure 4's equilibrium paths."""
+"""Rule procedure_equilibrium: figure 4's equilibrium paths at the procedure's spacing and temperature."""
 
 import time
 
 from sphgag import threads
+from sphgag.engine import solver
 from sphgag.records import provenance, runlog, state
 from sphgag.studies import convergence, protocols
 
@@ -12,8 +13,8 @@ started = time.time()
 p, w, model = sm.params, sm.params.wall, sm.wildcards.model
 run = f"procedure_equilibrium_{model}"
 with runlog.run(run, sm.log[0]) as log:
-    start = convergence.pressurised_wall(**w, active=model == "active", name=run)
-    state.save(sm.output.start, start.x, start.load, w, dict(residual=start.convergence.residual))
+    saved = state.load(sm.input.start, expected_params=w)
+    start = solver.State(saved.load, saved.x, None, None)
     states = {
         case: protocols.swell_pool(convergence.case_model(w["dx"], w["bilayer"], w["numerics"], p.gag, entry,
                                                           f"{run}_{case}"), start, w["numerics"], p.settings)

@@ -12,4 +12,4 @@ with runlog.run("procedure_figure", sm.log[0]):
     equilibrium = pd.concat([pd.read_csv(f) for f in sm.input.equilibrium], ignore_index=True)
     runs, damage = pd.read_csv(sm.input.runs), pd.read_csv(sm.input.damage)
     fig = procedure.figure(equilibrium, runs, damage, sm.params.tolerance, sm.params.concentration)
-    style.save(fig, [sm.output[0]], "The paper's explicit procedure against the equilibria, sphgag")
+    style.save(fig, [sm.output.pdf, sm.output.png], "The paper's explicit procedure against the equilibria, sphgag")
