@@ -55,11 +55,7 @@ def viscous_stress(F, F_old, dt, eta, out):
 def _deformation_gradient_rows(x, pair_ptr, pair_j, pair_a, solo_ptr, solo_j, solo_a, owner, mirror, xe, FP, out):
     """``F`` of every particle (eq. 2.9) as (N, 4) rows into ``out`` (the first pass of the force kernel)."""
     n = x.shape[0]
-    for i in range(n):
-        xe[i, 0], xe[i, 1] = x[i, 0], x[i, 1]
-    for g in range(owner.shape[0]):
-        xe[n + g, 0] = mirror[g, 0] * x[owner[g], 0]
-        xe[n + g, 1] = mirror[g, 1] * x[owner[g], 1]
+    forces.extend(x, owner, mirror, xe)
     forces._deformation_gradients(xe, pair_ptr, pair_j, pair_a, solo_ptr, solo_j, solo_a, False, FP, n)
     for i in range(n):
         for k in range(4):
@@ -181,10 +177,7 @@ def advance(model: Model, motion: Motion, load: Load, steps: int, stepping: Step
         _deformation_gradient_rows(motion.x, pairs.pair_ptr, pairs.pair_j, pairs.pair_a, pairs.solo_ptr,
                                    pairs.solo_j, pairs.solo_a, pairs.ghost_owner, pairs.ghost_mirror, model._xe,
                                    np.empty((n, 12)), motion.F_old)  # fmt: skip
-    pd = (
-        pairs.pair_ptr, pairs.pair_j, pairs.pair_geo, pairs.pair_a, pairs.pair_hgc, pairs.solo_ptr, pairs.solo_j,
-        pairs.solo_geo, pairs.solo_a, pairs.solo_hgc, pairs.split, pairs.ghost_owner, pairs.ghost_mirror,
-    )  # fmt: skip
+    pd = pairs.arrays
     inner = model.layout.inner_surface
     extra = np.zeros((n, 4)) if stepping.eta > 0.0 else forces.NO_EXTRA_STRESS
     kinetic, dmin, done = leapfrog(

@@ -21,7 +21,7 @@ eq. (2.11) with the corrected gradients of eq. (2.8).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 from numba import njit, prange
@@ -65,6 +65,11 @@ class PairData:
     ghost_owner: np.ndarray
     ghost_mirror: np.ndarray
 
+    @property
+    def arrays(self) -> tuple:
+        """The fields in the order :func:`forces_and_stresses` takes them (``pair_ptr`` ... ``ghost_mirror``)."""
+        return tuple(getattr(self, f.name) for f in fields(self))
+
     @classmethod
     def pack(cls, nb, V, hgc, ah=None):
         """``ah``: the hourglass stencil's gradients (:func:`sphgag.engine.kernel.hourglass_gradients`; default the full
@@ -102,31 +107,20 @@ def evaluate_forces(x, pd: PairData, lz, cth, sth, props, xe, fe, FP, f, extra=N
     ``extra`` (N, 4), if given, is added to every particle's P before the forces
     are formed (the viscous stress of section 2.3 in :mod:`sphgag.engine.dynamics`).
     """
-    return forces_and_stresses(
-        x,
-        pd.pair_ptr,
-        pd.pair_j,
-        pd.pair_geo,
-        pd.pair_a,
-        pd.pair_hgc,
-        pd.solo_ptr,
-        pd.solo_j,
-        pd.solo_geo,
-        pd.solo_a,
-        pd.solo_hgc,
-        pd.split,
-        pd.ghost_owner,
-        pd.ghost_mirror,
-        lz,
-        cth,
-        sth,
-        props,
-        extra,
-        xe,
-        fe,
-        FP,
-        f,
-    )
+    return forces_and_stresses(x, *pd.arrays, lz, cth, sth, props, extra, xe, fe, FP, f)
+
+
+@njit(cache=True, error_model="numpy")
+def extend(x, ghost_owner, ghost_mirror, xe):
+    """``xe``: the positions ``x`` followed by their ghosts' (mirror images across the symmetry planes)."""
+    n = x.shape[0]
+    for i in range(n):
+        xe[i, 0] = x[i, 0]
+        xe[i, 1] = x[i, 1]
+    for g in range(ghost_owner.shape[0]):
+        o = ghost_owner[g]
+        xe[n + g, 0] = ghost_mirror[g, 0] * x[o, 0]
+        xe[n + g, 1] = ghost_mirror[g, 1] * x[o, 1]
 
 
 @njit(cache=True, error_model="numpy")
@@ -255,13 +249,7 @@ def forces_and_stresses(
     with det <= 0 gets NaN stress.
     """
     n = x.shape[0]
-    for i in range(n):
-        xe[i, 0] = x[i, 0]
-        xe[i, 1] = x[i, 1]
-    for g in range(ghost_owner.shape[0]):
-        o = ghost_owner[g]
-        xe[n + g, 0] = ghost_mirror[g, 0] * x[o, 0]
-        xe[n + g, 1] = ghost_mirror[g, 1] * x[o, 1]
+    extend(x, ghost_owner, ghost_mirror, xe)
     _deformation_gradients(xe, pair_ptr, pair_j, pair_a, solo_ptr, solo_j, solo_a, split, FP, n)
     dmin = _stresses(lz, cth, sth, props, extra, FP, n)
     fe[:, :] = 0.0

@@ -35,10 +35,10 @@ from ..engine.history import SEEDED, HistoryMaterial
 from ..engine.loading import Load
 from ..engine.model import Model
 from ..options import Options
-from ..physics import damage, materials
+from ..physics import materials
 from . import artery, protocols
 from .delamination.front import Front
-from .delamination.growth import intact_energy, onset_measure
+from .delamination.growth import damage_step, onset_measure, with_ruptures
 from .delamination.settings import Settings
 
 log = logging.getLogger(__name__)
@@ -283,29 +283,18 @@ class Delamination:
         """One damage update (eq. 2.28) at the state ``ev`` of step ``step``, as the quasi-static passes do
         (:class:`sphgag.studies.delamination.growth.GrowthRun`): returns the tip stress (the largest onset measure
         of the candidates) and the number of particles that ruptured, which relax from now."""
-        hist, lay = self.hist, self.model.layout
+        hist = self.hist
         cand, pools = self.front.candidates(hist)
         if not cand.size:
             return np.nan, 0
         sigma = onset_measure(self.model, ev, hist, cand, self.settings)
-        dmg = damage.DamageState(hist.D.copy(), hist.onset_stretch.copy(), hist.onset_energy.copy())
-        radial = np.full(lay.n, -np.inf)
-        radial[cand] = sigma
-        band = np.full(lay.n, np.nan)
-        band[cand] = self.front.thickness[pools]
-        W0 = intact_energy(self.model, ev, self.base(ev.load))
-        dmg.update(self.settings.law, cand, radial, damage.radial_stretch(ev.F, lay.theta), W0, band)
-        dmg.D[hist.gag] = hist.D[hist.gag]
+        dmg, _ = damage_step(self.model, self.front, self.settings, self.material, ev, (cand, pools, sigma))
         ruptured = np.flatnonzero(dmg.ruptured & ~hist.gag)
         if np.array_equal(dmg.D, hist.D) and np.array_equal(dmg.onset_stretch, hist.onset_stretch, equal_nan=True):
             return float(sigma.max()), 0
-        new = hist.with_damage(dmg.D, dmg.onset_stretch, dmg.onset_energy)
-        if ruptured.size:
-            owner = np.full(lay.n, -1)
-            owner[cand] = pools
-            new = new.rupture(ruptured, owner[ruptured], step)
-            self.concentration[ruptured] = 0.0
-            self.relax_until[ruptured] = step + stage.relax_steps * factor
+        new = with_ruptures(hist.with_damage(dmg.D, dmg.onset_stretch, dmg.onset_energy), ruptured, cand, pools, step)
+        self.concentration[ruptured] = 0.0
+        self.relax_until[ruptured] = step + stage.relax_steps * factor
         self.material = HistoryMaterial(self.base, new, self.gag)
         return float(sigma.max()), int(ruptured.size)
 

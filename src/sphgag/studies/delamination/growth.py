@@ -81,6 +81,33 @@ def intact_energy(model: Model, ev, base_props: np.ndarray) -> np.ndarray:
     return W
 
 
+def damage_step(model: Model, front: Front, settings: Settings, material: HistoryMaterial, ev, found):
+    """The damage state (eq. 2.28) that the state ``ev`` makes from the history of ``material``, and the intact energy
+    density ``W_0`` (eq. 2.23) of every particle there. ``found``: ``(candidates, their pools, their onset
+    measures)``. Only candidates start to damage; GAG particles keep their ``D``."""
+    hist, lay = material.history, model.layout
+    cand, pools, sigma = found
+    dmg = damage.DamageState(hist.D.copy(), hist.onset_stretch.copy(), hist.onset_energy.copy())
+    radial = np.full(lay.n, -np.inf)
+    radial[cand] = sigma
+    W0 = intact_energy(model, ev, material.base(ev.load))
+    band = np.full(lay.n, np.nan)
+    band[cand] = front.thickness[pools]  # the band a pool's growth converts: its radial extent
+    dmg.update(settings.law, cand, radial, damage.radial_stretch(ev.F, lay.theta), W0, band)
+    dmg.D[hist.gag] = hist.D[hist.gag]
+    return dmg, W0
+
+
+def with_ruptures(hist: ParticleHistory, ruptured: np.ndarray, cand: np.ndarray, pools: np.ndarray, step: int):
+    """``hist`` with the candidates ``ruptured`` become GAG particles of their pools (``pools``, per candidate) at
+    damage pass ``step`` (section 2.7)."""
+    if not ruptured.size:
+        return hist
+    owner = np.full(hist.n, -1)
+    owner[cand] = pools
+    return hist.rupture(ruptured, owner[ruptured], step)
+
+
 @dataclass(frozen=True)
 class DamageUpdate:
     """One damage update (eq. 2.28) from a run's current state (:meth:`GrowthRun.next_history`).
@@ -236,16 +263,8 @@ class GrowthRun:
         energy it releases at the current deformation, or, if it changes no ``D`` by more than ``damage_tolerance``
         and ruptures nothing, its new onsets alone. A query: the run does not change (:meth:`take_onsets`)."""
         hist, lay = self.hist, self.model.layout
-        cand, pools, sigma = self._front
-        ev = self.state.evaluation
-        dmg = damage.DamageState(hist.D.copy(), hist.onset_stretch.copy(), hist.onset_energy.copy())
-        radial = np.full(lay.n, -np.inf)
-        radial[cand] = sigma
-        W0 = intact_energy(self.model, ev, self.material.base(ev.load))
-        band = np.full(lay.n, np.nan)
-        band[cand] = self.front.thickness[pools]  # the band a pool's growth converts: its radial extent
-        dmg.update(self.settings.law, cand, radial, damage.radial_stretch(ev.F, lay.theta), W0, band)
-        dmg.D[hist.gag] = hist.D[hist.gag]
+        cand, pools, _ = self._front
+        dmg, W0 = damage_step(self.model, self.front, self.settings, self.material, self.state.evaluation, self._front)
         ruptured = np.flatnonzero(dmg.ruptured & ~hist.gag)
         begun = bool(np.any(~np.isnan(dmg.onset_stretch)))
         if float(np.max(dmg.D - hist.D, initial=0.0)) <= self.settings.damage_tolerance and ruptured.size == 0:
@@ -255,11 +274,8 @@ class GrowthRun:
             return DamageUpdate(None, onsets=onsets, begun=begun)
         changed = dmg.D > hist.D  # W_0 of a GAG particle need not be finite (its base material is not its own)
         released = float(np.sum((dmg.D[changed] - hist.D[changed]) * W0[changed] * lay.volume[changed]))
-        new = hist.with_damage(dmg.D, dmg.onset_stretch, dmg.onset_energy)
-        if ruptured.size:
-            owner = np.full(lay.n, -1)
-            owner[cand] = pools
-            new = new.rupture(ruptured, owner[ruptured], self.step + 1)
+        new = with_ruptures(hist.with_damage(dmg.D, dmg.onset_stretch, dmg.onset_energy), ruptured, cand, pools,
+                            self.step + 1)  # fmt: skip
         return DamageUpdate(new, released, begun=begun)
 
     def take_onsets(self, update: DamageUpdate) -> None:
