@@ -237,11 +237,11 @@ def summary(equilibrium: pd.DataFrame, swelling: pd.DataFrame, damage: pd.DataFr
 
 @dataclass
 class Delamination:
-    """Figure 5's explicit stage in progress (:meth:`run`): the wall's intact material ``base``, the pools' history
-    and material, each particle's fixed-charge concentration and the step until which it relaxes (a rupture)."""
+    """Figure 5's explicit stage in progress (:func:`delaminate`): the pools' history and material (on the wall's
+    intact material, ``material.base``), each particle's fixed-charge concentration and the step until which it
+    relaxes (a rupture)."""
 
     model: Model
-    base: object
     front: Front
     settings: Settings
     gag: materials.Gag
@@ -256,11 +256,10 @@ class Delamination:
         gag = materials.Gag.of(gag)
         if gag.law.conserves_charge:
             raise ValueError("the explicit damage stage carries the paper's prescribed law (Pi of each particle's c)")
-        base = model.props
-        material = artery.seeding(base, model.layout, sectors, gag).settled()
+        material = artery.seeding(model.props, model.layout, sectors, gag).settled()
         n = model.n
         load = protocols.swelling_load(base_load, 1.0, 0.0)
-        return cls(model, base, Front.of(model, sectors, settings), settings, gag, material, load, np.zeros(n),
+        return cls(model, Front.of(model, sectors, settings), settings, gag, material, load, np.zeros(n),
                    np.full(n, -1))  # fmt: skip
 
     @property
@@ -295,7 +294,7 @@ class Delamination:
         new = with_ruptures(hist.with_damage(dmg.D, dmg.onset_stretch, dmg.onset_energy), ruptured, cand, pools, step)
         self.concentration[ruptured] = 0.0
         self.relax_until[ruptured] = step + stage.relax_steps * factor
-        self.material = HistoryMaterial(self.base, new, self.gag)
+        self.material = HistoryMaterial(self.material.base, new, self.gag)
         return float(sigma.max()), int(ruptured.size)
 
 
