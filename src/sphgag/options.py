@@ -5,6 +5,11 @@ The package is entered with typed options: :class:`sphgag.engine.numerics.Numeri
 :class:`sphgag.studies.delamination.settings.Settings`. The pipeline keeps plain dicts where rerun detection and
 provenance read them (Snakemake ``params``, the parameters a state file records); the package builds its options from
 them with ``of``, at the functions it is entered by. A key the options do not know, or one they miss, raises naming it.
+
+Every top-level section of the configuration has its options (``SECTION`` names it), and the relations between keys
+that the JSON schema cannot express are checked beside them: :meth:`Options.problems` of each section's options reads
+the whole configuration (once it satisfies the schema) and returns what is wrong, naming the keys.
+:func:`sphgag.config.validate` calls them all.
 """
 
 from __future__ import annotations
@@ -24,10 +29,34 @@ def _frozen(value):
     return value
 
 
+def key_text(path) -> str:
+    """A configuration key's path as text: ``section.key[index].key`` (``<top level>`` for the empty path)."""
+    out = ""
+    for part in path:
+        out += f"[{part}]" if isinstance(part, int) else (f".{part}" if out else str(part))
+    return out or "<top level>"
+
+
+def file_name_problems(section: str, key: str, values) -> list[str]:
+    """The values of ``section.key`` that would give one file name (values name files as ``{value:g}``: pressures,
+    spacings, step factors, critical stresses)."""
+    problems, names = [], [f"{v:g}" for v in values]
+    for name in sorted({n for n in names if names.count(n) > 1}):
+        same = [v for v, n in zip(values, names) if n == name]
+        problems.append(f"{section}.{key}: {same} all give the file name '{name}': make them differ by more")
+    return problems
+
+
 class Options:
     """Base of the typed options (frozen dataclasses): :meth:`of` builds one from a configuration section."""
 
     SECTION: typing.ClassVar[str] = ""
+
+    @classmethod
+    def problems(cls, config: Mapping) -> list[str]:
+        """What is wrong with the relations between this section's keys and the rest of ``config``, a configuration
+        that satisfies the schema (each message names the keys); none by default."""
+        return []
 
     @classmethod
     def of(cls, value):
