@@ -88,6 +88,22 @@ class Gag(Options):
         return charge_law(self.charge_law)
 
 
+@dataclass(frozen=True)
+class GagSection(Options):
+    """The ``gag`` configuration section: the parameters of :class:`Gag` shared by every run, and the Donnan laws
+    ``charge_laws`` the runs are made under (names of :data:`sphgag.physics.donnan.LAWS`), one run each
+    (:func:`law_gag` gives the parameters of one)."""
+
+    SECTION = "gag"
+
+    shear_modulus_kPa: float
+    lame_lambda_kPa: float
+    temperature_K: float
+    bath_concentration_mEq_l: float
+    hourglass_modulus_kPa: float
+    charge_laws: tuple
+
+
 def law_gag(gag: dict, law: str) -> dict:
     """The ``gag`` parameters of one run under the charge law ``law``: the configuration's ``gag`` section without its
     list ``charge_laws``, with ``charge_law = law`` (a plain dict, as Snakemake params and state files keep it;

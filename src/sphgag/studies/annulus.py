@@ -26,16 +26,41 @@ reaches, never a state.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 import pandas as pd
 
 from ..engine import pool_volume, solver
 from ..engine.numerics import Numerics
+from ..options import Options
 from ..physics import cavity
 from . import gci, inclusion, swollen_pool
 
 POOL_MODELS = {"hole": "cavity", "particles": "particles"}  # the verification's pool model -> the engine's
 MEASURES = {"volume_ratio": "volume_ratio_exact", "lining_hoop_kPa": "lining_hoop_exact_kPa"}  # measure -> its exact
+
+
+@dataclass(frozen=True)
+class AnnulusVerification(Options):
+    """The ``verification.annulus`` configuration: a hole or pool of radius A (``radius_um``) in free elastin annuli
+    of the ``outer_ratios`` B/A, loaded to the ``fractions`` of the prescribed law's largest pressure and to
+    ``beyond`` times it, at the spacings ``dx_um``, the volume-controlled path stopped at ``max_volume_ratio``, for
+    each of ``pool_models`` (:data:`POOL_MODELS`)."""
+
+    radius_um: float
+    outer_ratios: tuple
+    fractions: tuple
+    beyond: float
+    dx_um: tuple
+    max_volume_ratio: float
+    pool_models: tuple
+
+    @classmethod
+    def problems(cls, config) -> list[str]:
+        """Particles small enough to put two rings in the hole."""
+        va = config.get("verification", {}).get("annulus", {})
+        return swollen_pool.two_rings_problems("verification.annulus", va.get("radius_um", 0.0), va.get("dx_um", []))
 
 
 def materials(pool_model: str, matrix: dict, gag: dict) -> inclusion.Materials:

@@ -20,6 +20,59 @@ from ..options import Options
 from ..physics import analytic, materials
 
 
+@dataclass(frozen=True)
+class Fibre(Options):
+    """Fung constants of a fibre family of the mean model (eq. 2.18): c1, c2 and its angle alpha to the axis."""
+
+    c1_kPa: float
+    c2: float
+    angle_deg: float = 0.0
+
+
+@dataclass(frozen=True)
+class MeanFibres(Options):
+    """The mean model's fibre families (Table 1): axial, circumferential and the +-diagonal pair."""
+
+    axial: Fibre
+    circumferential: Fibre
+    diagonal: Fibre
+
+
+@dataclass(frozen=True)
+class Mean(Options):
+    """The ``mean`` configuration section (section 2.4.1, Table 1): the mean-behaviour wall's geometry, particle
+    spacing, elastin moduli (eq. 2.18), hourglass modulus E (eq. 2.14), axial stretch and fibre families."""
+
+    SECTION = "mean"
+
+    inner_radius_um: float
+    outer_radius_um: float
+    dx_um: float
+    shear_modulus_kPa: float
+    lame_lambda_kPa: float
+    hourglass_modulus_kPa: float
+    axial_stretch: float
+    fibres: MeanFibres
+
+    @classmethod
+    def problems(cls, config) -> list[str]:
+        """The wall's outer radius beyond its inner one, and the wall at least half a particle spacing thick."""
+        problems = []
+        m = config.get("mean", {})
+        if m.get("outer_radius_um", 0) <= m.get("inner_radius_um", 0):
+            problems.append(
+                f"mean.outer_radius_um = {m.get('outer_radius_um')} must exceed "
+                f"mean.inner_radius_um = {m.get('inner_radius_um')}"
+            )
+        elif {"inner_radius_um", "outer_radius_um", "dx_um"} <= set(m):
+            if m["outer_radius_um"] - m["inner_radius_um"] < m["dx_um"] / 2:
+                problems.append(
+                    f"mean.outer_radius_um - mean.inner_radius_um = {m['outer_radius_um'] - m['inner_radius_um']:g} "
+                    f"um must be at least half the particle spacing mean.dx_um = {m['dx_um']:g} um"
+                )
+        return problems
+
+
 def mean_fibre_families(p: dict):
     """Fibre families of eq. (2.18) as ``(alpha_deg, c1, c2)``: axial, circumferential, +-diagonal."""
     f = p["fibres"]
@@ -86,6 +139,9 @@ class Active(Options):
     stretch_min: float
 
 
+THINNEST_LAYER = 0.1  # a layer (or sub-layer) as thin as this fraction of the spacing still gets its own ring
+
+
 @dataclass(frozen=True)
 class Bilayer(Options):
     """The ``bilayer`` configuration section (section 2.4.2, Table 2): the in vivo geometry, the particle spacing,
@@ -124,6 +180,101 @@ class Bilayer(Options):
     def layer_names(self) -> list[str]:
         """The distinct layer names, in the order of their first band."""
         return list(dict.fromkeys(name for name, _, _ in self.bands()))
+
+    def pool_span_text(self, lo: float, hi: float) -> str | None:
+        """``None`` if the radii ``lo``-``hi`` lie in one span of pool layers (:func:`pool_spans`), else the spans as
+        text."""
+        spans = pool_spans(self)
+        if any(a <= lo and hi <= b for a, b in spans):
+            return None
+        return f"the pool layers {', '.join(self.pool_layers)} ({'; '.join(f'{a:g}-{b:g}' for a, b in spans)} um)"
+
+    @classmethod
+    def problems(cls, config) -> list[str]:
+        """The layered wall (:meth:`wall_problems`), each layer's mass fractions and orientations (the beta factors
+        of Table 2) summing to 1, the active tone's stretches (eq. 2.24) in order, and no layer thinner than
+        :data:`THINNEST_LAYER` of the largest particle spacing it is run at (:meth:`thin_layers`)."""
+        bil = config.get("bilayer", {})
+        problems = cls.wall_problems(bil) if bil else []
+        for layer, beta in bil.get("orientations", {}).items():
+            if abs(sum(beta.values()) - 1.0) > 1e-6:
+                problems.append(
+                    f"bilayer.orientations.{layer} must sum to 1 (beta factors of Table 2), got "
+                    f"{sum(beta.values()):.6g}"
+                )
+        for layer, frac in bil.get("mass_fractions", {}).items():
+            if abs(sum(frac.values()) - 1.0) > 1e-6:
+                problems.append(f"bilayer.mass_fractions.{layer} must sum to 1, got {sum(frac.values()):.6g}")
+        act = bil.get("active", {})
+        if act and act.get("stretch_min", 0) >= act.get("stretch_max", 1):
+            problems.append(
+                f"bilayer.active.stretch_min = {act.get('stretch_min')} must be below "
+                f"bilayer.active.stretch_max = {act.get('stretch_max')}"
+            )
+        return problems + cls.thin_layers(config)
+
+    @staticmethod
+    def wall_problems(bil: Mapping) -> list[str]:
+        """The layered wall of the ``bilayer`` section ``bil``: every layer named in ``layers`` has its mass fractions
+        and orientations (and no others are given), the pool layers are layers of the wall, a layer has at most
+        :data:`sphgag.physics.materials.MAX_FAMILIES` fibre families, and the aligned radii lie inside the wall."""
+        problems, names = [], list(dict.fromkeys(band["name"] for band in bil.get("layers", [])))
+        for key in ("mass_fractions", "orientations", "pool_layers"):
+            given = bil.get(key, {})
+            for name in given:
+                if name not in names:
+                    problems.append(f"bilayer.{key}.{name} is not a layer of bilayer.layers ({', '.join(names)})")
+            if key != "pool_layers":
+                problems += [
+                    f"missing key 'bilayer.{key}.{n}': every layer of bilayer.layers needs it"
+                    for n in names
+                    if n not in given
+                ]
+        for name in names:
+            frac, beta = bil.get("mass_fractions", {}).get(name, {}), bil.get("orientations", {}).get(name, {})
+            families = 3 + int("smc" in frac) + int("circumferential" in beta)  # axial and +-diagonal collagen, ...
+            if families > materials.MAX_FAMILIES:
+                problems.append(
+                    f"bilayer.mass_fractions.{name}.smc and bilayer.orientations.{name}.circumferential: a layer "
+                    f"carries at most {materials.MAX_FAMILIES} fibre families (SMC or circumferential collagen, axial, "
+                    "two diagonal)"
+                )
+        edges = bilayer_interfaces(bil)
+        r_in, r_out = edges[0], edges[-1]
+        for k, r in enumerate(bil.get("aligned_radii_um", [])):
+            if not r_in < r < r_out:
+                problems.append(f"bilayer.aligned_radii_um[{k}] = {r} is not inside the wall ({r_in:g}-{r_out:g} um)")
+        return problems
+
+    @classmethod
+    def thin_layers(cls, config) -> list[str]:
+        """Layers (and sub-layers between ``aligned_radii_um``) thinner than :data:`THINNEST_LAYER` of the largest
+        particle spacing they are run at. Every layer gets at least one ring of particles (a lamina one particle thick
+        is fine: the three-layer wall of tests/test_bilayer.py matches its exact tube); below a tenth its cell is a
+        sliver (or, below round-off, nothing at all)."""
+        bil = config.get("bilayer", {})
+        if not {"inner_radius_um", "layers", "dx_um"} <= set(bil):
+            return []
+        spacings = [("bilayer.dx_um", bil["dx_um"])]
+        sc = config.get("swelling_convergence", {})
+        spacings += [("swelling_convergence.dx_um", dx) for dx in sc.get("dx_um", [])]
+        de_conv = config.get("delamination", {}).get("convergence", {})
+        spacings += [("delamination.convergence.dx_um", dx) for dx in de_conv.get("dx_um", [])]
+        source, dx = max(spacings, key=lambda item: item[1])
+        layers = []
+        for k, (name, a, b) in enumerate(cls.of(bil).bands()):
+            edges = sorted({a, b, *(x for x in bil.get("aligned_radii_um", []) if a < x < b)})
+            if len(edges) <= 2:  # one edge: the band is thinner than round-off
+                layers.append((f"bilayer.layers[{k}].thickness_um ({name})", bil["layers"][k]["thickness_um"]))
+            else:
+                sub = [(f"the {name} sub-layer {lo:g}-{hi:g} um", hi - lo) for lo, hi in zip(edges, edges[1:])]
+                layers += [(f"bilayer.aligned_radii_um: {text}", t) for text, t in sub]
+        return [
+            f"{name} = {thickness:g} um is thinner than a tenth of the largest particle spacing it is run at "
+            f"({source} = {dx:g} um)"
+            for name, thickness in layers
+            if thickness < THINNEST_LAYER * dx
+        ]
 
 
 def bilayer_interfaces(p: Bilayer | dict) -> list[float]:
@@ -255,6 +406,76 @@ class BilayerMaterial:
             out[:, col] = 1.0 + s * (self.target[:, col] - 1.0)
         out[self.active, materials.TACT] = a * self.p.active.max_stress_kPa
         return out
+
+
+@dataclass(frozen=True)
+class Pool(Options):
+    """A GAG pool of the configuration (``swelling.cases``, ``delamination.pool_sets``): a sector of the wall by its
+    centre (reference radius and angle) and its radial and angular extent."""
+
+    centre_radius_um: float
+    centre_angle_deg: float
+    radial_extent_um: float
+    angular_extent_deg: float
+
+    def radii(self) -> tuple[float, float]:
+        """Inner and outer reference radius [um]."""
+        return (
+            self.centre_radius_um - self.radial_extent_um / 2,
+            self.centre_radius_um + self.radial_extent_um / 2,
+        )
+
+    def angles(self) -> tuple[float, float]:
+        """First and last angle [deg]."""
+        half = self.angular_extent_deg / 2
+        return self.centre_angle_deg - half, self.centre_angle_deg + half
+
+
+def pool_placement_problems(config, pools: Mapping) -> list[str]:
+    """The pools ``pools`` (configuration entries by their key) each inside one span of pool layers of
+    ``config["bilayer"]`` and off the symmetry edges (once the wall itself is sound: :meth:`Bilayer.wall_problems`)."""
+    bil = config.get("bilayer", {})
+    if not bil or Bilayer.wall_problems(bil):
+        return []
+    problems = []
+    for name, pool in pools.items():
+        lo, hi = Pool.of(pool).radii()
+        if spans := Bilayer.of(bil).pool_span_text(lo, hi):
+            problems.append(f"{name}: radii {lo:g}-{hi:g} um leave {spans}")
+        first, last = Pool.of(pool).angles()
+        if first <= 0 or last >= 90:
+            problems.append(f"{name}: angles {first:g}-{last:g} deg reach a symmetry edge (0 or 90 deg)")
+    return problems
+
+
+def empty_pools(config) -> list[str]:
+    """Pools that hold no particle of a pool layer (the media) at a resolution they are run at (too thin or too
+    narrow for dx): figure 4's cases at ``bilayer.dx_um`` and the resolution study's spacings, the delamination sets
+    at ``bilayer.dx_um`` and figure 5's set (the set of the resolution study) at its spacings. This builds the layouts:
+    check it only for a configuration whose other relations hold."""
+    bil, out, layouts = config["bilayer"], [], {}
+    sw, de = config.get("swelling", {}), config.get("delamination", {})
+    runs = [(f"swelling.cases.{n}", pool, bil["dx_um"]) for n, pool in sw.get("cases", {}).items()]
+    runs += [
+        (f"swelling.cases.{n}", sw["cases"][n], dx)
+        for n in config.get("swelling_convergence", {}).get("cases", [])
+        for dx in config["swelling_convergence"]["dx_um"]
+        if n in sw.get("cases", {})
+    ]
+    study = de.get("figures", {}).get("fig5")  # figure 5's set is also the set of the resolution study
+    for name, pools in de.get("pool_sets", {}).items():
+        spacings = [bil["dx_um"]] + (de["convergence"]["dx_um"] if name == study else [])
+        runs += [(f"delamination.pool_sets.{name}[{k}]", pool, dx) for k, pool in enumerate(pools) for dx in spacings]
+    for name, pool, dx in runs:
+        if dx not in layouts:
+            layouts[dx] = bilayer_layout(dict(bil, dx_um=dx))
+        if not pool_sector(pool).members(layouts[dx], layer=layouts[dx].pool_layers).size:
+            out.append(
+                f"{name}: the pool holds no particle of a pool layer at dx = {dx:g} um (it is "
+                f"{pool['radial_extent_um']:g} um by {pool['angular_extent_deg']:g} deg): make it larger than "
+                "the particle spacing"
+            )
+    return sorted(set(out))
 
 
 def pool_sector(case: dict) -> geometry.Sector:

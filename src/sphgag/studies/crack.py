@@ -48,12 +48,34 @@ from ..engine.history import HistoryMaterial, ParticleHistory
 from ..engine.loading import Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
+from ..options import Options
 from ..physics import damage, fracture, materials
 from ..physics.donnan import PAPER_LAW
 from .delamination.growth import intact_energy
 from .inclusion import ExactBoundary, Materials
 
 MAX_PASSES_PER_LEVEL = 400  # damage passes at one pressure level at most (growth under pressure control runs away)
+
+
+@dataclass(frozen=True)
+class CrackVerification(Options):
+    """The ``verification.crack`` configuration: the pressurised straight crack of half-lengths ``half_lengths_um``
+    at the spacings ``dx_um`` in a block ``extent_factor`` a wide, its slit and damage band ``slit_rows`` and
+    ``band_rows`` rows thick, the fracture-energy damage law's sigma_cr and G_c, and the face pressure ramp in units of
+    Griffith's p_c (``first_pressure`` to ``last_pressure`` in ``pressure_step``), growth followed ``growth_cells``
+    cells beyond onset."""
+
+    half_lengths_um: tuple
+    dx_um: tuple
+    extent_factor: float
+    slit_rows: int
+    band_rows: int
+    critical_stress_kPa: float
+    fracture_energy_J_m2: float
+    first_pressure: float
+    last_pressure: float
+    pressure_step: float
+    growth_cells: int
 
 
 @dataclass(frozen=True)

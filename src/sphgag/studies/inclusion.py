@@ -46,7 +46,21 @@ from ..engine import kernel, measure, solver
 from ..engine.loading import Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
+from ..options import Options
 from ..physics import inglis, materials
+
+
+@dataclass(frozen=True)
+class PoolVerification(Options):
+    """The ``verification.pool`` configuration: the pressurised elliptical inclusion of minor semi-axis
+    ``semi_axis_b_um`` at the ``aspect_ratios`` a / b and the ``resolutions`` b / dx, in a matrix reaching
+    ``extent_factor`` a beyond it, under the swelling pressure ``swelling_pressure_kPa`` (Inglis; Lame for a circle)."""
+
+    semi_axis_b_um: float
+    aspect_ratios: tuple
+    resolutions: tuple
+    extent_factor: float
+    swelling_pressure_kPa: float
 
 
 @dataclass(frozen=True)

@@ -25,6 +25,7 @@ so.
 from __future__ import annotations
 
 import logging
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -34,7 +35,7 @@ from ..engine import dynamics, solver
 from ..engine.history import SEEDED, HistoryMaterial
 from ..engine.loading import Load
 from ..engine.model import Model
-from ..options import Options
+from ..options import Options, file_name_problems
 from ..physics import materials
 from . import artery, protocols
 from .delamination.front import Front
@@ -89,6 +90,50 @@ class Timing(Options):
 
     time_step: float
     load_update_steps: int
+
+
+@dataclass(frozen=True)
+class PaperProcedure(Options):
+    """The ``paper_procedure`` configuration section: the spacing ``dx_um`` and lumen pressure of the procedure (and
+    of this target's equilibria), figure 4's ``cases`` and ``models``, each stage's step count times the
+    ``step_factors``, its stepping (:class:`Timing`: ``time_step``, ``load_update_steps``), the temperature of the
+    Donnan pressure (eq. 2.26), figure 4's stages (:class:`SwellingStages`), figure 5's stage (:class:`DamageStage`)
+    and the delamination pool sets grown, each at its sigma_cr [kPa]."""
+
+    SECTION = "paper_procedure"
+
+    dx_um: float
+    pressure_mmHg: float
+    cases: tuple
+    models: tuple
+    step_factors: tuple
+    time_step: float
+    load_update_steps: int
+    temperature_K: float
+    swelling: SwellingStages
+    damage: DamageStage
+    pool_sets: Mapping
+
+    @classmethod
+    def problems(cls, config) -> list[str]:
+        """The cases are pools of ``swelling.cases``, the pool sets sets of ``delamination.pool_sets``, the ramp stops
+        below its top, and the step factors give distinct file names."""
+        sw, pp, problems = config.get("swelling", {}), config.get("paper_procedure", {}), []
+        for k, name in enumerate(pp.get("cases", [])):
+            if name not in sw.get("cases", {}):
+                pools = ", ".join(sw.get("cases", {}))
+                problems.append(f"paper_procedure.cases[{k}] = {name!r} is not a pool of swelling.cases ({pools})")
+        for name in pp.get("pool_sets", {}):
+            if name not in config.get("delamination", {}).get("pool_sets", {}):
+                problems.append(f"paper_procedure.pool_sets.{name} is not a set of delamination.pool_sets")
+        ramp = pp.get("swelling", {})
+        if ramp.get("stop_concentration_mEq_l", 0.0) > ramp.get("max_concentration_mEq_l", float("inf")):
+            problems.append(
+                f"paper_procedure.swelling.stop_concentration_mEq_l = {ramp['stop_concentration_mEq_l']:g} is above "
+                f"the ramp's top, paper_procedure.swelling.max_concentration_mEq_l = "
+                f"{ramp['max_concentration_mEq_l']:g}"
+            )
+        return problems + file_name_problems("paper_procedure", "step_factors", pp.get("step_factors", []))
 
 
 @dataclass(frozen=True)

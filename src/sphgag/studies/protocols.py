@@ -23,12 +23,49 @@ from ..engine import measure, pool_cavity, pool_volume, solver
 from ..engine.loading import MMHG_TO_KPA, Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
+from ..options import Options, file_name_problems
 from ..physics import analytic
 from ..physics.donnan import CHARGE_LAWS, LAWS
 from ..physics.materials import Gag, swelling_pressure
 from . import artery
 
 log = logging.getLogger("sphgag")
+
+
+def _above_sweep(config, section: str, key: str) -> list[str]:
+    """The pressures of ``section.key`` (a list, or one pressure) above the top of the section's sweep,
+    ``max_pressure_mmHg``."""
+    cal = config.get(section, {})
+    top = cal.get("max_pressure_mmHg", 0)
+    values = cal.get(key, [])
+    problems = []
+    for k, p in enumerate(values if isinstance(values, list) else [values]):
+        if p > top:
+            where = f"{section}.{key}" + (f"[{k}]" if isinstance(values, list) else "")
+            problems.append(f"{where} = {p} exceeds {section}.max_pressure_mmHg = {top}")
+    return problems
+
+
+@dataclass(frozen=True)
+class Calibration(Options):
+    """The ``calibration`` configuration section, figure 2a's protocol (:func:`mean_pressure_diameter`): the axial
+    stretch ramped in ``axial_stretch_steps`` at zero pressure, then ``pressure_points`` pressures evenly spaced from 0
+    to ``max_pressure_mmHg``, and the pressures of the transmural profiles."""
+
+    SECTION = "calibration"
+
+    axial_stretch_steps: int
+    max_pressure_mmHg: float
+    pressure_points: int
+    transmural_pressures_mmHg: tuple
+
+    @classmethod
+    def problems(cls, config) -> list[str]:
+        """The transmural pressures inside the sweep, each giving its own file name."""
+        values = config.get("calibration", {}).get("transmural_pressures_mmHg", [])
+        return _above_sweep(config, "calibration", "transmural_pressures_mmHg") + file_name_problems(
+            "calibration", "transmural_pressures_mmHg", values
+        )
 
 
 def pressure_points(calibration: dict) -> np.ndarray:
@@ -193,6 +230,55 @@ def mean_pressure_diameter(
 # ---------------------------------------------------------------------------
 # Bi-layered model: homeostasis (figure 2b), activation and pressure-diameter
 # ---------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class HomeostasisSettings(Options):
+    """The ``homeostasis`` configuration section, figure 2b (:func:`homeostasis`): the deposition pre-stretches ramped
+    in ``prestretch_steps`` at the in vivo inner radius, and the pressure Table 2's pre-stretches were chosen to carry
+    (for comparison)."""
+
+    SECTION = "homeostasis"
+
+    prestretch_steps: int
+    target_pressure_mmHg: float
+
+
+@dataclass(frozen=True)
+class BilayerCalibration(Options):
+    """The ``bilayer_calibration`` configuration section (:func:`bilayer_pressure_diameter`): the active tone
+    (eq. 2.24) switched on at ``activation_pressure_mmHg`` in ``activation_steps``, the sweep of ``pressure_points``
+    pressures up to ``max_pressure_mmHg``, and the pressures whose states are saved (every later stage starts from
+    one of them)."""
+
+    SECTION = "bilayer_calibration"
+
+    activation_pressure_mmHg: float
+    activation_steps: int
+    max_pressure_mmHg: float
+    pressure_points: int
+    state_pressures_mmHg: tuple
+
+    @classmethod
+    def problems(cls, config) -> list[str]:
+        """The saved and the activation pressures inside the sweep, each saved pressure giving its own file name."""
+        values = config.get("bilayer_calibration", {}).get("state_pressures_mmHg", [])
+        return (
+            _above_sweep(config, "bilayer_calibration", "state_pressures_mmHg")
+            + _above_sweep(config, "bilayer_calibration", "activation_pressure_mmHg")
+            + file_name_problems("bilayer_calibration", "state_pressures_mmHg", values)
+        )
+
+    @staticmethod
+    def unsaved(config, starts) -> list[str]:
+        """The start pressures ``starts`` (``(key, pressure)`` pairs) of later stages that have no saved state (one of
+        ``bilayer_calibration.state_pressures_mmHg``)."""
+        saved = config.get("bilayer_calibration", {}).get("state_pressures_mmHg", [])
+        return [
+            f"{key} = {p} has no saved state: it must be one of bilayer_calibration.state_pressures_mmHg = {saved}"
+            for key, p in starts
+            if p not in saved
+        ]
 
 
 def homeostatic_load(inner_radius: float, prestretch: float, activation: float = 0.0) -> Load:

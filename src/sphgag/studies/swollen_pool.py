@@ -30,7 +30,7 @@ particle. **Measures** (each at a converged state with its residual):
 
 from __future__ import annotations
 
-from dataclasses import replace
+from dataclasses import dataclass, replace
 
 import numpy as np
 import pandas as pd
@@ -38,8 +38,45 @@ import pandas as pd
 from ..engine import geometry, kernel, measure, pool_cavity, solver
 from ..engine.model import Model
 from ..engine.numerics import Numerics
+from ..options import Options
 from ..physics import cavity
 from . import inclusion
+
+
+def two_rings_problems(where: str, radius: float, spacings) -> list[str]:
+    """The spacings ``spacings`` (the key ``where.dx_um``) small enough to put two rings of particles in a hole or pool
+    of radius ``radius`` (``where.radius_um``)."""
+    return [
+        f"{where}.dx_um[{k}] = {dx:g} must be at most half of {where}.radius_um = {radius:g}"
+        for k, dx in enumerate(spacings)
+        if dx > 0.5 * radius
+    ]
+
+
+@dataclass(frozen=True)
+class CircularPoolVerification(Options):
+    """The ``verification.circular_pool`` configuration: a circular pool of radius A (``radius_um``) in a free elastin
+    annulus of outer radius B (``outer_radius_um``) at the volume ratios ``volume_ratios`` (each at the prescribed
+    Pi that gives it exactly, :func:`sphgag.physics.cavity.circular_pool`), the spacings ``dx_um``, in ``steps``
+    pressure increments, for each of ``pool_models``."""
+
+    radius_um: float
+    outer_radius_um: float
+    volume_ratios: tuple
+    dx_um: tuple
+    steps: int
+    pool_models: tuple
+
+    @classmethod
+    def problems(cls, config) -> list[str]:
+        """The annulus at least twice the pool's radius, and particles small enough to put two rings in the pool."""
+        vc = config.get("verification", {}).get("circular_pool", {})
+        problems = []
+        where = "verification.circular_pool"
+        A, B = vc.get("radius_um", 0.0), vc.get("outer_radius_um", 0.0)
+        if B < 2.0 * A:
+            problems.append(f"{where}.outer_radius_um = {B:g} must be at least twice {where}.radius_um = {A:g}")
+        return problems + two_rings_problems(where, A, vc.get("dx_um", []))
 
 
 def swell_from_rest(model, pressures, steps: int, numerics: Numerics) -> tuple[dict, str]:
