@@ -311,3 +311,19 @@ def test_every_candidate_rule_is_valid(ci_config, rule):
     cfg = copy.deepcopy(ci_config)
     cfg["delamination"]["candidates"] = rule
     config.validate(cfg, SCHEMA)
+
+
+def test_the_configuration_module_imports_at_its_top_only():
+    """sphgag.config imports every section's options at its top: no import inside a function (a deferred import hides
+    a dependency and an import cycle)."""
+    import ast
+
+    tree = ast.parse((ROOT / "src" / "sphgag" / "config.py").read_text())
+    functions = [node for node in ast.walk(tree) if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef)]
+    deferred = [
+        f"{fn.name}:{node.lineno}"
+        for fn in functions
+        for node in ast.walk(fn)
+        if isinstance(node, ast.Import | ast.ImportFrom)
+    ]
+    assert not deferred, deferred

@@ -4,6 +4,7 @@ import dataclasses
 
 import pytest
 
+from sphgag import config
 from sphgag.engine.numerics import Numerics
 from sphgag.engine.solver import PathOptions
 from sphgag.physics.materials import Gag, law_gag
@@ -63,3 +64,17 @@ def test_the_gag_of_one_run_has_one_charge_law(ci_config):
         Gag.of(dict(law_gag(ci_config["gag"], "conserved"), charge_law="literal"))
     with pytest.raises(ValueError, match=r"unknown key gag\.charge_laws"):
         Gag.of(ci_config["gag"])  # the configuration's section lists the laws: a run has one
+
+
+@pytest.mark.parametrize("name", ["full_config", "ci_config"])
+def test_every_section_of_the_configuration_has_options_that_build_from_it(name, request):
+    """Each top-level section of config/config.yaml (and config/ci.yaml) has its options class, named by its
+    ``SECTION``, and they build from the section (every key known, none missing)."""
+    cfg = request.getfixturevalue(name)
+    by_section = {options.SECTION: options for options in config.SECTIONS}
+    assert len(by_section) == len(config.SECTIONS) and sorted(by_section) == sorted(cfg)
+    for section, options in by_section.items():
+        built = options.of(cfg[section])
+        assert isinstance(built, options) and options.of(built) is built
+    with pytest.raises(ValueError, match=r"unknown key swelling\.colour"):
+        by_section["swelling"].of(dict(cfg["swelling"], colour=1.0))
