@@ -5,6 +5,11 @@ its type, range and description; unknown keys are errors (a typo must not be
 silently ignored). :func:`validate` collects *all* problems and raises one
 :class:`ConfigError` whose message names each bad key, its value, the
 allowed range and what the key means.
+
+The relations between keys that a JSON schema cannot express (a pool inside the media, a pressure with a saved state,
+values that name distinct files, ...) are checked by each section's typed options, beside the concept they configure
+(:data:`SECTIONS`, :meth:`sphgag.options.Options.problems`), once the configuration satisfies the schema; the checks
+the variants' registries own (pool models, onset criteria) are :func:`_variants`.
 """
 
 from __future__ import annotations
@@ -20,13 +25,11 @@ from .engine.numerics import Numerics
 from .options import key_text
 from .physics import donnan
 from .physics.materials import GagSection
-from .studies import artery
+from .studies import artery, candidates, onset, protocols
 from .studies.artery import Bilayer, Mean
-from .studies.candidates import RULES
 from .studies.delamination.section import Delamination
-from .studies.onset import CRITERIA
 from .studies.paper_procedure import PaperProcedure
-from .studies.protocols import POOL_MODELS, BilayerCalibration, Calibration, HomeostasisSettings
+from .studies.protocols import BilayerCalibration, Calibration, HomeostasisSettings
 from .studies.sensitivity import Sensitivity
 from .studies.swelling import Swelling, SwellingConvergence
 from .studies.verification import Verification
@@ -180,10 +183,10 @@ def _registries() -> dict:
     accepts it with no edit of the schema."""
     return {
         ("gag", "charge_laws"): list(donnan.LAWS),
-        ("swelling", "pool_models"): list(POOL_MODELS),
-        ("swelling", "variant_pool_models"): list(POOL_MODELS),
-        ("delamination", "criteria"): list(CRITERIA),
-        ("delamination", "candidates"): list(RULES),
+        ("swelling", "pool_models"): list(protocols.POOL_MODELS),
+        ("swelling", "variant_pool_models"): list(protocols.POOL_MODELS),
+        ("delamination", "criteria"): list(onset.CRITERIA),
+        ("delamination", "candidates"): list(candidates.RULES),
     }
 
 
@@ -217,11 +220,11 @@ def _pool_models(swelling: dict, laws: list) -> list[str]:
     """Each pool model of the swelling runs (figure 4's and the variants') must carry one of the configured charge
     laws (it runs under those), and a variant is not also one of figure 4's."""
     problems = [
-        f"swelling.{key}[{k}] = {name!r} carries the charge laws {', '.join(POOL_MODELS[name].laws)}, none of "
-        f"gag.charge_laws = {laws}"
+        f"swelling.{key}[{k}] = {name!r} carries the charge laws {', '.join(protocols.POOL_MODELS[name].laws)}, "
+        f"none of gag.charge_laws = {laws}"
         for key in ("pool_models", "variant_pool_models")
         for k, name in enumerate(swelling.get(key, []))
-        if name in POOL_MODELS and not set(POOL_MODELS[name].laws) & set(laws)
+        if name in protocols.POOL_MODELS and not set(protocols.POOL_MODELS[name].laws) & set(laws)
     ]
     return problems + [
         f"swelling.variant_pool_models[{k}] = {name!r} is one of swelling.pool_models: it runs in target all already"
@@ -238,7 +241,7 @@ def _delamination(config: dict) -> list[str]:
         return []
     problems = []
     coarsest = max([config.get("bilayer", {}).get("dx_um", 0)] + de["convergence"]["dx_um"])
-    averaging = [c for c in de["criteria"] if c in CRITERIA and CRITERIA[c].averages]
+    averaging = [c for c in de["criteria"] if c in onset.CRITERIA and onset.CRITERIA[c].averages]
     if averaging and de["averaging_length_um"] < coarsest:
         problems.append(
             f"delamination.averaging_length_um = {de['averaging_length_um']} is below the coarsest "
@@ -251,9 +254,8 @@ def _delamination(config: dict) -> list[str]:
 def _variants(config: dict) -> list[str]:
     """The checks the variants' registries own: the pool models' charge laws (:func:`_pool_models`) and the averaging
     onset criteria (:func:`_delamination`)."""
-    return _pool_models(config.get("swelling", {}), config.get("gag", {}).get("charge_laws", [])) + _delamination(
-        config
-    )
+    laws = config.get("gag", {}).get("charge_laws", [])
+    return _pool_models(config.get("swelling", {}), laws) + _delamination(config)
 
 
 #: the options of every section of the configuration, in its order: each checks the relations between its keys and

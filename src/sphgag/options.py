@@ -1,15 +1,17 @@
 """Typed options: sections of the validated configuration as small frozen dataclasses.
 
 The package is entered with typed options: :class:`sphgag.engine.numerics.Numerics`,
-:class:`sphgag.physics.materials.Gag`, :class:`sphgag.studies.artery.Bilayer` and
-:class:`sphgag.studies.delamination.settings.Settings`. The pipeline keeps plain dicts where rerun detection and
-provenance read them (Snakemake ``params``, the parameters a state file records); the package builds its options from
-them with ``of``, at the functions it is entered by. A key the options do not know, or one they miss, raises naming it.
+:class:`sphgag.physics.materials.Gag` (one run's GAG), :class:`sphgag.studies.artery.Bilayer` and
+:class:`sphgag.studies.delamination.settings.Settings` (one run's delamination settings). The pipeline keeps plain
+dicts where rerun detection and provenance read them (Snakemake ``params``, the parameters a state file records); the
+package builds its options from them with ``of``, at the functions it is entered by. A key the options do not know, or
+one they miss, raises naming it.
 
-Every top-level section of the configuration has its options (``SECTION`` names it), and the relations between keys
-that the JSON schema cannot express are checked beside them: :meth:`Options.problems` of each section's options reads
-the whole configuration (once it satisfies the schema) and returns what is wrong, naming the keys.
-:func:`sphgag.config.validate` calls them all.
+Every top-level section of the configuration has its options (``SECTION`` names it; :data:`sphgag.config.SECTIONS`
+lists them), each in the module of the concept it configures. The relations between keys that the JSON schema cannot
+express are checked beside them: :meth:`Options.problems` of each section's options reads the whole configuration
+(once it satisfies the schema) and returns what is wrong, naming the keys; :func:`sphgag.config.validate` calls them
+all.
 """
 
 from __future__ import annotations

@@ -437,12 +437,13 @@ def pool_placement_problems(config, pools: Mapping) -> list[str]:
     bil = config.get("bilayer", {})
     if not bil or Bilayer.wall_problems(bil):
         return []
-    problems = []
-    for name, pool in pools.items():
-        lo, hi = Pool.of(pool).radii()
-        if spans := Bilayer.of(bil).pool_span_text(lo, hi):
+    problems, wall = [], Bilayer.of(bil)
+    for name, entry in pools.items():
+        pool = Pool.of(entry)
+        lo, hi = pool.radii()
+        if spans := wall.pool_span_text(lo, hi):
             problems.append(f"{name}: radii {lo:g}-{hi:g} um leave {spans}")
-        first, last = Pool.of(pool).angles()
+        first, last = pool.angles()
         if first <= 0 or last >= 90:
             problems.append(f"{name}: angles {first:g}-{last:g} deg reach a symmetry edge (0 or 90 deg)")
     return problems
