@@ -10,7 +10,8 @@ volume ratio ``J`` (:meth:`ChargeLaw.concentration`):
 * ``conserved``, our documented deviation (mixture theory): the fixed charge stays in the particle, c_FC = c / J, so
   the Donnan pressure acts at the current concentration (the column ``FCD``, :func:`sphgag.physics.materials.donnan`).
 
-A law is a :class:`ChargeLaw` (a :class:`sphgag.registry.Variant`) of the registry :data:`LAWS`, by its name in the configuration (``gag.charge_laws``),
+A law is a :class:`ChargeLaw` (a :class:`sphgag.registry.Variant`) of the registry :data:`LAWS`, by its name in the
+configuration (``gag.charge_laws``),
 the pipeline's wildcard ``{law}`` and every pool table (column ``charge_law``). The schema's enumeration, the typed
 GAG options (:class:`sphgag.physics.materials.Gag`), the engine's GAG material, the exact circular pool
 (:mod:`sphgag.physics.cavity`), the pool models that carry it and the figures' titles are read from the registry, so

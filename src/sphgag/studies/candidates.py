@@ -8,9 +8,9 @@ of it, pool by pool. The paper compares "the radial stress at the tip of the poo
 particles in contact with the pool (``contact``); the authors' script tests the whole window (``window``), so damage
 can form islands ahead of a pool (docs/physics.md, "Damage candidates").
 
-A rule is a :class:`CandidateRule` (a :class:`sphgag.registry.Variant`) of the registry :data:`RULES`. The configuration's schema
-(``delamination.candidates``, :func:`sphgag.config.schema`) is built from the registry, so a new rule is one function
-and one entry here.
+A rule is a :class:`CandidateRule` (a :class:`sphgag.registry.Variant`) of the registry :data:`RULES`. The
+configuration's schema (``delamination.candidates``, :func:`sphgag.config.schema`) is built from the registry, so a new
+rule is one function and one entry here.
 """
 
 from __future__ import annotations

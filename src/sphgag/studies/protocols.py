@@ -433,9 +433,9 @@ class PoolState:
     ``volume`` where the concentration-controlled path had lost equilibrium, :mod:`sphgag.engine.pool_volume`), the
     run's pool model (``pool_model``: ``particles``, the paper's GAG particles, or ``cavity``; :data:`POOL_MODELS`)
     and whether the state is in equilibrium with the pool model's converted wall (``cavity``, the name the state
-    files keep: :meth:`PoolModel.converts`; :meth:`model` rebuilds that wall), and how the run's path ended (the same for every
-    state of a run: ``path_end`` ``complete``, ``limit point`` at ``limit_concentration``, or ``no equilibrium``,
-    with ``end_reason``)."""
+    files keep: :meth:`PoolModel.converts`; :meth:`model` rebuilds that wall), and how the run's path ended (the same
+    for every state of a run: ``path_end`` ``complete``, ``limit point`` at ``limit_concentration``, or
+    ``no equilibrium``, with ``end_reason``)."""
 
     stage: str
     concentration: float
@@ -545,7 +545,8 @@ class PoolModel(Variant):
         laws = config.get("gag", {}).get("charge_laws", [])
         if not set(self.laws) & set(laws):
             raise ValueError(
-                f"{key} = {self.name!r} carries the charge laws {', '.join(self.laws)}, none of gag.charge_laws = {laws}"
+                f"{key} = {self.name!r} carries the charge laws {', '.join(self.laws)}, none of "
+                f"gag.charge_laws = {laws}"
             )
 
     def around(self, model: Model, members: np.ndarray, mirrored: bool = False) -> Model:
