@@ -178,25 +178,28 @@ def _registries() -> dict:
     from .studies.protocols import POOL_MODELS
 
     return {
-        ("numerics", "hourglass"): list(hourglass.FORMS),
-        ("gag", "charge_laws"): list(donnan.LAWS),
-        ("swelling", "pool_models"): list(POOL_MODELS),
-        ("swelling", "variant_pool_models"): list(POOL_MODELS),
-        ("delamination", "criteria"): list(CRITERIA),
-        ("delamination", "candidates"): list(RULES),
-        ("verification", "circular_pool", "pool_models"): list(POOL_MODELS),
-        ("verification", "annulus", "pool_models"): list(annulus.POOL_MODELS),
+        ("numerics", "hourglass"): hourglass.FORMS,
+        ("gag", "charge_laws"): donnan.LAWS,
+        ("swelling", "pool_models"): POOL_MODELS,
+        ("swelling", "variant_pool_models"): POOL_MODELS,
+        ("delamination", "criteria"): CRITERIA,
+        ("delamination", "candidates"): RULES,
+        ("verification", "circular_pool", "pool_models"): POOL_MODELS,
+        ("verification", "annulus", "pool_models"): annulus.POOL_MODELS,
     }
 
 
 def schema(schema_path) -> dict:
-    """The schema at ``schema_path`` with the enumerations of sphgag's registries (:func:`_registries`)."""
+    """The schema at ``schema_path`` with the enumerations of sphgag's registries (:func:`_registries`), and each
+    variant's title (the paper's marked) after its key's description."""
     out = load_yaml(schema_path)
-    for path, names in _registries().items():
+    for path, registry in _registries().items():
         node = out
         for key in path:
             node = node["properties"][key]
-        (node["items"] if "items" in node else node)["enum"] = names
+        (node["items"] if "items" in node else node)["enum"] = list(registry)
+        titles = "; ".join(f"{n}: {v.title}" + (" [the paper's]" if v.paper else "") for n, v in registry.items())
+        node["description"] = f"{node.get('description', '')}. One of: {titles}"
     return out
 
 

@@ -14,6 +14,7 @@ edit of the schema (docs/contributing.md, "Variants").
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator, Mapping
+from contextlib import contextmanager
 from typing import ClassVar, TypeVar
 
 
@@ -86,6 +87,15 @@ class Registry(Mapping[str, V]):
     def unregister(self, name: str) -> V:
         """Remove the variant ``name`` and return it (a test's plug-in, undone)."""
         return self._variants.pop(name)
+
+    @contextmanager
+    def registered(self, variant: V) -> Iterator[V]:
+        """``variant`` registered for the ``with`` block only (a test's plug-in)."""
+        self.register(variant)
+        try:
+            yield variant
+        finally:
+            self.unregister(variant.name)
 
     # -- lookups ----------------------------------------------------------------------------------------------------
     def lookup(self, name) -> V:
