@@ -536,7 +536,11 @@ class PoolModel(Variant):
     noun: str
     paper: bool = False
 
-    keys: ClassVar[tuple[str, ...]] = ("swelling.pool_models", "swelling.variant_pool_models", "gag.charge_laws")
+    keys: ClassVar[tuple[str, ...]] = (
+        "swelling.pool_models",
+        "swelling.variant_pool_models",
+        "verification.circular_pool.pool_models",
+    )
     #: its converted states are in a wall of its own (:meth:`converted_model`), not the run's
     rebuilds: ClassVar[bool] = False
 

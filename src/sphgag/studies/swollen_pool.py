@@ -37,7 +37,7 @@ from ..engine import geometry, kernel, measure, solver
 from ..engine.model import Model
 from ..engine.numerics import Numerics
 from ..physics import cavity
-from . import inclusion, protocols
+from . import artery, inclusion, protocols
 
 
 def swell_from_rest(model, pressures, steps: int, numerics: Numerics) -> tuple[dict, str]:
@@ -216,8 +216,6 @@ def sector_study(vs: dict, matrix: dict, gag: dict, numerics: Numerics, pool_mod
     (``vs``: ``walls_um``, ``pool`` (a figure-4 case), ``probe_length_um``, ``steps``): figure 4's measures
     (:func:`sphgag.studies.protocols.pool_measurements`) and the pool's volume ratio, to compare with
     :func:`sphgag.studies.fe_swelling.sector_pool` on the same geometry and laws."""
-    from . import artery
-
     numerics = Numerics.of(numerics)
     mat = inclusion.Materials.of(matrix, gag, bulk=True)
     pool = artery.pool_sector(vs["pool"])
