@@ -167,29 +167,39 @@ def _literal_problems(node, path=()) -> list[str]:
 
 
 def _registries() -> dict:
-    """The schema's enumerations that sphgag's registries define, by the path of their key (a list of names or one
-    name): a new charge law, onset criterion or candidate rule is an entry of its registry, and the configuration
-    accepts it with no edit of the schema."""
+    """The schema's enumerations that sphgag's registries (:class:`sphgag.registry.Registry`) define, by the path of
+    their key (a list of names or one name): a new variant is an entry of its registry, and the configuration accepts
+    it with no edit of the schema."""
+    from .engine import hourglass
     from .physics import donnan
+    from .studies import annulus
     from .studies.candidates import RULES
     from .studies.onset import CRITERIA
     from .studies.protocols import POOL_MODELS
 
     return {
-        ("gag", "charge_laws"): list(donnan.LAWS),
-        ("swelling", "pool_models"): list(POOL_MODELS),
-        ("swelling", "variant_pool_models"): list(POOL_MODELS),
-        ("delamination", "criteria"): list(CRITERIA),
-        ("delamination", "candidates"): list(RULES),
+        ("numerics", "hourglass"): hourglass.FORMS,
+        ("gag", "charge_laws"): donnan.LAWS,
+        ("swelling", "pool_models"): POOL_MODELS,
+        ("swelling", "variant_pool_models"): POOL_MODELS,
+        ("delamination", "criteria"): CRITERIA,
+        ("delamination", "candidates"): RULES,
+        ("verification", "circular_pool", "pool_models"): POOL_MODELS,
+        ("verification", "annulus", "pool_models"): annulus.POOL_MODELS,
     }
 
 
 def schema(schema_path) -> dict:
-    """The schema at ``schema_path`` with the enumerations of sphgag's registries (:func:`_registries`)."""
+    """The schema at ``schema_path`` with the enumerations of sphgag's registries (:func:`_registries`), and each
+    variant's title (the paper's marked) after its key's description."""
     out = load_yaml(schema_path)
-    for (section, key), names in _registries().items():
-        node = out["properties"][section]["properties"][key]
-        (node["items"] if "items" in node else node)["enum"] = names
+    for path, registry in _registries().items():
+        node = out
+        for key in path:
+            node = node["properties"][key]
+        (node["items"] if "items" in node else node)["enum"] = list(registry)
+        titles = "; ".join(f"{n}: {v.title}" + (" [the paper's]" if v.paper else "") for n, v in registry.items())
+        node["description"] = f"{node.get('description', '')}. One of: {titles}"
     return out
 
 
@@ -374,17 +384,17 @@ def _pool_angles(pool: dict) -> tuple[float, float]:
     return pool["centre_angle_deg"] - half, pool["centre_angle_deg"] + half
 
 
-def _pool_models(swelling: dict, laws: list) -> list[str]:
-    """Each pool model of the swelling runs (figure 4's and the variants') must carry one of the configured charge
-    laws (it runs under those), and a variant is not also one of figure 4's."""
+def _pool_models(config: dict) -> list[str]:
+    """Each pool model of the swelling runs (figure 4's and the variants') passes its own check
+    (:meth:`sphgag.studies.protocols.PoolModel.check`: it carries one of the configured charge laws), and a variant is
+    not also one of figure 4's."""
     from .studies.protocols import POOL_MODELS
 
+    swelling = config.get("swelling", {})
     problems = [
-        f"swelling.{key}[{k}] = {name!r} carries the charge laws {', '.join(POOL_MODELS[name].laws)}, none of "
-        f"gag.charge_laws = {laws}"
+        p
         for key in ("pool_models", "variant_pool_models")
-        for k, name in enumerate(swelling.get(key, []))
-        if name in POOL_MODELS and not set(POOL_MODELS[name].laws) & set(laws)
+        for p in POOL_MODELS.problems(config, f"swelling.{key}", swelling.get(key, []))
     ]
     return problems + [
         f"swelling.variant_pool_models[{k}] = {name!r} is one of swelling.pool_models: it runs in target all already"
@@ -454,7 +464,7 @@ def _composition(config: dict) -> list[str]:
 def _swelling(config: dict) -> list[str]:
     """The pool models carry a configured charge law, and the resolution study's cases are pools of the sweeps."""
     sw = config.get("swelling", {})
-    problems = _pool_models(sw, config.get("gag", {}).get("charge_laws", []))
+    problems = _pool_models(config)
     sc = config.get("swelling_convergence", {})
     pools = sw.get("pool_models", []) + sw.get("variant_pool_models", [])
     for k, name in enumerate(sc.get("pool_models", [])):
@@ -520,23 +530,15 @@ def _file_names(config: dict) -> list[str]:
 
 
 def _delamination(config: dict) -> list[str]:
-    """Every figure's pool set exists, and an onset criterion that averages (``OnsetCriterion.averages``) does so
-    over more than one particle at the coarsest spacing it is run at."""
+    """Every figure's pool set exists, and each onset criterion passes its own check
+    (:meth:`sphgag.studies.onset.OnsetCriterion.check`: one that averages does so over more than one particle at the
+    coarsest spacing it is run at)."""
     from .studies.onset import CRITERIA
 
     de = config.get("delamination", {})
     if not de:
         return []
-    problems = _pool_set_roles(de)
-    coarsest = max([config.get("bilayer", {}).get("dx_um", 0)] + de["convergence"]["dx_um"])
-    averaging = [c for c in de["criteria"] if c in CRITERIA and CRITERIA[c].averages]
-    if averaging and de["averaging_length_um"] < coarsest:
-        problems.append(
-            f"delamination.averaging_length_um = {de['averaging_length_um']} is below the coarsest "
-            f"particle spacing ({coarsest:g} um): the average of {', '.join(averaging)} would be a single "
-            "particle's value"
-        )
-    return problems
+    return _pool_set_roles(de) + CRITERIA.problems(config, "delamination.criteria", de["criteria"])
 
 
 def _pool_placement(config: dict) -> list[str]:

@@ -83,8 +83,8 @@ class Model:
     props : (N, NPROP) property table (:mod:`sphgag.physics.materials`), or a callable
         ``props(load) -> table`` for materials that change along a path.
     hourglass_alpha : alpha of eq. (2.14); E comes from the property table.
-    hourglass : the hourglass control's form (:data:`sphgag.engine.hourglass.FORMS`): ``paper`` (eq. 2.14 as
-        printed) or ``energy`` (its energy form, :mod:`sphgag.engine.hourglass`).
+    hourglass : the name of the hourglass control's form (the registry :data:`sphgag.engine.hourglass.FORMS`):
+        ``paper`` (eq. 2.14 as printed) or ``energy`` (its energy form, :mod:`sphgag.engine.hourglass`).
     cavities : pools modelled as pressurised cavities (:class:`sphgag.engine.pool_cavity.Cavity`): the swelling pressure
         their particles' rows carry acts on their linings, their particles are held and carry nothing, and every
         deformation gradient sees its own material only.
@@ -104,8 +104,7 @@ class Model:
     _cache: dict = field(default_factory=dict, repr=False)
 
     def __post_init__(self):
-        if self.hourglass not in hourglass.FORMS:
-            raise ValueError(f"hourglass form {self.hourglass!r}: one of {', '.join(hourglass.FORMS)}")
+        hourglass.FORMS.lookup(self.hourglass)
         self.cth = np.cos(self.layout.theta)
         self.sth = np.sin(self.layout.theta)
         indptr, indices, blockmap, map_ptr = forces.block_pattern(self.nb.ptr, self.nb.nbr)
@@ -175,14 +174,7 @@ class Model:
         nb_elastic = self.nb
         if self.cavities:  # a free surface at every cavity: each material's own stencil for F too
             nb_elastic = replace(self.nb, a=ah, s=sh)
-        stiffness = None
-        if self.hourglass == "energy":
-            nb = self.nb
-            stiffness = np.zeros((self.block_indices.size, 2, 2))
-            hourglass.energy_stiffness_blocks(
-                nb.ptr, nb.nbr, nb.mirror, nb.R, ah, sh, hgc, self.blockmap, self.map_ptr, stiffness
-            )
-            hgc = np.zeros_like(hgc)
+        hgc, stiffness = hourglass.FORMS[self.hourglass].contribute(self, ah, sh, hgc)
         pairs = forces.PairData.pack(nb_elastic, V, hgc, ah)
         self._cache.update(
             nb_elastic=nb_elastic,

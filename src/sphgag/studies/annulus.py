@@ -10,7 +10,8 @@ without pre-stretch or fibres) and a pool with contents of its own (eq. 2.27 wit
 :func:`sphgag.physics.cavity.limit_pressure` (a saturation for the hole, a limit point for the pool of particles,
 whose contents' bulk term adds a little pressure that falls again as they swell).
 
-**Cases** (``verification.annulus``): two pool models (:data:`POOL_MODELS`),
+**Cases** (``verification.annulus``): two pool models (:data:`POOL_MODELS`, each a pool model of the engine's
+registry :data:`sphgag.studies.protocols.POOL_MODELS` with its contents),
 
 * ``hole``: an empty hole, its lining loaded by the pressure (the cavity of :mod:`sphgag.engine.pool_cavity` with
   contents of zero stiffness);
@@ -26,26 +27,53 @@ reaches, never a state.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 import pandas as pd
 
 from ..engine import pool_volume, solver
 from ..engine.numerics import Numerics
 from ..physics import cavity
+from ..registry import Registry, Variant
 from . import gci, inclusion, swollen_pool
 
-POOL_MODELS = {"hole": "cavity", "particles": "particles"}  # the verification's pool model -> the engine's
+
+@dataclass(frozen=True)
+class AnnulusPool(Variant):
+    """A pool of the annulus verification (``verification.annulus.pool_models``, column ``pool_model``): the engine's
+    pool model ``engine`` (:data:`sphgag.studies.protocols.POOL_MODELS`) that holds it and whether its contents are
+    ``empty`` (zero stiffness: a hole, its lining loaded by the pressure)."""
+
+    name: str
+    title: str
+    engine: str
+    empty: bool = False
+    paper: bool = False
+
+    def materials(self, matrix: dict, gag: dict) -> inclusion.Materials:
+        """The annulus' matrix around the pool and its contents (those of ``gag``, with its bulk term, as in the
+        artery; none for an empty pool)."""
+        if self.empty:
+            gag = dict(gag, shear_modulus_kPa=0.0, lame_lambda_kPa=0.0)
+        return inclusion.Materials.of(matrix, gag, bulk=True)
+
+
+#: the annulus' pool models, by name (the paper's last, as the verification lists them)
+POOL_MODELS: Registry[AnnulusPool] = Registry(
+    "pool model of the annulus",
+    (
+        AnnulusPool("hole", "an empty hole, its lining loaded by the pressure", "cavity", empty=True),
+        AnnulusPool("particles", "the paper's GAG particles carrying the pressure", "particles", paper=True),
+    ),
+)
 MEASURES = {"volume_ratio": "volume_ratio_exact", "lining_hoop_kPa": "lining_hoop_exact_kPa"}  # measure -> its exact
 
 
 def materials(pool_model: str, matrix: dict, gag: dict) -> inclusion.Materials:
-    """The annulus' matrix around the pool: the GAG contents of ``gag`` (with its bulk term, as in the artery) or,
-    for the ``hole``, contents of zero stiffness."""
-    if pool_model not in POOL_MODELS:
-        raise ValueError(f"unknown pool model {pool_model!r} of the annulus: one of {sorted(POOL_MODELS)}")
-    if pool_model == "hole":
-        gag = dict(gag, shear_modulus_kPa=0.0, lame_lambda_kPa=0.0)
-    return inclusion.Materials.of(matrix, gag, bulk=True)
+    """The annulus' matrix around the pool ``pool_model`` (:data:`POOL_MODELS`): the GAG contents of ``gag`` (with its
+    bulk term, as in the artery) or, for the ``hole``, contents of zero stiffness (:meth:`AnnulusPool.materials`)."""
+    return POOL_MODELS.lookup(pool_model).materials(matrix, gag)
 
 
 def limit(A: float, B: float, mat: inclusion.Materials) -> cavity.LimitPressure:
@@ -118,7 +146,7 @@ def annulus_study(va: dict, matrix: dict, gag: dict, numerics, pool_model: str, 
         top = limit(A, B, mat)
         pressures = [f * top.pressure_kPa for f in fractions]
         for dx in va["dx_um"]:
-            model = swollen_pool.circle_model(A, B, float(dx), mat, numerics, POOL_MODELS[pool_model])
+            model = swollen_pool.circle_model(A, B, float(dx), mat, numerics, POOL_MODELS[pool_model].engine)
             at, end = swell_by_volume(model, pressures, numerics, float(va["max_volume_ratio"]))
             case = dict(
                 pool_model=pool_model,

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import logging
 from dataclasses import dataclass, replace
+from typing import ClassVar
 
 import numpy as np
 import pandas as pd
@@ -26,6 +27,7 @@ from ..engine.numerics import Numerics
 from ..physics import analytic
 from ..physics.donnan import CHARGE_LAWS, LAWS
 from ..physics.materials import Gag, swelling_pressure
+from ..registry import Registry, Variant
 from . import artery
 
 log = logging.getLogger("sphgag")
@@ -430,9 +432,10 @@ class PoolState:
     concentration [mEq/l], the positions and load, how the solver reached it (``control``: ``concentration``, or
     ``volume`` where the concentration-controlled path had lost equilibrium, :mod:`sphgag.engine.pool_volume`), the
     run's pool model (``pool_model``: ``particles``, the paper's GAG particles, or ``cavity``; :data:`POOL_MODELS`)
-    and whether the pool was a cavity in this state (``cavity``), and how the run's path ended (the same for every
-    state of a run: ``path_end`` ``complete``, ``limit point`` at ``limit_concentration``, or ``no equilibrium``,
-    with ``end_reason``)."""
+    and whether the state is in equilibrium with the pool model's converted wall (``cavity``, the name the state
+    files keep: :meth:`PoolModel.converts`; :meth:`model` rebuilds that wall), and how the run's path ended (the same
+    for every state of a run: ``path_end`` ``complete``, ``limit point`` at ``limit_concentration``, or
+    ``no equilibrium``, with ``end_reason``)."""
 
     stage: str
     concentration: float
@@ -458,8 +461,8 @@ class PoolState:
         model: Model | None = None,
         pool_model="particles",
     ) -> PoolState:
-        """The state ``state`` of a run with pool model ``pool_model``, in equilibrium with ``model`` (whose
-        cavities say whether the pool was a cavity in it)."""
+        """The state ``state`` of a run with pool model ``pool_model``, in equilibrium with ``model`` (the pool model
+        says whether that is its converted wall, :meth:`PoolModel.converts`)."""
         c = state.convergence
         return cls(
             stage,
@@ -471,8 +474,13 @@ class PoolState:
             c.force_evaluations,
             control,
             pool_model,
-            bool(model is not None and model.cavities),
+            bool(model is not None and POOL_MODELS.lookup(pool_model).converts(model)),
         )
+
+    def model(self, run_model: Model, converted: Model | None = None) -> Model:
+        """The wall this state is in equilibrium with: the run's ``run_model``, or the pool model's converted wall
+        (:meth:`PoolModel.converted_model`; ``converted`` if given, the one an earlier state of the run rebuilt)."""
+        return state_model(run_model, self.cavity, self.x, converted, self.pool_model)
 
     def info(self) -> dict:
         """What a state file keeps beside positions and load (:func:`sphgag.records.state.save_series`)."""
@@ -513,24 +521,121 @@ class PoolState:
 
 
 @dataclass(frozen=True)
-class PoolModel:
-    """A model of the pool in the figure 4 runs: the charge ``laws`` it carries and the hourglass form
-    (:data:`sphgag.engine.hourglass.FORMS`) its wall is solved with once the pool is converted (None: the
-    configuration's ``numerics.hourglass``)."""
+class PoolModel(Variant):
+    """A model of the pool in the figure 4 runs (a :class:`sphgag.registry.Variant` of :data:`POOL_MODELS`): its
+    ``name`` (``swelling.pool_models``, ``swelling.variant_pool_models``, ``verification.circular_pool.pool_models``,
+    wildcard ``{pool}``, column ``pool_model``), ``title`` (the figures' heading of its rows), the charge ``laws`` it
+    carries (:data:`sphgag.physics.donnan.LAWS`), ``noun`` (what the verification's run names call the pool) and
+    whether it is the paper's. Its behaviour: the wall of a pool swollen from rest (:meth:`around`, the
+    verification), what becomes of the wall once the pool is converted (:meth:`convert`, figure 4), and the wall a
+    converted state is in equilibrium with (:meth:`converted_model`, :meth:`converts`)."""
 
+    name: str
+    title: str
     laws: tuple[str, ...]
+    noun: str
+    paper: bool = False
+
+    keys: ClassVar[tuple[str, ...]] = (
+        "swelling.pool_models",
+        "swelling.variant_pool_models",
+        "verification.circular_pool.pool_models",
+    )
+    #: its converted states are in a wall of its own (:meth:`converted_model`), not the run's
+    rebuilds: ClassVar[bool] = False
+
+    def check(self, config, key: str) -> None:
+        """A pool model of the swelling runs carries one of the configured charge laws (it runs under those)."""
+        laws = config.get("gag", {}).get("charge_laws", [])
+        if not set(self.laws) & set(laws):
+            raise ValueError(
+                f"{key} = {self.name!r} carries the charge laws {', '.join(self.laws)}, none of "
+                f"gag.charge_laws = {laws}"
+            )
+
+    def around(self, model: Model, members: np.ndarray, mirrored: bool = False) -> Model:
+        """``model`` (whose pool ``members`` are GAG particles) with the pool as this model holds it from rest
+        (``mirrored``: a pool about the origin of a quarter layout)."""
+        return model
+
+    def convert(self, model: Model, state: solver.State, opts: dict) -> tuple[Model, solver.State]:
+        """``(wall, state)`` once the pool of ``model`` is converted at ``state`` (c = 0): the wall the swelling runs
+        on and its equilibrium (raises :class:`sphgag.engine.solver.NotConverged`, with :meth:`unconverged`'s
+        reason, where it has none near ``state``)."""
+        return model, state
+
+    def unconverged(self, exc: solver.NotConverged) -> str:
+        """Why the path of the run ends at conversion, where :meth:`convert` found no equilibrium."""
+        return f"the converted pool has no equilibrium ({exc.reason})"
+
+    def converts(self, model: Model) -> bool:
+        """Whether ``model`` is the converted wall of :meth:`convert` rather than the run's own."""
+        return False
+
+    def converted_model(self, model: Model, x: np.ndarray, converted: Model | None = None) -> Model:
+        """The converted wall of the run's ``model`` a state at positions ``x`` is in equilibrium with (``converted``
+        if given: the one an earlier state of the run rebuilt)."""
+        return model
+
+
+@dataclass(frozen=True)
+class CavityPool(PoolModel):
+    """The pool as a pressurised cavity (:mod:`sphgag.engine.pool_cavity`; our deviation): its lining carries the
+    prescribed Pi(c), its contents swell uniformly, so it carries only the laws that do not conserve the fixed charge
+    (a cavity carries one pressure, whatever its J). Once converted, its wall is solved with the hourglass form
+    ``hourglass`` (:data:`sphgag.engine.hourglass.FORMS`), whatever ``numerics.hourglass`` says: the form as printed
+    loses the path next to the swollen cavity (docs/physics.md). The override is logged where it changes the form."""
+
     hourglass: str | None = None
+    rebuilds: ClassVar[bool] = True
+
+    def around(self, model, members, mirrored=False):
+        cavity = pool_cavity.Cavity.around(model.layout, members, model.layout.X, mirrored=mirrored)
+        return replace(model, cavities=(cavity,), _cache={})
+
+    def convert(self, model, state, opts):
+        log.info("[%s] the pool becomes a cavity: its contents swell uniformly, its lining carries Pi", model.name)
+        hollow = self.converted_model(model, state.x)
+        return hollow, solver.follow_path(hollow, state.x, state.load, [state.load], **opts)[-1]
+
+    def unconverged(self, exc):
+        return f"the unswollen pool has no equilibrium as a cavity ({exc.reason})"
+
+    def converts(self, model):
+        return bool(model.cavities)
+
+    def converted_model(self, model, x, converted=None):
+        """``model`` with its pool as the cavity, its particles held at ``x`` (where the pool became a cavity, so
+        every converted state of the run rebuilds the same wall), and the cavity's hourglass form."""
+        if converted is not None:
+            return converted
+        form = self.hourglass or model.hourglass
+        if form != model.hourglass:
+            log.info(
+                "[%s] pool model %s: its wall is solved with the %s hourglass form, not numerics.hourglass = %s",
+                model.name,
+                self.name,
+                form,
+                model.hourglass,
+            )
+        return pool_cavity.hollow(replace(model, hourglass=form, _cache={}), model.props.converting, x)
 
 
-#: the pool models of the figure 4 runs (``swelling.pool_models``, wildcard ``{pool}``, column ``pool_model``):
-#: ``particles``, the paper's GAG particles (eq. 2.27), every law; ``cavity``, the pool as a pressurised cavity whose
-#: lining carries the prescribed Pi(c) (:mod:`sphgag.engine.pool_cavity`; our deviation), so only the laws that do
-#: not conserve the fixed charge (``prescribed``: a cavity carries one pressure, whatever its J), its wall with the
-#: energy form of eq. (2.14) (the form as printed loses the path next to the swollen cavity: docs/physics.md)
-POOL_MODELS = {
-    "particles": PoolModel(CHARGE_LAWS),
-    "cavity": PoolModel(tuple(name for name, law in LAWS.items() if not law.conserves_charge), "energy"),
-}
+#: the pool models of the figure 4 runs and the pool verifications, by name (the paper's first): ``particles``, the
+#: paper's GAG particles (eq. 2.27), every law; ``cavity``, the pool as a pressurised cavity (:class:`CavityPool`)
+POOL_MODELS: Registry[PoolModel] = Registry(
+    "pool model",
+    (
+        PoolModel("particles", "the pool's GAG particles (eq. 2.27; the paper's)", CHARGE_LAWS, "pool", paper=True),
+        CavityPool(
+            "cavity",
+            "the pool as a pressurised cavity (our deviation: its lining carries Pi, its contents swell uniformly)",
+            tuple(name for name, law in LAWS.items() if not law.conserves_charge),
+            "cavity",
+            hourglass="energy",
+        ),
+    ),
+)
 
 
 def concentration_steps(sw: dict) -> np.ndarray:
@@ -546,10 +651,11 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
     2. convert the pool's medial particles to GAG at c = 0 (``conversion_steps``
        converged increments of the material homotopy of
        :func:`materials.convert_to_gag`) and relax;
-    3. with ``pool_model: cavity`` in ``sw`` (default ``particles``, the paper's), the converted pool becomes a
-       pressurised cavity (:mod:`sphgag.engine.pool_cavity`; our deviation) and the wall is relaxed again at c = 0
-       (where it finds no equilibrium, e.g. a long pool squeezed shut, whose lining's faces no contact keeps apart,
-       the path ends there: ``no equilibrium``, with the reason);
+    3. the pool model ``pool_model`` of ``sw`` (:data:`POOL_MODELS`; default the paper's, ``particles``) converts
+       the wall (:meth:`PoolModel.convert`): with ``cavity`` the converted pool becomes a pressurised cavity
+       (:mod:`sphgag.engine.pool_cavity`; our deviation) and the wall is relaxed again at c = 0 (where it finds no
+       equilibrium, e.g. a long pool squeezed shut, whose lining's faces no contact keeps apart, the path ends there:
+       ``no equilibrium``, with the reason);
     4. raise the fixed-charge concentration from 0 to ``max_concentration_mEq_l``
        (``concentration_points`` converged states, c = 0 included).
     The lumen pressure stays constant throughout: it is a follower pressure load
@@ -579,18 +685,16 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
     conv = solver.follow_path(
         model, intact.x, base, [swelling_load(base, f, 0.0) for f in np.linspace(0, 1, steps + 1)[1:]], **opts
     )[-1]
-    pool_model = sw.get("pool_model", "particles")
-    if pool_model not in POOL_MODELS:
-        raise ValueError(f"unknown pool model {pool_model!r}: one of {', '.join(POOL_MODELS)}")
+    pool = POOL_MODELS.lookup(sw.get("pool_model", POOL_MODELS.paper.name))
+    pool_model = pool.name
     states = [PoolState.of("intact", 0.0, intact, pool_model=pool_model)]
-    if pool_model == "cavity":
-        try:
-            model, conv = _hollowed(model, conv, opts)
-        except solver.NotConverged as exc:
-            reason = f"the unswollen pool has no equilibrium as a cavity ({exc.reason})"
-            log.warning("[%s] the path ends at c = 0 mEq/l: %s", run, reason)
-            ended = PoolState.of("converted", 0.0, conv, pool_model=pool_model)
-            return [replace(s, path_end="no equilibrium", end_reason=reason) for s in states + [ended]]
+    try:
+        model, conv = pool.convert(model, conv, opts)
+    except solver.NotConverged as exc:
+        reason = pool.unconverged(exc)
+        log.warning("[%s] the path ends at c = 0 mEq/l: %s", run, reason)
+        ended = PoolState.of("converted", 0.0, conv, pool_model=pool_model)
+        return [replace(s, path_end="no equilibrium", end_reason=reason) for s in states + [ended]]
     cs = concentration_steps(sw)
     log.info("[%s] swelling: c = %s mEq/l", run, ", ".join(f"{c:g}" for c in cs))
     states.append(PoolState.of("converted", 0.0, conv, model=model, pool_model=pool_model))
@@ -617,25 +721,18 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
     return states
 
 
-def _hollowed(model: Model, state: solver.State, opts: dict) -> tuple[Model, solver.State]:
-    """The model with the pool as the cavity (:func:`state_model`) and its equilibrium at the load of ``state``
-    (raises :class:`sphgag.engine.solver.NotConverged` if it has none near ``state``)."""
-    log.info("[%s] the pool becomes a cavity: its contents swell uniformly, its lining carries Pi", model.name)
-    hollow = state_model(model, True, state.x)
-    return hollow, solver.follow_path(hollow, state.x, state.load, [state.load], **opts)[-1]
-
-
-def state_model(model: Model, cavity: bool, x: np.ndarray, hollow: Model | None = None) -> Model:
+def state_model(
+    model: Model, cavity: bool, x: np.ndarray, hollow: Model | None = None, pool_model: str | None = None
+) -> Model:
     """The model a state of :func:`swell_pool` is in equilibrium with: ``model`` (the run's wall with its pool), or,
-    for a state whose pool is a ``cavity``, ``model`` with its pool as the cavity and the cavity's hourglass form
-    (:data:`POOL_MODELS`; ``hollow`` if given: the pool's particles are held where the pool became a cavity, so any
-    such state of the run rebuilds the same model)."""
+    for a state in the converted wall (``cavity``, :attr:`PoolState.cavity`), the pool model's converted wall
+    (:meth:`PoolModel.converted_model`; ``hollow`` if given: the one an earlier state of the run rebuilt).
+    ``pool_model``: the run's pool model (by default the first that converts its wall, the cavity)."""
     if not cavity:
         return model
-    if hollow is not None:
-        return hollow
-    form = POOL_MODELS["cavity"].hourglass or model.hourglass
-    return pool_cavity.hollow(replace(model, hourglass=form, _cache={}), model.props.converting, x)
+    if pool_model is None:
+        pool_model = next(name for name, p in POOL_MODELS.items() if p.rebuilds)
+    return POOL_MODELS.lookup(pool_model).converted_model(model, x, hollow)
 
 
 def pool_table(model: Model, states: list[PoolState], pool, probe_length: float, gag: Gag | dict) -> pd.DataFrame:
@@ -645,8 +742,8 @@ def pool_table(model: Model, states: list[PoolState], pool, probe_length: float,
     members = model.props.converting  # the seeded pool (history.HistoryMaterial)
     rows, hollow = [], None
     for st in states:
-        at = state_model(model, st.cavity, st.x, hollow)
-        hollow = at if at.cavities else hollow
+        at = st.model(model, hollow)
+        hollow = at if st.cavity else hollow
         ev = at.evaluate(st.x, st.load)
         row = dict(
             stage=st.stage,

@@ -30,16 +30,14 @@ particle. **Measures** (each at a converged state with its residual):
 
 from __future__ import annotations
 
-from dataclasses import replace
-
 import numpy as np
 import pandas as pd
 
-from ..engine import geometry, kernel, measure, pool_cavity, solver
+from ..engine import geometry, kernel, measure, solver
 from ..engine.model import Model
 from ..engine.numerics import Numerics
 from ..physics import cavity
-from . import inclusion
+from . import artery, inclusion, protocols
 
 
 def swell_from_rest(model, pressures, steps: int, numerics: Numerics) -> tuple[dict, str]:
@@ -72,13 +70,12 @@ def solids(mat: inclusion.Materials) -> tuple[cavity.Solid, cavity.Solid]:
 
 def circle_model(A: float, B: float, dx: float, mat: inclusion.Materials, numerics: Numerics, pool_model: str):
     """The quarter annulus with its pool on offset-circle rings, mirror planes on both axes, the outer ring free;
-    ``pool_model``: ``particles`` (the paper's GAG particles) or ``cavity`` (:mod:`sphgag.engine.pool_cavity`)."""
-    model = inclusion.inclusion_model(A, A, dx, B - A, mat, numerics, name=f"circular_pool_dx{dx:g}", free=True)
-    if pool_model == "particles":
-        return model
-    lay = model.layout
-    pool = pool_cavity.Cavity.around(lay, np.flatnonzero(lay.inclusion), lay.X, mirrored=True)
-    return replace(model, name=f"circular_cavity_dx{dx:g}", cavities=(pool,), _cache={})
+    ``pool_model``: a name of :data:`sphgag.studies.protocols.POOL_MODELS` (``particles``, the paper's GAG
+    particles, or ``cavity``, :mod:`sphgag.engine.pool_cavity`), which holds the pool (:meth:`PoolModel.around`)."""
+    pool = protocols.POOL_MODELS.lookup(pool_model)
+    name = f"circular_{pool.noun}_dx{dx:g}"
+    model = inclusion.inclusion_model(A, A, dx, B - A, mat, numerics, name=name, free=True)
+    return pool.around(model, np.flatnonzero(model.layout.inclusion), mirrored=True)
 
 
 def volume_ratio_of(model, ev, members: np.ndarray) -> float:
@@ -211,9 +208,7 @@ def sector_model(walls, pool: geometry.Sector, dx: float, mat: inclusion.Materia
     nb = kernel.for_layout(lay, numerics.kernel_support_factor)
     material = inclusion.InclusionMaterial(lay, mat, members)
     model = Model(f"sector_pool_{pool_model}_dx{dx:g}", lay, nb, material, **numerics.hourglass_control())
-    if pool_model == "cavity":
-        model = replace(model, cavities=(pool_cavity.Cavity.around(lay, members, lay.X),), _cache={})
-    return model, members
+    return protocols.POOL_MODELS.lookup(pool_model).around(model, members), members
 
 
 def sector_study(vs: dict, matrix: dict, gag: dict, numerics: Numerics, pool_model: str, log=None) -> pd.DataFrame:
@@ -221,8 +216,6 @@ def sector_study(vs: dict, matrix: dict, gag: dict, numerics: Numerics, pool_mod
     (``vs``: ``walls_um``, ``pool`` (a figure-4 case), ``probe_length_um``, ``steps``): figure 4's measures
     (:func:`sphgag.studies.protocols.pool_measurements`) and the pool's volume ratio, to compare with
     :func:`sphgag.studies.fe_swelling.sector_pool` on the same geometry and laws."""
-    from . import artery, protocols
-
     numerics = Numerics.of(numerics)
     mat = inclusion.Materials.of(matrix, gag, bulk=True)
     pool = artery.pool_sector(vs["pool"])

@@ -34,7 +34,7 @@ STAGE = "at volume"  # the stage of the states this module returns
 def volume_of(model: Model, state: protocols.PoolState) -> tuple[pool_volume.PoolVolume, float, float]:
     """``(measure, V, V_0)``: the volume measure of the pool in the model ``state`` is in equilibrium with, the
     pool's volume in ``state`` and its reference volume."""
-    at = protocols.state_model(model, state.cavity, state.x)
+    at = state.model(model)
     pool = pool_volume.PoolVolume.of(at, model.props.converting)
     return pool, pool(at.evaluate(state.x, state.load)), float(np.sum(pool.V))
 
@@ -66,7 +66,7 @@ def at_volume_ratios(
         start, (pool, _, v0) = path[k], measured[k]
         if beyond and out and max(out) > ratios[k]:
             start = out[max(out)]
-        at = protocols.state_model(model, start.cavity, start.x)
+        at = start.model(model)
         run = f"{model.name}_J{J:g}"
         try:
             vs = pool_volume.reach_volume(
