@@ -152,7 +152,6 @@ def mean_pressure_diameter(
     ``label`` is the ``model`` column of the transmural table. The mean
     circumferential stretch is normalised by the unloaded geometry (eq. 2.17).
     """
-    numerics = Numerics.of(numerics)
     run = model.name
     lz = p["axial_stretch"]
     R_in, H = p["inner_radius_um"], p["outer_radius_um"] - p["inner_radius_um"]
@@ -170,15 +169,8 @@ def mean_pressure_diameter(
         len(pressures) - 1,
         pressures.max(),
     )
-    states = solver.follow_path(
-        model,
-        model.layout.X,
-        Load(1.0, 0.0),
-        loads,
-        run=run,
-        on_state=log_state(run),
-        **numerics.solver_options(),
-    )
+    path_solver = Numerics.of(numerics).solver(model)
+    states = path_solver.follow_path(model.layout.X, Load(1.0, 0.0), loads, run=run, on_state=log_state(run))
     final = [s for s in states if s.load.axial_stretch == lz]
     wanted = set(np.round(calibration["transmural_pressures_mmHg"], 10))
     table = pd.DataFrame([state_row(model, s, tube, R_in, H) for s in final])
@@ -211,7 +203,13 @@ class Homeostasis:
 
 
 def homeostasis(
-    model: Model, numerics: Numerics, homeo: dict, x0=None, start: Load | None = None, activation: float = 0.0
+    model: Model,
+    numerics: Numerics,
+    homeo: dict,
+    x0=None,
+    start: Load | None = None,
+    activation: float = 0.0,
+    path_solver: solver.Solver | None = None,
 ) -> Homeostasis:
     """Figure 2b: ramp every deposition pre-stretch from 1 to its value, inner radius held.
 
@@ -219,9 +217,11 @@ def homeostasis(
     ways (reactions of the held inner surface, mean radial stress of the inner
     ring, and global equilibrium ``int sigma_tt dr / r_in``). With
     ``activation > 0`` the active tone is ramped afterwards, still at the held
-    radius (``x0``/``start`` then give the passive homeostatic state).
+    radius (``x0``/``start`` then give the passive homeostatic state). ``path_solver``: the
+    :class:`sphgag.engine.solver.Solver` of ``model`` whose paths this one continues (its factorisation cache carries
+    over: the paths of a chain on one model are solved as one); by default a new one with ``numerics``' options.
     """
-    numerics = Numerics.of(numerics)
+    path_solver = path_solver or Numerics.of(numerics).solver(model)
     run = model.name
     R0 = model.layout.inner_radius
     steps = homeo["prestretch_steps"]
@@ -240,9 +240,7 @@ def homeostasis(
         steps,
         R0,
     )
-    state = solver.follow_path(model, x0, start, loads, run=run, on_state=log_state(run), **numerics.solver_options())[
-        -1
-    ]
+    state = path_solver.follow_path(x0, start, loads, run=run, on_state=log_state(run))[-1]
     profile = measure.ring_profile(model, state.evaluation)
     r_in = measure.surface_radius(model, state.x, "inner")
     pressures = dict(
@@ -254,25 +252,23 @@ def homeostasis(
 
 
 def pressurise(
-    model: Model, homeostatic: solver.State, pressure_mmHg: float, numerics: Numerics, on_state=None
+    model: Model,
+    homeostatic: solver.State,
+    pressure_mmHg: float,
+    numerics: Numerics,
+    on_state=None,
+    path_solver: solver.Solver | None = None,
 ) -> solver.State:
     """The homeostatic state (held radius) moved to ``pressure_mmHg`` under pressure control: first the same
     equilibrium under pressure control at the carried pressure P_h, then the pressure. Every pressurised state of the
     pipeline takes this path (:func:`bilayer_pressure_diameter`, the resolution studies, the sensitivity samples), so
-    that the same pressure gives the same state to the bit."""
-    numerics = Numerics.of(numerics)
+    that the same pressure gives the same state to the bit. ``path_solver``: as :func:`homeostasis`'s."""
+    path_solver = path_solver or Numerics.of(numerics).solver(model)
     P_h = measure.carried_pressure(model, homeostatic.evaluation)
     material = homeostatic.load.material
     here = Load(1.0, P_h, material=material)
-    return solver.follow_path(
-        model,
-        homeostatic.x,
-        here,
-        [here, Load(1.0, pressure_mmHg * MMHG_TO_KPA, material=material)],
-        run=model.name,
-        on_state=on_state,
-        **numerics.solver_options(),
-    )[-1]
+    loads = [here, Load(1.0, pressure_mmHg * MMHG_TO_KPA, material=material)]
+    return path_solver.follow_path(homeostatic.x, here, loads, run=model.name, on_state=on_state)[-1]
 
 
 def pressurised_wall(bilayer: dict, numerics: Numerics, homeostasis_settings: dict, pressure_mmHg: float, name: str):
@@ -280,18 +276,26 @@ def pressurised_wall(bilayer: dict, numerics: Numerics, homeostasis_settings: di
     (:func:`homeostasis`, :func:`pressurise`), the state without
     its evaluation (a start for a run)."""
     wall = artery.bilayer_model(bilayer, numerics, name=name)
-    h = homeostasis(wall, numerics, homeostasis_settings)
-    start = pressurise(wall, h.state, pressure_mmHg, numerics)
+    path_solver = Numerics.of(numerics).solver(wall)
+    h = homeostasis(wall, numerics, homeostasis_settings, path_solver=path_solver)
+    start = pressurise(wall, h.state, pressure_mmHg, numerics, path_solver=path_solver)
     return wall, solver.State(start.load, start.x, None, None)
 
 
 def activated(
-    model: Model, homeostatic: solver.State, numerics: Numerics, cal: dict, active: bool, label: str = ""
+    model: Model,
+    homeostatic: solver.State,
+    numerics: Numerics,
+    cal: dict,
+    active: bool,
+    label: str = "",
+    path_solver: solver.Solver | None = None,
 ) -> solver.State:
     """The wall at the activation pressure ``cal["activation_pressure_mmHg"]`` (:func:`pressurise` from the
     homeostatic state), with its active tone (eq. 2.24) ramped there in ``cal["activation_steps"]`` steps if
-    ``active``: the start of the pressure-diameter sweeps and of every pressurised state of the wall."""
-    numerics = Numerics.of(numerics)
+    ``active``: the start of the pressure-diameter sweeps and of every pressurised state of the wall.
+    ``path_solver``: as :func:`homeostasis`'s."""
+    path_solver = path_solver or Numerics.of(numerics).solver(model)
     run = model.name
     P_act = cal["activation_pressure_mmHg"]
     on_state = log_state(run)
@@ -303,7 +307,7 @@ def activated(
         P_act,
         f", then activation in {cal['activation_steps']} steps" if active else "",
     )
-    start = pressurise(model, homeostatic, P_act, numerics, on_state=on_state)
+    start = pressurise(model, homeostatic, P_act, numerics, on_state=on_state, path_solver=path_solver)
     if not active:
         return start
     steps = cal["activation_steps"]
@@ -311,23 +315,27 @@ def activated(
         Load(1.0, P_act * MMHG_TO_KPA, material=(("activation", a), ("prestretch", 1.0)))
         for a in np.linspace(0.0, 1.0, steps + 1)[1:]
     ]
-    return solver.follow_path(
-        model, start.x, start.load, activation, run=run, on_state=on_state, **numerics.solver_options()
-    )[-1]
+    return path_solver.follow_path(start.x, start.load, activation, run=run, on_state=on_state)[-1]
 
 
 def wall_at(
-    model: Model, homeostatic: solver.State, numerics: Numerics, cal: dict, active: bool, pressure_mmHg: float
+    model: Model,
+    homeostatic: solver.State,
+    numerics: Numerics,
+    cal: dict,
+    active: bool,
+    pressure_mmHg: float,
+    path_solver: solver.Solver | None = None,
 ) -> solver.State:
     """The passive or active wall at ``pressure_mmHg`` under pressure control, by the path of the pressure-diameter
     sweep (:func:`activated`, then one step to the pressure): at the activation pressure, the sweep's own state to the
-    bit."""
-    numerics = Numerics.of(numerics)
-    start = activated(model, homeostatic, numerics, cal, active)
+    bit. ``path_solver``: as :func:`homeostasis`'s."""
+    path_solver = path_solver or Numerics.of(numerics).solver(model)
+    start = activated(model, homeostatic, numerics, cal, active, path_solver=path_solver)
     if abs(pressure_mmHg - cal["activation_pressure_mmHg"]) < 1e-12:
         return start
     load = Load(1.0, pressure_mmHg * MMHG_TO_KPA, material=start.load.material)
-    return solver.follow_path(model, start.x, start.load, [load], run=model.name, **numerics.solver_options())[-1]
+    return path_solver.follow_path(start.x, start.load, [load], run=model.name)[-1]
 
 
 def bilayer_pressure_diameter(
@@ -349,9 +357,8 @@ def bilayer_pressure_diameter(
     geometry, as in figure 3a (that of the semi-analytical tube, so that SPH
     points and exact curve share the normalisation).
     """
-    numerics = Numerics.of(numerics)
-    opts = dict(run=model.name, on_state=log_state(model.name), **numerics.solver_options())
-    start = activated(model, homeostatic, numerics, cal, active, label)
+    path_solver = Numerics.of(numerics).solver(model)
+    start = activated(model, homeostatic, numerics, cal, active, label, path_solver)
     P_act = cal["activation_pressure_mmHg"]
     sweep = np.linspace(0.0, cal["max_pressure_mmHg"], cal["pressure_points"])
     pressures = np.unique(np.round(np.concatenate([sweep, cal["state_pressures_mmHg"], [P_act]]), 10))
@@ -360,7 +367,7 @@ def bilayer_pressure_diameter(
     states = [start]
     for branch in (down, up):
         loads = [Load(1.0, P * MMHG_TO_KPA, material=start.load.material) for P in branch]
-        states += solver.follow_path(model, start.x, start.load, loads, **opts)
+        states += path_solver.follow_path(start.x, start.load, loads, run=model.name, on_state=log_state(model.name))
     states.sort(key=lambda s: s.load.pressure_kPa)
     # eq. (2.17) normalised by the traction-free (zero-pressure) geometry of the semi-analytical tube, the
     # same constant for the SPH points and the exact curve
@@ -563,11 +570,11 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
     limit point there, the discretisation fails; the reason is recorded). No state beyond the last equilibrium is
     returned.
     """
-    numerics = Numerics.of(numerics)
+    path_solver = Numerics.of(numerics).solver(model)
     run = model.name
-    opts = dict(run=run, on_state=log_state(run), **numerics.solver_options())
+    opts = dict(run=run, on_state=log_state(run))
     base = swelling_load(start.load, 0.0, 0.0)
-    intact = solver.follow_path(model, start.x, base, [base], **opts)[-1]
+    intact = path_solver.follow_path(start.x, base, [base], **opts)[-1]
     steps = sw["conversion_steps"]
     log.info(
         "[%s] converting %d medial particles to GAG in %d steps at %.1f mmHg",
@@ -576,16 +583,16 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
         steps,
         base.pressure_mmHg,
     )
-    conv = solver.follow_path(
-        model, intact.x, base, [swelling_load(base, f, 0.0) for f in np.linspace(0, 1, steps + 1)[1:]], **opts
-    )[-1]
+    conversion = [swelling_load(base, f, 0.0) for f in np.linspace(0, 1, steps + 1)[1:]]
+    conv = path_solver.follow_path(intact.x, base, conversion, **opts)[-1]
     pool_model = sw.get("pool_model", "particles")
     if pool_model not in POOL_MODELS:
         raise ValueError(f"unknown pool model {pool_model!r}: one of {', '.join(POOL_MODELS)}")
     states = [PoolState.of("intact", 0.0, intact, pool_model=pool_model)]
     if pool_model == "cavity":
         try:
-            model, conv = _hollowed(model, conv, opts)
+            path_solver, conv = _hollowed(path_solver, conv, opts)
+            model = path_solver.model
         except solver.NotConverged as exc:
             reason = f"the unswollen pool has no equilibrium as a cavity ({exc.reason})"
             log.warning("[%s] the path ends at c = 0 mEq/l: %s", run, reason)
@@ -598,13 +605,11 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
     for k, c in enumerate(cs):
         try:  # a step with a fallback: where it finds no equilibrium on its path, the pool's volume takes over
             target = [swelling_load(base, 1.0, c)]
-            budget = dict(opts, max_bisections=solver.FALLBACK_BISECTIONS)  # Newton keeps its iterations: see solver
-            last = solver.follow_path(model, last.x, last.load, target, **budget)[-1]
+            budget = path_solver.using(max_bisections=solver.FALLBACK_BISECTIONS)  # Newton keeps its iterations
+            last = budget.follow_path(last.x, last.load, target, **opts)[-1]
         except solver.NotConverged as exc:
             log.info("[%s] c = %g mEq/l: %s; the pool's volume becomes the control", run, c, exc.reason)
-            path, reached = pool_volume.continue_path(
-                model, last, model.props.converting, list(cs[k:]), run=run, **numerics.solver_options()
-            )
+            path, reached = pool_volume.continue_path(path_solver, last, model.props.converting, list(cs[k:]), run=run)
             states += [
                 PoolState.of("converted", s.load.material_value("concentration"), s, "volume", model, pool_model)
                 for s in reached
@@ -617,12 +622,15 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
     return states
 
 
-def _hollowed(model: Model, state: solver.State, opts: dict) -> tuple[Model, solver.State]:
-    """The model with the pool as the cavity (:func:`state_model`) and its equilibrium at the load of ``state``
-    (raises :class:`sphgag.engine.solver.NotConverged` if it has none near ``state``)."""
+def _hollowed(path_solver: solver.Solver, state: solver.State, opts: dict) -> tuple[solver.Solver, solver.State]:
+    """The solver of the model with the pool as the cavity (:func:`state_model`; a new model, so a solver of its own
+    with the options of ``path_solver``) and its equilibrium at the load of ``state`` (raises
+    :class:`sphgag.engine.solver.NotConverged` if it has none near ``state``). ``opts``: the path's ``run`` and
+    ``on_state``."""
+    model = path_solver.model
     log.info("[%s] the pool becomes a cavity: its contents swell uniformly, its lining carries Pi", model.name)
-    hollow = state_model(model, True, state.x)
-    return hollow, solver.follow_path(hollow, state.x, state.load, [state.load], **opts)[-1]
+    hollow = solver.Solver(state_model(model, True, state.x), path_solver.options)
+    return hollow, hollow.follow_path(state.x, state.load, [state.load], **opts)[-1]
 
 
 def state_model(model: Model, cavity: bool, x: np.ndarray, hollow: Model | None = None) -> Model:
@@ -635,7 +643,7 @@ def state_model(model: Model, cavity: bool, x: np.ndarray, hollow: Model | None 
     if hollow is not None:
         return hollow
     form = POOL_MODELS["cavity"].hourglass or model.hourglass
-    return pool_cavity.hollow(replace(model, hourglass=form, _cache={}), model.props.converting, x)
+    return pool_cavity.hollow(replace(model, hourglass=form), model.props.converting, x)
 
 
 def pool_table(model: Model, states: list[PoolState], pool, probe_length: float, gag: Gag | dict) -> pd.DataFrame:

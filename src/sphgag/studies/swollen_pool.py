@@ -50,14 +50,12 @@ def swell_from_rest(model, pressures, steps: int, numerics: Numerics) -> tuple[d
     loads = sorted(set(ramp.tolist()) | {float(p) for p in pressures})
     reached = {}
     try:
-        solver.follow_path(
-            model,
+        Numerics.of(numerics).solver(model).follow_path(
             model.layout.X,
             inclusion.pressure_load(0.0),
             [inclusion.pressure_load(p) for p in loads],
             run=model.name,
             on_state=lambda st: reached.update({st.load.material_value("swelling_pressure"): st}),
-            **numerics.solver_options(),
         )
     except solver.SimulationError as exc:
         return reached, str(exc)
@@ -78,7 +76,7 @@ def circle_model(A: float, B: float, dx: float, mat: inclusion.Materials, numeri
         return model
     lay = model.layout
     pool = pool_cavity.Cavity.around(lay, np.flatnonzero(lay.inclusion), lay.X, mirrored=True)
-    return replace(model, name=f"circular_cavity_dx{dx:g}", cavities=(pool,), _cache={})
+    return replace(model, name=f"circular_cavity_dx{dx:g}", cavities=(pool,))
 
 
 def volume_ratio_of(model, ev, members: np.ndarray) -> float:
@@ -212,7 +210,7 @@ def sector_model(walls, pool: geometry.Sector, dx: float, mat: inclusion.Materia
     material = inclusion.InclusionMaterial(lay, mat, members)
     model = Model(f"sector_pool_{pool_model}_dx{dx:g}", lay, nb, material, **numerics.hourglass_control())
     if pool_model == "cavity":
-        model = replace(model, cavities=(pool_cavity.Cavity.around(lay, members, lay.X),), _cache={})
+        model = replace(model, cavities=(pool_cavity.Cavity.around(lay, members, lay.X),))
     return model, members
 
 
