@@ -65,7 +65,7 @@ def test_the_viscous_explicit_path_reaches_the_quasi_static_equilibrium(coarse_m
     solver's tolerance."""
     model = _soft(coarse_mean_model)
     load = Load(1.2, 5 * MMHG_TO_KPA)
-    x_n, _, _ = solver.newton(model, model.layout.X, load, tol=1e-12)
+    x_n, _, _ = solver.Solver(model, dict(tol=1e-12)).newton(model.layout.X, load)
     motion = dynamics.Motion.at_rest(model.layout.X)
     stepping = dynamics.Stepping(1.0, 100.0, eta=1.0e4)
     start = Load(1.2, 0.0)

@@ -164,7 +164,7 @@ def test_volume_control_holds_the_concentration_path(swollen_pool):
     assert same.concentration == pytest.approx(50.0, abs=1e-3)
     bigger = pool_volume.solve_at_volume(model, pool, state.x, state.load, 1.05 * v0, 1e-8, 20, "test")
     assert bigger.concentration > 50.0
-    check = solver.follow_path(model, state.x, state.load, [bigger.load], tol=1e-8)[-1]
+    check = solver.Solver(model, dict(tol=1e-8)).follow_path(state.x, state.load, [bigger.load])[-1]
     assert pool(check.evaluation) == pytest.approx(1.05 * v0, rel=1e-6)
 
 
@@ -216,7 +216,7 @@ def test_volume_control_of_a_cavity_holds_its_concentration_path(swollen_cavity)
     assert same.concentration == pytest.approx(50.0, abs=1e-3)
     bigger = pool_volume.solve_at_volume(model, pool, state.x, state.load, 1.05 * v0, 1e-8, 20, "test")
     assert bigger.concentration > 50.0
-    check = solver.follow_path(model, state.x, state.load, [bigger.load], tol=1e-8)[-1]
+    check = solver.Solver(model, dict(tol=1e-8)).follow_path(state.x, state.load, [bigger.load])[-1]
     assert pool(check.evaluation) == pytest.approx(1.05 * v0, rel=1e-6)
 
 

@@ -555,17 +555,3 @@ class Solver:
             cm.seconds + c2.seconds,
         )
         return x2, ev2, total
-
-
-def newton(model: Model, x0: np.ndarray, load: Load, *, run: str | None = None, **options):
-    """:meth:`Solver.newton` with a solver of its own (an empty cache): one solve on ``model`` with the
-    :class:`PathOptions` ``options``."""
-    return Solver(model, options).newton(x0, load, run=run)
-
-
-def follow_path(
-    model: Model, x0: np.ndarray, start: Load, targets: Sequence[Load], *, run=None, on_state=None, **options
-):
-    """:meth:`Solver.follow_path` with a solver of its own (an empty cache): one path on ``model`` with the
-    :class:`PathOptions` ``options``. Paths that follow one another on a model share its :class:`Solver`."""
-    return Solver(model, options).follow_path(x0, start, targets, run=run, on_state=on_state)

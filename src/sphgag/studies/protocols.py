@@ -38,7 +38,8 @@ def pressure_points(calibration: dict) -> np.ndarray:
 
 
 def log_state(run: str):
-    """A ``follow_path`` callback that logs each converged state (progress in the rule log)."""
+    """An ``on_state`` callback of :meth:`sphgag.engine.solver.Solver.follow_path` that logs each converged state
+    (progress in the rule log)."""
 
     def on_state(state: solver.State):
         c = state.convergence
