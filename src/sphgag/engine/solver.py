@@ -21,6 +21,10 @@ A load increment that does not converge is bisected (up to ``max_bisections``
 times). A state with NaN forces, an inverted particle (``det F <= 0``) or no
 convergence stops the run with a :class:`SimulationError` naming the run and
 the load.
+
+A :class:`Solver` is Newton's method and the load paths on one model: it holds the model, the
+:class:`PathOptions` of its paths and the :class:`FactorisationCache` its chord steps reuse. The paths that follow
+one another on a model share its solver; a new model gets a solver of its own.
 """
 
 from __future__ import annotations

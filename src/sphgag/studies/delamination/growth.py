@@ -135,6 +135,11 @@ class GrowthRun:
     that has no equilibrium on its path; :meth:`level` repeats damage passes at one concentration until the pools
     arrest or the run ends; :meth:`run` walks the ramp and returns the
     :class:`Result`. Every state the run holds is converged below the solver tolerance.
+
+    Its paths, snaps and volume-controlled steps are solved by its ``solver`` (a
+    :class:`sphgag.engine.solver.Solver` of the run's model), which every :meth:`branch` of the run shares: one model
+    and one factorisation cache, emptied where the run keeps a snapshot and before each probe of :meth:`critical`.
+    ``name`` is the run's name in logs and errors.
     """
 
     solver: Solver  # of the run's model: its options (Numerics.solver_options) and factorisation cache
