@@ -101,7 +101,9 @@ class Model:
     boundary: Callable[[Load], tuple] | None = None
     hourglass: str = "paper"
     cavities: tuple = ()
-    _cache: dict = field(default_factory=dict, repr=False)
+    # derived data of the fields above (material tables, hourglass stencil): every model object, a replaced one too,
+    # starts with its own, empty
+    _cache: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     def __post_init__(self):
         hourglass.FORMS.lookup(self.hourglass)
@@ -201,6 +203,12 @@ class Model:
         if K is None:
             return None
         return -(K @ (x - self.layout.X).ravel()).reshape(-1, 2)
+
+    def hourglass_matrix(self, load: Load) -> sp.csr_matrix | None:
+        """``K``, the stiffness of the ``energy`` hourglass form for ``load`` (:mod:`sphgag.engine.hourglass`; its
+        forces are ``-K (x - X)``, its energy ``1/2 u K u``), None under eq. (2.14)."""
+        self.material(load)
+        return self._cache["hg_matrix"]
 
     def hourglass_stencil(self, load: Load):
         """``(ah, sh)``: the hourglass stencil's corrected gradients for ``load`` (see :meth:`material`)."""

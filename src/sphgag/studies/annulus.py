@@ -81,44 +81,42 @@ def limit(A: float, B: float, mat: inclusion.Materials) -> cavity.LimitPressure:
     return cavity.limit_pressure(A, B, *swollen_pool.solids(mat))
 
 
-def swell_by_volume(model, pressures, numerics: Numerics, max_ratio: float) -> tuple[dict, str]:
+def swell_by_volume(path_solver: solver.Solver, pressures, max_ratio: float) -> tuple[dict, str]:
     """``({Pi: converged state}, end)``: the pool swollen from rest with its volume as the control (steps of at most
     5 %, the pressure the unknown: :func:`sphgag.engine.pool_volume.continue_path`), each of ``pressures`` solved by
     load control from the state before it; ``end`` is ``complete`` or why the path stopped. Near the limit the
     volume at a given pressure is ill-conditioned and load control creeps through ever smaller increments; a
-    prescribed volume is not, and every step converges in a few iterations."""
-    opts = numerics.solver_options()
+    prescribed volume is not, and every step converges in a few iterations. ``path_solver``: the solver of the
+    annulus' model."""
+    model = path_solver.model
     rest = inclusion.pressure_load(0.0)
-    start = solver.follow_path(model, model.layout.X, rest, [rest], run=model.name, **opts)[-1]
+    start = path_solver.follow_path(model.layout.X, rest, [rest], run=model.name)[-1]
     members = np.flatnonzero(model.layout.inclusion)
     path, reached = pool_volume.continue_path(
-        model, start, members, list(pressures), run=model.name, max_ratio=max_ratio, parameter="swelling_pressure",
-        **opts,
-    )  # fmt: skip
+        path_solver, start, members, list(pressures), run=model.name, max_ratio=max_ratio, parameter="swelling_pressure"
+    )
     at = {s.load.material_value("swelling_pressure"): s for s in reached}
     return at, "complete" if path.end == "complete" else f"{path.end}: {path.reason}"
 
 
-def beyond_limit(model, last, pressure_kPa: float, members: np.ndarray, numerics: Numerics, max_ratio: float) -> dict:
+def beyond_limit(path_solver: solver.Solver, last, pressure_kPa: float, members: np.ndarray, max_ratio: float) -> dict:
     """What the engine does above the exact limit: from the converged state ``last``, load control to
-    ``pressure_kPa`` (with the bisections of a transition, :func:`sphgag.engine.solver.transition_options`); where it
-    fails, as it must, volume control with the pressure as the unknown
+    ``pressure_kPa`` (with the options of a transition, :meth:`sphgag.engine.solver.PathOptions.for_transition`);
+    where it fails, as it must, volume control with the pressure as the unknown
     (:func:`sphgag.engine.pool_volume.continue_path`, up to ``max_ratio`` times the pool's reference volume) finds the
     discrete path's limit point or shows the pressure still rising (a saturation). ``state_beyond``: a state was
-    reached at ``pressure_kPa`` (a defect: the exact solution has none)."""
-    opts = numerics.solver_options()
+    reached at ``pressure_kPa`` (a defect: the exact solution has none). ``path_solver``: the solver of the path
+    that reached ``last``."""
+    model = path_solver.model
     try:
-        solver.follow_path(
-            model, last.x, last.load, [inclusion.pressure_load(pressure_kPa)], run=model.name,
-            **solver.transition_options(opts),
-        )  # fmt: skip
+        transition = path_solver.using(path_solver.options.for_transition())
+        transition.follow_path(last.x, last.load, [inclusion.pressure_load(pressure_kPa)], run=model.name)
         return dict(beyond_end="state", beyond_reason=f"a state at Pi = {pressure_kPa:.4g} kPa", state_beyond=True)
     except solver.SimulationError as exc:
         load_control = exc.reason
     path, reached = pool_volume.continue_path(
-        model, last, members, [pressure_kPa], run=model.name, max_ratio=max_ratio, parameter="swelling_pressure",
-        **opts,
-    )  # fmt: skip
+        path_solver, last, members, [pressure_kPa], run=model.name, max_ratio=max_ratio, parameter="swelling_pressure"
+    )
     held = [s.concentration for s in path.states]
     return dict(
         beyond_end=path.end,
@@ -147,7 +145,8 @@ def annulus_study(va: dict, matrix: dict, gag: dict, numerics, pool_model: str, 
         pressures = [f * top.pressure_kPa for f in fractions]
         for dx in va["dx_um"]:
             model = swollen_pool.circle_model(A, B, float(dx), mat, numerics, POOL_MODELS[pool_model].engine)
-            at, end = swell_by_volume(model, pressures, numerics, float(va["max_volume_ratio"]))
+            path_solver = numerics.solver(model)  # one solver for the model's paths, beyond the limit too
+            at, end = swell_by_volume(path_solver, pressures, float(va["max_volume_ratio"]))
             case = dict(
                 pool_model=pool_model,
                 outer_ratio=float(ratio),
@@ -177,7 +176,7 @@ def annulus_study(va: dict, matrix: dict, gag: dict, numerics, pool_model: str, 
                 continue
             p = float(va["beyond"]) * top.pressure_kPa
             members = np.flatnonzero(model.layout.inclusion)
-            found = beyond_limit(model, at[pressures[-1]], p, members, numerics, float(va["max_volume_ratio"]))
+            found = beyond_limit(path_solver, at[pressures[-1]], p, members, float(va["max_volume_ratio"]))
             rows.append(dict(case, fraction=float(va["beyond"]), pressure_kPa=p, state=found["state_beyond"], **found))
             if log is not None:
                 log.info("[%s B/A=%g] %.2f of the limit: %s", model.name, ratio, va["beyond"], found["beyond_reason"])

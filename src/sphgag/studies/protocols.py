@@ -40,7 +40,8 @@ def pressure_points(calibration: dict) -> np.ndarray:
 
 
 def log_state(run: str):
-    """A ``follow_path`` callback that logs each converged state (progress in the rule log)."""
+    """An ``on_state`` callback of :meth:`sphgag.engine.solver.Solver.follow_path` that logs each converged state
+    (progress in the rule log)."""
 
     def on_state(state: solver.State):
         c = state.convergence
@@ -154,7 +155,6 @@ def mean_pressure_diameter(
     ``label`` is the ``model`` column of the transmural table. The mean
     circumferential stretch is normalised by the unloaded geometry (eq. 2.17).
     """
-    numerics = Numerics.of(numerics)
     run = model.name
     lz = p["axial_stretch"]
     R_in, H = p["inner_radius_um"], p["outer_radius_um"] - p["inner_radius_um"]
@@ -172,15 +172,8 @@ def mean_pressure_diameter(
         len(pressures) - 1,
         pressures.max(),
     )
-    states = solver.follow_path(
-        model,
-        model.layout.X,
-        Load(1.0, 0.0),
-        loads,
-        run=run,
-        on_state=log_state(run),
-        **numerics.solver_options(),
-    )
+    path_solver = Numerics.of(numerics).solver(model)
+    states = path_solver.follow_path(model.layout.X, Load(1.0, 0.0), loads, run=run, on_state=log_state(run))
     final = [s for s in states if s.load.axial_stretch == lz]
     wanted = set(np.round(calibration["transmural_pressures_mmHg"], 10))
     table = pd.DataFrame([state_row(model, s, tube, R_in, H) for s in final])
@@ -213,7 +206,13 @@ class Homeostasis:
 
 
 def homeostasis(
-    model: Model, numerics: Numerics, homeo: dict, x0=None, start: Load | None = None, activation: float = 0.0
+    model: Model,
+    numerics: Numerics,
+    homeo: dict,
+    x0=None,
+    start: Load | None = None,
+    activation: float = 0.0,
+    path_solver: solver.Solver | None = None,
 ) -> Homeostasis:
     """Figure 2b: ramp every deposition pre-stretch from 1 to its value, inner radius held.
 
@@ -221,9 +220,11 @@ def homeostasis(
     ways (reactions of the held inner surface, mean radial stress of the inner
     ring, and global equilibrium ``int sigma_tt dr / r_in``). With
     ``activation > 0`` the active tone is ramped afterwards, still at the held
-    radius (``x0``/``start`` then give the passive homeostatic state).
+    radius (``x0``/``start`` then give the passive homeostatic state). ``path_solver``: the
+    :class:`sphgag.engine.solver.Solver` of ``model`` whose paths this one continues (its factorisation cache carries
+    over: the paths of a chain on one model are solved as one); by default a new one with ``numerics``' options.
     """
-    numerics = Numerics.of(numerics)
+    path_solver = path_solver or Numerics.of(numerics).solver(model)
     run = model.name
     R0 = model.layout.inner_radius
     steps = homeo["prestretch_steps"]
@@ -242,9 +243,7 @@ def homeostasis(
         steps,
         R0,
     )
-    state = solver.follow_path(model, x0, start, loads, run=run, on_state=log_state(run), **numerics.solver_options())[
-        -1
-    ]
+    state = path_solver.follow_path(x0, start, loads, run=run, on_state=log_state(run))[-1]
     profile = measure.ring_profile(model, state.evaluation)
     r_in = measure.surface_radius(model, state.x, "inner")
     pressures = dict(
@@ -256,25 +255,23 @@ def homeostasis(
 
 
 def pressurise(
-    model: Model, homeostatic: solver.State, pressure_mmHg: float, numerics: Numerics, on_state=None
+    model: Model,
+    homeostatic: solver.State,
+    pressure_mmHg: float,
+    numerics: Numerics,
+    on_state=None,
+    path_solver: solver.Solver | None = None,
 ) -> solver.State:
     """The homeostatic state (held radius) moved to ``pressure_mmHg`` under pressure control: first the same
     equilibrium under pressure control at the carried pressure P_h, then the pressure. Every pressurised state of the
     pipeline takes this path (:func:`bilayer_pressure_diameter`, the resolution studies, the sensitivity samples), so
-    that the same pressure gives the same state to the bit."""
-    numerics = Numerics.of(numerics)
+    that the same pressure gives the same state to the bit. ``path_solver``: as :func:`homeostasis`'s."""
+    path_solver = path_solver or Numerics.of(numerics).solver(model)
     P_h = measure.carried_pressure(model, homeostatic.evaluation)
     material = homeostatic.load.material
     here = Load(1.0, P_h, material=material)
-    return solver.follow_path(
-        model,
-        homeostatic.x,
-        here,
-        [here, Load(1.0, pressure_mmHg * MMHG_TO_KPA, material=material)],
-        run=model.name,
-        on_state=on_state,
-        **numerics.solver_options(),
-    )[-1]
+    loads = [here, Load(1.0, pressure_mmHg * MMHG_TO_KPA, material=material)]
+    return path_solver.follow_path(homeostatic.x, here, loads, run=model.name, on_state=on_state)[-1]
 
 
 def pressurised_wall(bilayer: dict, numerics: Numerics, homeostasis_settings: dict, pressure_mmHg: float, name: str):
@@ -282,18 +279,26 @@ def pressurised_wall(bilayer: dict, numerics: Numerics, homeostasis_settings: di
     (:func:`homeostasis`, :func:`pressurise`), the state without
     its evaluation (a start for a run)."""
     wall = artery.bilayer_model(bilayer, numerics, name=name)
-    h = homeostasis(wall, numerics, homeostasis_settings)
-    start = pressurise(wall, h.state, pressure_mmHg, numerics)
+    path_solver = Numerics.of(numerics).solver(wall)
+    h = homeostasis(wall, numerics, homeostasis_settings, path_solver=path_solver)
+    start = pressurise(wall, h.state, pressure_mmHg, numerics, path_solver=path_solver)
     return wall, solver.State(start.load, start.x, None, None)
 
 
 def activated(
-    model: Model, homeostatic: solver.State, numerics: Numerics, cal: dict, active: bool, label: str = ""
+    model: Model,
+    homeostatic: solver.State,
+    numerics: Numerics,
+    cal: dict,
+    active: bool,
+    label: str = "",
+    path_solver: solver.Solver | None = None,
 ) -> solver.State:
     """The wall at the activation pressure ``cal["activation_pressure_mmHg"]`` (:func:`pressurise` from the
     homeostatic state), with its active tone (eq. 2.24) ramped there in ``cal["activation_steps"]`` steps if
-    ``active``: the start of the pressure-diameter sweeps and of every pressurised state of the wall."""
-    numerics = Numerics.of(numerics)
+    ``active``: the start of the pressure-diameter sweeps and of every pressurised state of the wall.
+    ``path_solver``: as :func:`homeostasis`'s."""
+    path_solver = path_solver or Numerics.of(numerics).solver(model)
     run = model.name
     P_act = cal["activation_pressure_mmHg"]
     on_state = log_state(run)
@@ -305,7 +310,7 @@ def activated(
         P_act,
         f", then activation in {cal['activation_steps']} steps" if active else "",
     )
-    start = pressurise(model, homeostatic, P_act, numerics, on_state=on_state)
+    start = pressurise(model, homeostatic, P_act, numerics, on_state=on_state, path_solver=path_solver)
     if not active:
         return start
     steps = cal["activation_steps"]
@@ -313,23 +318,27 @@ def activated(
         Load(1.0, P_act * MMHG_TO_KPA, material=(("activation", a), ("prestretch", 1.0)))
         for a in np.linspace(0.0, 1.0, steps + 1)[1:]
     ]
-    return solver.follow_path(
-        model, start.x, start.load, activation, run=run, on_state=on_state, **numerics.solver_options()
-    )[-1]
+    return path_solver.follow_path(start.x, start.load, activation, run=run, on_state=on_state)[-1]
 
 
 def wall_at(
-    model: Model, homeostatic: solver.State, numerics: Numerics, cal: dict, active: bool, pressure_mmHg: float
+    model: Model,
+    homeostatic: solver.State,
+    numerics: Numerics,
+    cal: dict,
+    active: bool,
+    pressure_mmHg: float,
+    path_solver: solver.Solver | None = None,
 ) -> solver.State:
     """The passive or active wall at ``pressure_mmHg`` under pressure control, by the path of the pressure-diameter
     sweep (:func:`activated`, then one step to the pressure): at the activation pressure, the sweep's own state to the
-    bit."""
-    numerics = Numerics.of(numerics)
-    start = activated(model, homeostatic, numerics, cal, active)
+    bit. ``path_solver``: as :func:`homeostasis`'s."""
+    path_solver = path_solver or Numerics.of(numerics).solver(model)
+    start = activated(model, homeostatic, numerics, cal, active, path_solver=path_solver)
     if abs(pressure_mmHg - cal["activation_pressure_mmHg"]) < 1e-12:
         return start
     load = Load(1.0, pressure_mmHg * MMHG_TO_KPA, material=start.load.material)
-    return solver.follow_path(model, start.x, start.load, [load], run=model.name, **numerics.solver_options())[-1]
+    return path_solver.follow_path(start.x, start.load, [load], run=model.name)[-1]
 
 
 def bilayer_pressure_diameter(
@@ -351,9 +360,8 @@ def bilayer_pressure_diameter(
     geometry, as in figure 3a (that of the semi-analytical tube, so that SPH
     points and exact curve share the normalisation).
     """
-    numerics = Numerics.of(numerics)
-    opts = dict(run=model.name, on_state=log_state(model.name), **numerics.solver_options())
-    start = activated(model, homeostatic, numerics, cal, active, label)
+    path_solver = Numerics.of(numerics).solver(model)
+    start = activated(model, homeostatic, numerics, cal, active, label, path_solver)
     P_act = cal["activation_pressure_mmHg"]
     sweep = np.linspace(0.0, cal["max_pressure_mmHg"], cal["pressure_points"])
     pressures = np.unique(np.round(np.concatenate([sweep, cal["state_pressures_mmHg"], [P_act]]), 10))
@@ -362,7 +370,7 @@ def bilayer_pressure_diameter(
     states = [start]
     for branch in (down, up):
         loads = [Load(1.0, P * MMHG_TO_KPA, material=start.load.material) for P in branch]
-        states += solver.follow_path(model, start.x, start.load, loads, **opts)
+        states += path_solver.follow_path(start.x, start.load, loads, run=model.name, on_state=log_state(model.name))
     states.sort(key=lambda s: s.load.pressure_kPa)
     # eq. (2.17) normalised by the traction-free (zero-pressure) geometry of the semi-analytical tube, the
     # same constant for the SPH points and the exact curve
@@ -558,11 +566,14 @@ class PoolModel(Variant):
         (``mirrored``: a pool about the origin of a quarter layout)."""
         return model
 
-    def convert(self, model: Model, state: solver.State, opts: dict) -> tuple[Model, solver.State]:
-        """``(wall, state)`` once the pool of ``model`` is converted at ``state`` (c = 0): the wall the swelling runs
-        on and its equilibrium (raises :class:`sphgag.engine.solver.NotConverged`, with :meth:`unconverged`'s
-        reason, where it has none near ``state``)."""
-        return model, state
+    def convert(
+        self, path_solver: solver.Solver, state: solver.State, opts: dict
+    ) -> tuple[solver.Solver, solver.State]:
+        """``(solver, state)`` once the pool of the wall of ``path_solver`` is converted at ``state`` (c = 0): the
+        solver of the wall the swelling runs on (a new wall has a solver of its own, with the same options) and its
+        equilibrium (raises :class:`sphgag.engine.solver.NotConverged`, with :meth:`unconverged`'s reason, where it has
+        none near ``state``). ``opts``: the path's ``run`` and ``on_state``."""
+        return path_solver, state
 
     def unconverged(self, exc: solver.NotConverged) -> str:
         """Why the path of the run ends at conversion, where :meth:`convert` found no equilibrium."""
@@ -591,12 +602,13 @@ class CavityPool(PoolModel):
 
     def around(self, model, members, mirrored=False):
         cavity = pool_cavity.Cavity.around(model.layout, members, model.layout.X, mirrored=mirrored)
-        return replace(model, cavities=(cavity,), _cache={})
+        return replace(model, cavities=(cavity,))
 
-    def convert(self, model, state, opts):
+    def convert(self, path_solver, state, opts):
+        model = path_solver.model
         log.info("[%s] the pool becomes a cavity: its contents swell uniformly, its lining carries Pi", model.name)
-        hollow = self.converted_model(model, state.x)
-        return hollow, solver.follow_path(hollow, state.x, state.load, [state.load], **opts)[-1]
+        hollow = solver.Solver(self.converted_model(model, state.x), path_solver.options)  # a new model's own cache
+        return hollow, hollow.follow_path(state.x, state.load, [state.load], **opts)[-1]
 
     def unconverged(self, exc):
         return f"the unswollen pool has no equilibrium as a cavity ({exc.reason})"
@@ -618,7 +630,7 @@ class CavityPool(PoolModel):
                 form,
                 model.hourglass,
             )
-        return pool_cavity.hollow(replace(model, hourglass=form, _cache={}), model.props.converting, x)
+        return pool_cavity.hollow(replace(model, hourglass=form), model.props.converting, x)
 
 
 #: the pool models of the figure 4 runs and the pool verifications, by name (the paper's first): ``particles``, the
@@ -669,11 +681,11 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
     limit point there, the discretisation fails; the reason is recorded). No state beyond the last equilibrium is
     returned.
     """
-    numerics = Numerics.of(numerics)
+    path_solver = Numerics.of(numerics).solver(model)
     run = model.name
-    opts = dict(run=run, on_state=log_state(run), **numerics.solver_options())
+    opts = dict(run=run, on_state=log_state(run))
     base = swelling_load(start.load, 0.0, 0.0)
-    intact = solver.follow_path(model, start.x, base, [base], **opts)[-1]
+    intact = path_solver.follow_path(start.x, base, [base], **opts)[-1]
     steps = sw["conversion_steps"]
     log.info(
         "[%s] converting %d medial particles to GAG in %d steps at %.1f mmHg",
@@ -682,14 +694,14 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
         steps,
         base.pressure_mmHg,
     )
-    conv = solver.follow_path(
-        model, intact.x, base, [swelling_load(base, f, 0.0) for f in np.linspace(0, 1, steps + 1)[1:]], **opts
-    )[-1]
+    conversion = [swelling_load(base, f, 0.0) for f in np.linspace(0, 1, steps + 1)[1:]]
+    conv = path_solver.follow_path(intact.x, base, conversion, **opts)[-1]
     pool = POOL_MODELS.lookup(sw.get("pool_model", POOL_MODELS.paper.name))
     pool_model = pool.name
     states = [PoolState.of("intact", 0.0, intact, pool_model=pool_model)]
     try:
-        model, conv = pool.convert(model, conv, opts)
+        path_solver, conv = pool.convert(path_solver, conv, opts)
+        model = path_solver.model
     except solver.NotConverged as exc:
         reason = pool.unconverged(exc)
         log.warning("[%s] the path ends at c = 0 mEq/l: %s", run, reason)
@@ -702,13 +714,11 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
     for k, c in enumerate(cs):
         try:  # a step with a fallback: where it finds no equilibrium on its path, the pool's volume takes over
             target = [swelling_load(base, 1.0, c)]
-            budget = dict(opts, max_bisections=solver.FALLBACK_BISECTIONS)  # Newton keeps its iterations: see solver
-            last = solver.follow_path(model, last.x, last.load, target, **budget)[-1]
+            budget = path_solver.using(max_bisections=solver.FALLBACK_BISECTIONS)  # Newton keeps its iterations
+            last = budget.follow_path(last.x, last.load, target, **opts)[-1]
         except solver.NotConverged as exc:
             log.info("[%s] c = %g mEq/l: %s; the pool's volume becomes the control", run, c, exc.reason)
-            path, reached = pool_volume.continue_path(
-                model, last, model.props.converting, list(cs[k:]), run=run, **numerics.solver_options()
-            )
+            path, reached = pool_volume.continue_path(path_solver, last, model.props.converting, list(cs[k:]), run=run)
             states += [
                 PoolState.of("converted", s.load.material_value("concentration"), s, "volume", model, pool_model)
                 for s in reached

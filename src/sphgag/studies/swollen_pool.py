@@ -48,14 +48,12 @@ def swell_from_rest(model, pressures, steps: int, numerics: Numerics) -> tuple[d
     loads = sorted(set(ramp.tolist()) | {float(p) for p in pressures})
     reached = {}
     try:
-        solver.follow_path(
-            model,
+        Numerics.of(numerics).solver(model).follow_path(
             model.layout.X,
             inclusion.pressure_load(0.0),
             [inclusion.pressure_load(p) for p in loads],
             run=model.name,
             on_state=lambda st: reached.update({st.load.material_value("swelling_pressure"): st}),
-            **numerics.solver_options(),
         )
     except solver.SimulationError as exc:
         return reached, str(exc)

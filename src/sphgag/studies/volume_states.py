@@ -46,8 +46,7 @@ def at_volume_ratios(
     which the pool holds the volume ratio ``J``, for each ``J`` of ``targets`` that the path passes, or beyond the end
     of a path that lost equilibrium. Each is solved from the last state below it (of the path, or one reached beyond
     it), with the concentration as the unknown; its ``control`` is ``volume`` and its stage :data:`STAGE`."""
-    numerics = Numerics.of(numerics)
-    opts = numerics.solver_options()
+    opts = Numerics.of(numerics).solver_options()
     path = [s for s in states if s.stage == "converted"]
     if not path:
         return {}
@@ -70,7 +69,7 @@ def at_volume_ratios(
         run = f"{model.name}_J{J:g}"
         try:
             vs = pool_volume.reach_volume(
-                at, pool, start.x, start.load, J * v0, run=run, tol=opts["tol"], max_iter=opts["max_iter"]
+                at, pool, start.x, start.load, J * v0, run=run, tol=opts.tol, max_iter=opts.max_iter
             )
         except solver.SimulationError as exc:
             log.warning("[%s] no state at J = %g: %s", run, J, exc.reason)
