@@ -66,9 +66,7 @@ def main():
     # a representative pressurised state: 103 mmHg
     lz = p["axial_stretch"]
     load = Load(lz, 103 * MMHG_TO_KPA)
-    states = protocols.solver.follow_path(
-        model, model.layout.X, Load(1.0, 0.0), [Load(lz, 0.0), load], **Numerics.of(numerics).solver_options()
-    )
+    states = Numerics.of(numerics).solver(model).follow_path(model.layout.X, Load(1.0, 0.0), [Load(lz, 0.0), load])
     x = states[-1].x
     props, _, pairs = model.material(load)
     n = model.n

@@ -88,28 +88,27 @@ def measure(dx: float, config_path: str) -> dict:
     row["solve_ms"] = 1e3 * median_time(lambda: solve(rhs), 10)
     row["superlu_factorisation_ms"] = 1e3 * median_time(lambda: spla.splu(A, permc_spec="NATURAL"), 3)
 
-    def factorised_at_start():
-        """The model as a run leaves it at the start state: with the LU of its Jacobian there."""
-        solver.factorisation_cache(model).keep(solver.factorise(model, ev, model.jacobian(ev), 0.0, model.name))
+    def factorised_at_start(path_solver):
+        """The solver as a run leaves it at the start state: with the LU of the Jacobian there."""
+        path_solver.cache.keep(solver.factorise(model, ev, model.jacobian(ev), 0.0, model.name))
 
     for label, reuse in (("", numerics["reuse_factorisation"]), ("_fresh_newton", False)):
-        opts = dict(Numerics.of(numerics).solver_options(), reuse=reuse)
-        opts.pop("max_bisections")
-        factorised_at_start()
+        path_solver = Numerics.of(numerics).solver(model).using(reuse=reuse)
+        factorised_at_start(path_solver)
         times, xs, current = [], x, load
         for _ in range(3):
             target = Load(1.0, current.pressure_kPa + MMHG_TO_KPA, material=current.material)
             t = time.perf_counter()
-            xs, _, conv = solver.newton(model, xs, target, **opts)
+            xs, _, conv = path_solver.newton(xs, target)
             times.append(time.perf_counter() - t)
             current = target
         row[f"state_after_load_step_ms{label}"] = 1e3 * float(np.median(times))
         converted = protocols.swelling_load(load, 1.0, 0.0)
         times = []
         for _ in range(3):
-            factorised_at_start()
+            factorised_at_start(path_solver)
             t = time.perf_counter()
-            solver.newton(model, x, converted, **opts)
+            path_solver.newton(x, converted)
             times.append(time.perf_counter() - t)
         row[f"state_after_conversion_ms{label}"] = 1e3 * float(np.median(times))
         # the conversion of delamination: a particle whose damage has reached D = 1 ((1 - D) W = 0) becomes GAG
@@ -118,14 +117,15 @@ def measure(dx: float, config_path: str) -> dict:
         ruptured = HistoryMaterial(model.props.base, damaged, cfg["gag"])
         gag = HistoryMaterial(model.props.base, damaged.rupture(one, np.zeros(one.size, dtype=int), 1), cfg["gag"])
         fixed = Model(model.name, model.layout, model.nb, ruptured, model.hourglass_alpha)
-        xd, evd, _ = solver.newton(fixed, x, load, **opts)
+        fixed_solver = solver.Solver(fixed, path_solver.options)
+        xd, evd, _ = fixed_solver.newton(x, load)
         times = []
         for _ in range(3):
             fixed.set_props(ruptured)
-            solver.factorisation_cache(fixed).keep(solver.factorise(fixed, evd, fixed.jacobian(evd), 0.0, model.name))
+            fixed_solver.cache.keep(solver.factorise(fixed, evd, fixed.jacobian(evd), 0.0, model.name))
             fixed.set_props(gag)
             t = time.perf_counter()
-            solver.newton(fixed, xd, load, **opts)
+            fixed_solver.newton(xd, load)
             times.append(time.perf_counter() - t)
         row[f"state_after_ruptured_conversion_ms{label}"] = 1e3 * float(np.median(times))
     row["peak_memory_mb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0

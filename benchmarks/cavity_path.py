@@ -26,6 +26,7 @@ sys.path.insert(0, str(ROOT / "src"))
 
 from sphgag import config, threads  # noqa: E402
 from sphgag.engine import pool_volume, solver  # noqa: E402
+from sphgag.engine.numerics import Numerics  # noqa: E402
 from sphgag.physics import materials  # noqa: E402
 from sphgag.studies import artery, convergence, protocols  # noqa: E402
 
@@ -47,9 +48,9 @@ def trace(cfg: dict, dx: float, case: str, start: float, max_ratio: float) -> pd
         return pd.DataFrame()
     model = convergence.case_model(dx, cfg["bilayer"], numerics, gag, entry, f"cavity_path_dx{dx:g}")
     hollow = protocols.state_model(model, True, last.x)
-    opts = dict(tol=numerics["tolerance"], max_iter=numerics["max_newton_iterations"], run=hollow.name)
+    path_solver = solver.Solver(hollow, Numerics.of(numerics).solver_options().newton_budget())
     path, _ = pool_volume.continue_path(
-        hollow, solver.State(last.load, last.x, None, None), hollow.props.converting, [1e9], max_ratio=max_ratio, **opts
+        path_solver, solver.State(last.load, last.x, None, None), hollow.props.converting, [1e9], max_ratio=max_ratio
     )
     pool = artery.pool_sector(entry)
     rows = []

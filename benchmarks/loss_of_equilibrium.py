@@ -39,6 +39,7 @@ from sphgag import config, threads  # noqa: E402
 from sphgag.engine import measure, solver  # noqa: E402
 from sphgag.engine.history import HistoryMaterial  # noqa: E402
 from sphgag.engine.model import Model  # noqa: E402
+from sphgag.engine.numerics import Numerics  # noqa: E402
 from sphgag.physics import materials  # noqa: E402
 from sphgag.studies import artery, delamination, protocols  # noqa: E402
 
@@ -140,11 +141,11 @@ def main():
     model.set_props(HistoryMaterial(base, hist, gag, new))
     load = state.load
     x, t, dt, stall = state.x, 0.0, 0.25, None
-    opts = dict(tol=numerics["tolerance"], max_iter=numerics["max_newton_iterations"], run="loss_of_equilibrium")
+    handoffs = solver.Solver(model, Numerics.of(numerics).solver_options().newton_budget())
     while t < 1.0 and dt >= 1.0 / 1024:
         target = min(t + dt, 1.0)
         try:
-            x = solver.newton(model, x, load.with_material(transition=target), **opts)[0]
+            x = handoffs.newton(x, load.with_material(transition=target), run="loss_of_equilibrium")[0]
             t = target
         except solver.NotConverged as exc:
             stall = exc

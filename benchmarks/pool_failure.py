@@ -43,6 +43,7 @@ from loss_of_equilibrium import eigenpairs  # noqa: E402
 from sphgag import config, threads  # noqa: E402
 from sphgag.engine import geometry, hourglass, measure, pool_cavity, solver  # noqa: E402
 from sphgag.engine.model import Model  # noqa: E402
+from sphgag.engine.numerics import Numerics  # noqa: E402
 from sphgag.physics import materials  # noqa: E402
 from sphgag.studies import artery, protocols  # noqa: E402
 
@@ -144,30 +145,20 @@ def run(cfg, dx, args) -> dict:
     members = model.props.converting
     masks = classes(model, members, sector)
     sw = dict(cfg["swelling"], concentration_points=int(round(150.0 / args.step)) + 1)
-    opts = dict(
-        tol=numerics["tolerance"],
-        max_iter=numerics["max_newton_iterations"],
-        max_bisections=args.bisections,
-        reuse=numerics["reuse_factorisation"],
-        run=model.name,
-    )
+    path_solver = Numerics.of(numerics).solver(model).using(max_bisections=args.bisections)
     t0 = time.time()
     base = protocols.swelling_load(start.load, 0.0, 0.0)
-    state = solver.follow_path(
-        model,
-        start.x,
-        base,
-        [protocols.swelling_load(base, f, 0.0) for f in np.linspace(0, 1, sw["conversion_steps"] + 1)[1:]],
-        **opts,
-    )[-1]
+    conversion = [protocols.swelling_load(base, f, 0.0) for f in np.linspace(0, 1, sw["conversion_steps"] + 1)[1:]]
+    state = path_solver.follow_path(start.x, base, conversion)[-1]
     V = model.layout.volume[members]
     if args.pool == "cavity":
         cav = pool_cavity.Cavity.around(model.layout, members, state.x)
-        model = dataclasses.replace(model, cavities=(cav,), _cache={})
+        model = dataclasses.replace(model, cavities=(cav,))
+        path_solver = solver.Solver(model, path_solver.options)
     reached, stall, path = 0.0, None, []
     for c in protocols.concentration_steps(sw):
         try:
-            state = solver.follow_path(model, state.x, state.load, [protocols.swelling_load(base, 1.0, c)], **opts)[-1]
+            state = path_solver.follow_path(state.x, state.load, [protocols.swelling_load(base, 1.0, c)])[-1]
             reached = float(c)
             Jc = measure.cauchy_polar(state.evaluation)[3]
             cavity_ratio = cav.volume_ratio(state.x) if args.pool == "cavity" else None

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from sphgag import config, threads
-from sphgag.engine import geometry, kernel, solver
+from sphgag.engine import geometry, kernel
 from sphgag.engine.model import Model
 from sphgag.physics import materials
 from sphgag.studies import artery, protocols
@@ -134,10 +134,13 @@ def ci_config():
 def ci_wall(ci_config):
     """The passive CI wall pressurised to the delamination pressure (a state to seed pools in)."""
     numerics = ci_config["numerics"]
-    model = artery.bilayer_model(ci_config["bilayer"], numerics, name="test-wall")
-    h = protocols.homeostasis(model, numerics, ci_config["homeostasis"])
-    start = protocols.pressurise(model, h.state, ci_config["delamination"]["pressure_mmHg"], numerics)
-    return solver.State(start.load, start.x, None, None)
+    return protocols.pressurised_wall(
+        ci_config["bilayer"],
+        numerics,
+        ci_config["homeostasis"],
+        ci_config["delamination"]["pressure_mmHg"],
+        "test-wall",
+    )[1]
 
 
 @pytest.fixture(scope="session")

@@ -5,6 +5,7 @@ import dataclasses
 import pytest
 
 from sphgag import config
+from sphgag.engine import solver
 from sphgag.engine.numerics import Numerics
 from sphgag.engine.solver import PathOptions
 from sphgag.physics.materials import Gag, law_gag
@@ -14,7 +15,7 @@ from sphgag.studies.artery import Bilayer, FibreConstants
 def test_numerics_from_the_configuration(ci_config):
     n = Numerics.of(ci_config["numerics"])
     assert n.tolerance == ci_config["numerics"]["tolerance"] and Numerics.of(n) is n
-    assert n.solver_options()["tol"] == n.tolerance
+    assert n.solver_options().tol == n.tolerance
     with pytest.raises(dataclasses.FrozenInstanceError):
         n.tolerance = 1.0
 
@@ -30,10 +31,11 @@ def test_a_misspelt_or_missing_key_raises_naming_it(ci_config):
 
 
 def test_the_solver_options_of_a_path_are_typed(ci_config):
-    """The keyword options a path passes on build :class:`PathOptions` (the solver's defaults for the rest); a key
-    they do not know raises naming it."""
+    """A run's numerics give the :class:`PathOptions` of its paths (the solver's defaults for the rest); options built
+    from a mapping take the same keys, and a key they do not know raises naming it."""
     n = Numerics.of(ci_config["numerics"])
-    opts = PathOptions.of(n.solver_options())
+    opts = n.solver_options()
+    assert PathOptions.of(opts) is opts and PathOptions.of(dataclasses.asdict(opts)) == opts
     assert (opts.tol, opts.max_iter, opts.reuse, opts.stall) == (
         n.tolerance,
         n.max_newton_iterations,
@@ -42,9 +44,22 @@ def test_the_solver_options_of_a_path_are_typed(ci_config):
     )
     assert PathOptions.of({}) == PathOptions()
     with pytest.raises(ValueError, match=r"unknown key solver\.tolerance"):
-        PathOptions.of(dict(n.solver_options(), tolerance=1e-4))
+        PathOptions.of(dict(dataclasses.asdict(opts), tolerance=1e-4))
     with pytest.raises(dataclasses.FrozenInstanceError):
         opts.tol = 1.0
+
+
+def test_the_options_of_every_kind_of_path_derive_from_the_runs(ci_config):
+    """A transition (whose fallback is a snap) bisects at most FALLBACK_BISECTIONS times and stops where Newton
+    stagnates; volume control's load steps and a snap's handoffs keep Newton's budget alone; the options of a solver
+    are checked when it is made."""
+    opts = Numerics.of(ci_config["numerics"]).solver_options()
+    transition = opts.for_transition()
+    assert transition.max_bisections == min(opts.max_bisections, solver.FALLBACK_BISECTIONS)
+    assert transition.stall == solver.STALL_ITERATIONS and transition.reuse == opts.reuse
+    assert opts.newton_budget() == PathOptions(tol=opts.tol, max_iter=opts.max_iter)
+    with pytest.raises(ValueError, match=r"unknown key solver\.tolerance"):
+        solver.Solver(None, dict(tolerance=1e-4))
 
 
 def test_the_bilayer_is_typed_all_the_way_down(ci_config):

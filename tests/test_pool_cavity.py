@@ -26,7 +26,7 @@ def band_cavity(coarse_mean_model):
     materials.convert_to_gag(p, band, 1.0, 0.1, 18.53, lame=1.0)
     p[band, materials.PI] = 30.0
     cav = pool_cavity.Cavity.around(m.layout, band, m.layout.X)
-    model = dataclasses.replace(m, props=p, cavities=(cav,), _cache={})
+    model = dataclasses.replace(m, props=p, cavities=(cav,))
     return model, cav
 
 
@@ -93,7 +93,7 @@ def test_a_cavity_with_a_conserved_charge_is_rejected(band_cavity):
     model, cav = band_cavity
     p = np.array(model.props)
     p[cav.members, materials.FCD] = 100.0
-    bad = dataclasses.replace(model, props=p, _cache={})
+    bad = dataclasses.replace(model, props=p)
     with pytest.raises(ValueError, match="prescribed"):
         bad.evaluate(model.layout.X, Load(1.0, 0.0))
 

@@ -107,12 +107,12 @@ def test_a_snap_lands_on_the_equilibrium_the_quasi_static_path_reaches_where_tha
     numerics = ci_config["numerics"]
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=law_gag(ci_config))
-    opts = Numerics.of(numerics).solver_options()
+    path_solver = Numerics.of(numerics).solver(model)
     seeded = protocols.swelling_load(ci_wall.load, 1.0, 0.0)
-    conv = solver.follow_path(model, ci_wall.x, protocols.swelling_load(ci_wall.load, 0.0, 0.0), [seeded], **opts)[-1]
+    conv = path_solver.follow_path(ci_wall.x, protocols.swelling_load(ci_wall.load, 0.0, 0.0), [seeded])[-1]
     swollen = seeded.with_material(concentration=150.0)
-    path = solver.follow_path(model, conv.x, seeded, [swollen], **opts)[-1]
-    jumped = snap.follow(model, conv.x, swollen, **opts)
+    path = path_solver.follow_path(conv.x, seeded, [swollen])[-1]
+    jumped = snap.follow(path_solver, conv.x, swollen)
     assert jumped.convergence.residual < numerics["tolerance"]
     u = path.x - conv.x
     assert np.abs(jumped.x - path.x).max() < 1e-3 * np.abs(u).max()
@@ -125,19 +125,7 @@ def test_no_stable_state_ends_a_snap_with_its_reason(ci_config, ci_wall):
     model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=law_gag(ci_config))
     load = protocols.swelling_load(ci_wall.load, 1.0, 150.0)
     with pytest.raises(snap.NoStableState, match="no equilibrium in 2 steps"):
-        snap.follow(model, ci_wall.x, load, max_steps=2, **Numerics.of(numerics).solver_options())
-
-
-@pytest.mark.parametrize("follow", ["snap", "volume control"])
-def test_an_unknown_solver_option_raises_naming_it(ci_config, ci_wall, follow):
-    """A snap and the volume-controlled path take the solver options of the path they continue, and no others."""
-    model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-options")
-    opts = dict(Numerics.of(ci_config["numerics"]).solver_options(), tolerance=1e-4)
-    with pytest.raises(ValueError, match=r"unknown key solver\.tolerance"):
-        if follow == "snap":
-            snap.follow(model, ci_wall.x, ci_wall.load, **opts)
-        else:
-            pool_volume.continue_path(model, ci_wall, np.arange(0), [60.0], **opts)
+        snap.follow(Numerics.of(numerics).solver(model), ci_wall.x, load, max_steps=2)
 
 
 # -- the pool's volume as the control --------------------------------------------------------------------------------
@@ -176,7 +164,7 @@ def test_volume_control_holds_the_concentration_path(swollen_pool):
     assert same.concentration == pytest.approx(50.0, abs=1e-3)
     bigger = pool_volume.solve_at_volume(model, pool, state.x, state.load, 1.05 * v0, 1e-8, 20, "test")
     assert bigger.concentration > 50.0
-    check = solver.follow_path(model, state.x, state.load, [bigger.load], tol=1e-8)[-1]
+    check = solver.Solver(model, dict(tol=1e-8)).follow_path(state.x, state.load, [bigger.load])[-1]
     assert pool(check.evaluation) == pytest.approx(1.05 * v0, rel=1e-6)
 
 
@@ -184,11 +172,11 @@ def test_volume_control_reaches_a_requested_concentration(ci_config, swollen_poo
     """From a converged state, the volume-controlled path reaches a requested concentration, and the state it returns
     there is the one concentration control reaches."""
     model, state = swollen_pool
-    opts = dict(Numerics.of(ci_config["numerics"]).solver_options(), tol=1e-8)
-    path, reached = pool_volume.continue_path(model, state, model.props.converting, [60.0], **opts)
+    path_solver = Numerics.of(ci_config["numerics"]).solver(model).using(tol=1e-8)
+    path, reached = pool_volume.continue_path(path_solver, state, model.props.converting, [60.0])
     assert path.end == "complete" and len(reached) == 1
     assert reached[0].load.material_value("concentration") == 60.0
-    direct = solver.follow_path(model, state.x, state.load, [reached[0].load], **opts)[-1]
+    direct = path_solver.follow_path(state.x, state.load, [reached[0].load])[-1]
     assert np.abs(direct.x - reached[0].x).max() < 1e-4 * np.abs(direct.x - state.x).max()
 
 
@@ -228,7 +216,7 @@ def test_volume_control_of_a_cavity_holds_its_concentration_path(swollen_cavity)
     assert same.concentration == pytest.approx(50.0, abs=1e-3)
     bigger = pool_volume.solve_at_volume(model, pool, state.x, state.load, 1.05 * v0, 1e-8, 20, "test")
     assert bigger.concentration > 50.0
-    check = solver.follow_path(model, state.x, state.load, [bigger.load], tol=1e-8)[-1]
+    check = solver.Solver(model, dict(tol=1e-8)).follow_path(state.x, state.load, [bigger.load])[-1]
     assert pool(check.evaluation) == pytest.approx(1.05 * v0, rel=1e-6)
 
 

@@ -7,6 +7,8 @@ import pytest
 
 from sphgag.engine import solver
 from sphgag.engine.loading import MMHG_TO_KPA, Load
+from sphgag.engine.numerics import Numerics
+from sphgag.engine.solver import PathOptions
 from sphgag.studies import artery, protocols
 
 from .conftest import law_gag
@@ -18,17 +20,17 @@ def wall(ci_config):
     numerics = ci_config["numerics"]
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     model = artery.bilayer_model(ci_config["bilayer"], numerics, name="test-solver", pool=pool, gag=law_gag(ci_config))
-    h = protocols.homeostasis(model, numerics, ci_config["homeostasis"])
-    return model, protocols.pressurise(model, h.state, 103.0, numerics)
+    path_solver = Numerics.of(numerics).solver(model)
+    h = protocols.homeostasis(model, numerics, ci_config["homeostasis"], path_solver=path_solver)
+    return model, protocols.pressurise(model, h.state, 103.0, numerics, path_solver=path_solver)
 
 
 def both_ways(model, x, start, targets, tol):
-    out = {}
-    for reuse in (False, True):
-        solver.factorisation_cache(model).reset()
-        states = solver.follow_path(model, x, start, targets, tol=tol, reuse=reuse)
-        out[reuse] = states
-    return out
+    """The path solved without and with chord steps, each by a solver of its own (an empty cache)."""
+    return {
+        reuse: solver.Solver(model, PathOptions(tol=tol, reuse=reuse)).follow_path(x, start, targets)
+        for reuse in (False, True)
+    }
 
 
 @pytest.mark.parametrize("path", ["pressure", "swelling"])
@@ -66,9 +68,10 @@ def test_a_stale_factorisation_never_lets_a_state_through_above_tolerance(wall):
         solver.factorise(model, ref, 50.0 * model.jacobian(ref), 0.0, "test"),
     ]
     for fac in wrong:
-        solver.factorisation_cache(model).keep(fac)
         for tol in (1e-4, 1e-7):
-            x, ev, conv = solver.newton(model, start.x, target, tol=tol, reuse=True)
+            stale = solver.Solver(model, PathOptions(tol=tol, reuse=True))
+            stale.cache.keep(fac)
+            x, ev, conv = stale.newton(start.x, target)
             assert conv.residual < tol
             assert solver.relative_residual(model, ev) < tol
 
@@ -85,18 +88,37 @@ def test_a_misspelt_material_name_raises():
         Load(1.0, 0.0, material=(("prestrech", 1.0),))
 
 
-def test_the_solver_keeps_one_factorisation_cache_per_model(ci_config):
-    """The cache of a model is the same object on every solve, empty for a copied model; a damped factorisation is not
-    kept, and ``reset`` forgets an undamped one."""
+def test_every_solver_keeps_a_factorisation_cache_of_its_own(ci_config):
+    """A solver's cache is its own (a second solver of the same model starts empty) and is shared with the solvers
+    :meth:`Solver.using` makes (other options, the same paths); a damped factorisation is not kept, and ``reset``
+    forgets an undamped one."""
     model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-cache")
-    cache = solver.factorisation_cache(model)
-    assert solver.factorisation_cache(model) is cache and cache.factorisation is None
+    first = Numerics.of(ci_config["numerics"]).solver(model)
+    second = solver.Solver(model, first.options)
+    assert first.cache is not second.cache and first.cache.factorisation is None
     fac = solver.Factorisation(lambda rhs: rhs, 1.0, np.empty(0, dtype=np.int64), 0.0)
-    cache.keep(fac)
-    assert cache.factorisation is fac
-    assert solver.factorisation_cache(dataclasses.replace(model, _cache={})).factorisation is None
-    cache.keep(dataclasses.replace(fac, damping=1e-4))
-    assert cache.factorisation is None
-    cache.keep(fac)
-    cache.reset()
-    assert cache.factorisation is None
+    first.cache.keep(fac)
+    assert first.cache.factorisation is fac and second.cache.factorisation is None
+    transition = first.using(first.options.for_transition())
+    assert transition.cache is first.cache and transition.model is model
+    assert transition.options.stall == solver.STALL_ITERATIONS and first.options.stall is None
+    first.cache.keep(dataclasses.replace(fac, damping=1e-4))
+    assert first.cache.factorisation is None
+    first.cache.keep(fac)
+    transition.reset()
+    assert first.cache.factorisation is None
+
+
+def test_a_replaced_model_starts_with_empty_derived_data(ci_config):
+    """``dataclasses.replace`` gives a model its own derived-data cache (material tables, hourglass stencil), empty,
+    whatever the model it was made from holds; the cache is no field of its constructor, its repr or its equality."""
+    model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-replace")
+    load = Load(1.0, 0.0)
+    model.material(load)
+    assert model._cache
+    copy = dataclasses.replace(model, name="test-replace-copy")
+    assert copy._cache == {} and copy._cache is not model._cache
+    assert np.array_equal(copy.material(load)[0], model.material(load)[0])
+    with pytest.raises(ValueError, match="_cache"):
+        dataclasses.replace(model, _cache={})
+    assert "_cache" not in repr(copy)

@@ -51,7 +51,7 @@ def test_converted_unswollen_pool_in_an_unloaded_wall_is_in_equilibrium(ci_confi
     load = Load(
         1.0, 0.0, material=(("activation", 0.0), ("concentration", 0.0), ("transition", 1.0), ("prestretch", 0.0))
     )
-    x, ev, conv = solver.newton(model, model.layout.X, load, tol=1e-6)
+    x, ev, conv = solver.Solver(model, dict(tol=1e-6)).newton(model.layout.X, load)
     assert conv.iterations == 0
     assert np.abs(ev.f_int).max() < 1e-9
 

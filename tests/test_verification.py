@@ -76,10 +76,12 @@ def test_radius_control_reads_back_the_pressure(ci_config, ci_run):
     model, res = ci_run
     lz = ci_config["mean"]["axial_stretch"]
     target = res.states[res.states.pressure_mmHg == 103.0].iloc[0].inner_diameter_um / 2
-    unloaded = solver.follow_path(model, model.layout.X, Load(1.0, 0.0), [Load(lz, 0.0)])[-1]
+    unloaded = solver.Solver(model).follow_path(model.layout.X, Load(1.0, 0.0), [Load(lz, 0.0)])[-1]
     r0 = measure.surface_radius(model, unloaded.x, "inner")
     start = Load(lz, None, inner_radius=r0)
-    states = solver.follow_path(model, unloaded.x, start, [start, Load(lz, None, inner_radius=target)], tol=1e-6)
+    states = solver.Solver(model, dict(tol=1e-6)).follow_path(
+        unloaded.x, start, [start, Load(lz, None, inner_radius=target)]
+    )
     assert measure.carried_pressure(model, states[0].evaluation) == pytest.approx(0.0, abs=0.05)
     assert measure.carried_pressure(model, states[1].evaluation) / MMHG_TO_KPA == pytest.approx(103.0, rel=5e-3)
 
@@ -92,7 +94,7 @@ def test_dynamic_relaxation_reaches_the_newton_equilibrium(coarse_mean_model):
     props = model.props.copy()
     props[:, 1] = 10 * props[:, 0]
     soft = type(model)("soft", model.layout, model.nb, props, model.hourglass_alpha)
-    x_n, _, _ = solver.newton(soft, model.layout.X, load, tol=1e-10)
+    x_n, _, _ = solver.Solver(soft, dict(tol=1e-10)).newton(model.layout.X, load)
     for eta in (0.0, 50.0):
         x_d, _, _ = dynamics.relax(soft, soft.layout.X, load, density=100.0, eta=eta, tol=1e-9)
         assert np.abs(x_d - x_n).max() < 1e-5
@@ -102,19 +104,13 @@ def test_inversion_is_reported_with_the_run_name(coarse_mean_model):
     model = coarse_mean_model
     x = model.layout.X * np.array([1.0, -1.0])  # a mirror image: finite, but det F < 0 everywhere
     with pytest.raises(solver.Inverted, match=r"\[test-mean\] particle inversion"):
-        solver.newton(model, x, Load(1.0, 0.0))
+        solver.Solver(model).newton(x, Load(1.0, 0.0))
 
 
 def test_no_convergence_is_reported_with_the_run_name(coarse_mean_model):
     with pytest.raises(solver.NotConverged, match=r"\[named-run\].*P=200 mmHg"):
-        solver.follow_path(
-            coarse_mean_model,
-            coarse_mean_model.layout.X,
-            Load(1.0, 0.0),
-            [Load(1.62, 200 * MMHG_TO_KPA)],
-            max_iter=2,
-            max_bisections=0,
-            run="named-run",
+        solver.Solver(coarse_mean_model, dict(max_iter=2, max_bisections=0)).follow_path(
+            coarse_mean_model.layout.X, Load(1.0, 0.0), [Load(1.62, 200 * MMHG_TO_KPA)], run="named-run"
         )
 
 
@@ -122,4 +118,4 @@ def test_nan_is_reported(coarse_mean_model):
     x = coarse_mean_model.layout.X.copy()
     x[5, 0] = np.nan
     with pytest.raises(solver.SimulationError, match="test-mean"):
-        solver.newton(coarse_mean_model, x, Load(1.0, 0.0))
+        solver.Solver(coarse_mean_model).newton(x, Load(1.0, 0.0))

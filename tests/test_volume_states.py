@@ -32,7 +32,7 @@ def test_a_state_at_a_volume_ratio_holds_it_and_is_the_concentration_paths(ci_co
     _, v, v0 = volume_states.volume_of(model, s)
     assert v / v0 == pytest.approx(middle, rel=1e-8)
     assert converted[-2].concentration < s.concentration < converted[-1].concentration
-    direct = solver.follow_path(model, converted[-2].x, converted[-2].load, [s.load], tol=1e-8)[-1]
+    direct = solver.Solver(model, dict(tol=1e-8)).follow_path(converted[-2].x, converted[-2].load, [s.load])[-1]
     assert np.abs(direct.x - s.x).max() < 1e-3 * np.abs(direct.x - converted[-2].x).max()
 
 

@@ -21,11 +21,12 @@ from pathlib import Path
 import jsonschema
 import yaml
 
+from .engine import hourglass
 from .engine.numerics import Numerics
 from .options import key_text
 from .physics import donnan
 from .physics.materials import GagSection
-from .studies import artery, candidates, onset, protocols
+from .studies import annulus, artery, candidates, onset, protocols
 from .studies.artery import Bilayer, Mean
 from .studies.delamination.section import Delamination
 from .studies.paper_procedure import PaperProcedure
@@ -178,24 +179,32 @@ def _literal_problems(node, path=()) -> list[str]:
 
 
 def _registries() -> dict:
-    """The schema's enumerations that sphgag's registries define, by the path of their key (a list of names or one
-    name): a new charge law, onset criterion or candidate rule is an entry of its registry, and the configuration
-    accepts it with no edit of the schema."""
+    """The schema's enumerations that sphgag's registries (:class:`sphgag.registry.Registry`) define, by the path of
+    their key (a list of names or one name): a new variant is an entry of its registry, and the configuration accepts
+    it with no edit of the schema."""
     return {
-        ("gag", "charge_laws"): list(donnan.LAWS),
-        ("swelling", "pool_models"): list(protocols.POOL_MODELS),
-        ("swelling", "variant_pool_models"): list(protocols.POOL_MODELS),
-        ("delamination", "criteria"): list(onset.CRITERIA),
-        ("delamination", "candidates"): list(candidates.RULES),
+        ("numerics", "hourglass"): hourglass.FORMS,
+        ("gag", "charge_laws"): donnan.LAWS,
+        ("swelling", "pool_models"): protocols.POOL_MODELS,
+        ("swelling", "variant_pool_models"): protocols.POOL_MODELS,
+        ("delamination", "criteria"): onset.CRITERIA,
+        ("delamination", "candidates"): candidates.RULES,
+        ("verification", "circular_pool", "pool_models"): protocols.POOL_MODELS,
+        ("verification", "annulus", "pool_models"): annulus.POOL_MODELS,
     }
 
 
 def schema(schema_path) -> dict:
-    """The schema at ``schema_path`` with the enumerations of sphgag's registries (:func:`_registries`)."""
+    """The schema at ``schema_path`` with the enumerations of sphgag's registries (:func:`_registries`), and each
+    variant's title (the paper's marked) after its key's description."""
     out = load_yaml(schema_path)
-    for (section, key), names in _registries().items():
-        node = out["properties"][section]["properties"][key]
-        (node["items"] if "items" in node else node)["enum"] = names
+    for path, registry in _registries().items():
+        node = out
+        for key in path:
+            node = node["properties"][key]
+        (node["items"] if "items" in node else node)["enum"] = list(registry)
+        titles = "; ".join(f"{n}: {v.title}" + (" [the paper's]" if v.paper else "") for n, v in registry.items())
+        node["description"] = f"{node.get('description', '')}. One of: {titles}"
     return out
 
 
@@ -216,15 +225,15 @@ def validate(config: dict, schema_path) -> dict:
     return config
 
 
-def _pool_models(swelling: dict, laws: list) -> list[str]:
-    """Each pool model of the swelling runs (figure 4's and the variants') must carry one of the configured charge
-    laws (it runs under those), and a variant is not also one of figure 4's."""
+def _pool_models(config: dict) -> list[str]:
+    """Each pool model of the swelling runs (figure 4's and the variants') passes its own check
+    (:meth:`sphgag.studies.protocols.PoolModel.check`: it carries one of the configured charge laws), and a variant is
+    not also one of figure 4's."""
+    swelling = config.get("swelling", {})
     problems = [
-        f"swelling.{key}[{k}] = {name!r} carries the charge laws {', '.join(protocols.POOL_MODELS[name].laws)}, "
-        f"none of gag.charge_laws = {laws}"
+        p
         for key in ("pool_models", "variant_pool_models")
-        for k, name in enumerate(swelling.get(key, []))
-        if name in protocols.POOL_MODELS and not set(protocols.POOL_MODELS[name].laws) & set(laws)
+        for p in protocols.POOL_MODELS.problems(config, f"swelling.{key}", swelling.get(key, []))
     ]
     return problems + [
         f"swelling.variant_pool_models[{k}] = {name!r} is one of swelling.pool_models: it runs in target all already"
@@ -234,28 +243,18 @@ def _pool_models(swelling: dict, laws: list) -> list[str]:
 
 
 def _delamination(config: dict) -> list[str]:
-    """An onset criterion that averages (``OnsetCriterion.averages``) does so over more than one particle at the
-    coarsest spacing it is run at."""
+    """Each onset criterion passes its own check (:meth:`sphgag.studies.onset.OnsetCriterion.check`: one that
+    averages does so over more than one particle at the coarsest spacing it is run at)."""
     de = config.get("delamination", {})
     if not de:
         return []
-    problems = []
-    coarsest = max([config.get("bilayer", {}).get("dx_um", 0)] + de["convergence"]["dx_um"])
-    averaging = [c for c in de["criteria"] if c in onset.CRITERIA and onset.CRITERIA[c].averages]
-    if averaging and de["averaging_length_um"] < coarsest:
-        problems.append(
-            f"delamination.averaging_length_um = {de['averaging_length_um']} is below the coarsest "
-            f"particle spacing ({coarsest:g} um): the average of {', '.join(averaging)} would be a single "
-            "particle's value"
-        )
-    return problems
+    return onset.CRITERIA.problems(config, "delamination.criteria", de["criteria"])
 
 
 def _variants(config: dict) -> list[str]:
-    """The checks the variants' registries own: the pool models' charge laws (:func:`_pool_models`) and the averaging
-    onset criteria (:func:`_delamination`)."""
-    laws = config.get("gag", {}).get("charge_laws", [])
-    return _pool_models(config.get("swelling", {}), laws) + _delamination(config)
+    """The checks the variants' registries own: the pool models' (:func:`_pool_models`) and the onset criteria's
+    (:func:`_delamination`)."""
+    return _pool_models(config) + _delamination(config)
 
 
 #: the options of every section of the configuration, in its order: each checks the relations between its keys and

@@ -5,6 +5,7 @@
 import hashlib
 from pathlib import PurePosixPath
 
+from sphgag.jobs import kinds as JOBS
 from sphgag.physics.donnan import PAPER_LAW
 from sphgag.physics.materials import law_gag
 from sphgag.studies.artery import Bilayer

@@ -13,12 +13,12 @@ rule swell:
         code=SPHGAG,
         state=STATE,
     output:
-        states=f"results/swelling/states/{SWELL_NAME}.npz",
-        provenance=f"results/provenance/swell_{flat(SWELL_NAME)}.json",
+        states=JOBS.swell.output("swelling/states", ".npz"),
+        provenance=JOBS.swell.provenance,
     log:
-        f"logs/swell/{SWELL_NAME}.log",
+        JOBS.swell.log,
     benchmark:
-        f"results/benchmarks/swell_{flat(SWELL_NAME)}.tsv"
+        JOBS.swell.benchmark
     conda:
         "../envs/sphgag.yaml"
     threads: 1

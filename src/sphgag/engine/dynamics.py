@@ -168,7 +168,7 @@ def advance(model: Model, motion: Motion, load: Load, steps: int, stepping: Step
     :class:`~sphgag.engine.solver.Diverged` naming the run, the load and the step."""
     run = run or model.name
     props, _, pairs = model.material(load)
-    K = model._cache["hg_matrix"]
+    K = model.hourglass_matrix(load)
     hg = (np.zeros(1, np.int32), np.zeros(0, np.int32), np.zeros(0)) if K is None else (K.indptr, K.indices, K.data)
     held, held_x = model.constraints(load)
     n = model.n

@@ -24,15 +24,68 @@ material):
   force along a pair is eq. (2.14)'s with ``d_ij`` in place of its projection
   on ``n_ij``, plus the reaction through ``F~`` that makes it conservative. It
   is invariant under rigid rotations (``|Q d| = |d|``).
+
+A form is a :class:`HourglassForm` (a :class:`sphgag.registry.Variant`) of the registry :data:`FORMS`, by its name in
+the configuration (``numerics.hourglass``, whose schema enumeration is the registry's) and the pipeline's wildcard
+``{form}``; the model asks it for its part of the forces and the stiffness (:meth:`HourglassForm.contribute`).
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 from numba import njit
 
-# The hourglass forms by their names in the configuration (``numerics.hourglass``).
-FORMS = ("paper", "energy")
+from ..registry import Registry, Variant
+
+
+@dataclass(frozen=True)
+class HourglassForm(Variant):
+    """A form of the hourglass control of eq. (2.14): what it adds to a model's forces and stiffness, given the pair
+    coefficients ``c_ij`` and the stencil ``F~`` the forms share. It owns the key ``numerics.hourglass`` (with
+    ``numerics.hourglass_alpha``, every form's alpha)."""
+
+    name: str
+    title: str
+    paper: bool = False
+
+    def contribute(self, model, ah, sh, hgc) -> tuple[np.ndarray, np.ndarray | None]:
+        """``(hgc, K)``: the coefficients of eq. (2.14)'s pair forces, which the elastic kernels compute with the
+        elastic forces (:mod:`sphgag.engine.forces`), and the 2 x 2 blocks of a constant stiffness ``K`` whose forces
+        are ``-K (x - X)`` (None: no such part). ``model`` gives the neighbour lists and the blocks' pattern
+        (:func:`sphgag.engine.forces.block_pattern`); ``ah, sh`` the stencil of ``F~``."""
+        raise NotImplementedError
+
+
+@dataclass(frozen=True)
+class PairForm(HourglassForm):
+    """Eq. (2.14) as printed: the pair forces along the current pair direction, computed with the elastic forces."""
+
+    def contribute(self, model, ah, sh, hgc):
+        return hgc, None
+
+
+@dataclass(frozen=True)
+class EnergyForm(HourglassForm):
+    """The energy ``E_hg = sum c_ij / 2 |d_ij|^2``: a constant stiffness ``K`` (:func:`energy_stiffness_blocks`), no
+    pair forces in the elastic kernels (their coefficients are zero)."""
+
+    def contribute(self, model, ah, sh, hgc):
+        nb = model.nb
+        stiffness = np.zeros((model.block_indices.size, 2, 2))
+        energy_stiffness_blocks(nb.ptr, nb.nbr, nb.mirror, nb.R, ah, sh, hgc, model.blockmap, model.map_ptr, stiffness)
+        return np.zeros_like(hgc), stiffness
+
+
+#: the registry of hourglass forms, by name (``numerics.hourglass``, wildcard ``{form}``; the paper's first)
+FORMS: Registry[HourglassForm] = Registry(
+    "hourglass form",
+    (
+        PairForm("paper", "eq. (2.14) as printed: pair forces along the current pair direction", paper=True),
+        EnergyForm("energy", "the energy form of eq. (2.14): a symmetric, positive semi-definite stiffness"),
+    ),
+)
 
 
 @njit(cache=True)

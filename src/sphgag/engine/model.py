@@ -83,8 +83,8 @@ class Model:
     props : (N, NPROP) property table (:mod:`sphgag.physics.materials`), or a callable
         ``props(load) -> table`` for materials that change along a path.
     hourglass_alpha : alpha of eq. (2.14); E comes from the property table.
-    hourglass : the hourglass control's form (:data:`sphgag.engine.hourglass.FORMS`): ``paper`` (eq. 2.14 as
-        printed) or ``energy`` (its energy form, :mod:`sphgag.engine.hourglass`).
+    hourglass : the name of the hourglass control's form (the registry :data:`sphgag.engine.hourglass.FORMS`):
+        ``paper`` (eq. 2.14 as printed) or ``energy`` (its energy form, :mod:`sphgag.engine.hourglass`).
     cavities : pools modelled as pressurised cavities (:class:`sphgag.engine.pool_cavity.Cavity`): the swelling pressure
         their particles' rows carry acts on their linings, their particles are held and carry nothing, and every
         deformation gradient sees its own material only.
@@ -101,11 +101,12 @@ class Model:
     boundary: Callable[[Load], tuple] | None = None
     hourglass: str = "paper"
     cavities: tuple = ()
-    _cache: dict = field(default_factory=dict, repr=False)
+    # derived data of the fields above (material tables, hourglass stencil): every model object, a replaced one too,
+    # starts with its own, empty
+    _cache: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     def __post_init__(self):
-        if self.hourglass not in hourglass.FORMS:
-            raise ValueError(f"hourglass form {self.hourglass!r}: one of {', '.join(hourglass.FORMS)}")
+        hourglass.FORMS.lookup(self.hourglass)
         self.cth = np.cos(self.layout.theta)
         self.sth = np.sin(self.layout.theta)
         indptr, indices, blockmap, map_ptr = forces.block_pattern(self.nb.ptr, self.nb.nbr)
@@ -175,14 +176,7 @@ class Model:
         nb_elastic = self.nb
         if self.cavities:  # a free surface at every cavity: each material's own stencil for F too
             nb_elastic = replace(self.nb, a=ah, s=sh)
-        stiffness = None
-        if self.hourglass == "energy":
-            nb = self.nb
-            stiffness = np.zeros((self.block_indices.size, 2, 2))
-            hourglass.energy_stiffness_blocks(
-                nb.ptr, nb.nbr, nb.mirror, nb.R, ah, sh, hgc, self.blockmap, self.map_ptr, stiffness
-            )
-            hgc = np.zeros_like(hgc)
+        hgc, stiffness = hourglass.FORMS[self.hourglass].contribute(self, ah, sh, hgc)
         pairs = forces.PairData.pack(nb_elastic, V, hgc, ah)
         self._cache.update(
             nb_elastic=nb_elastic,
@@ -209,6 +203,12 @@ class Model:
         if K is None:
             return None
         return -(K @ (x - self.layout.X).ravel()).reshape(-1, 2)
+
+    def hourglass_matrix(self, load: Load) -> sp.csr_matrix | None:
+        """``K``, the stiffness of the ``energy`` hourglass form for ``load`` (:mod:`sphgag.engine.hourglass`; its
+        forces are ``-K (x - X)``, its energy ``1/2 u K u``), None under eq. (2.14)."""
+        self.material(load)
+        return self._cache["hg_matrix"]
 
     def hourglass_stencil(self, load: Load):
         """``(ah, sh)``: the hourglass stencil's corrected gradients for ``load`` (see :meth:`material`)."""

@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..options import Options
+from .solver import PathOptions, Solver
 
 
 @dataclass(frozen=True)
@@ -30,11 +31,16 @@ class Numerics(Options):
         """The hourglass keywords of a :class:`sphgag.engine.model.Model` (``hourglass_alpha``, ``hourglass``)."""
         return dict(hourglass_alpha=self.hourglass_alpha, hourglass=self.hourglass)
 
-    def solver_options(self) -> dict:
-        """The options of the quasi-static solver (:func:`sphgag.engine.solver.follow_path`)."""
-        return dict(
+    def solver_options(self) -> PathOptions:
+        """The options of the run's load paths (:class:`sphgag.engine.solver.PathOptions`): its tolerance, Newton
+        iterations, bisections and factorisation reuse, no stall test."""
+        return PathOptions(
             tol=self.tolerance,
             max_iter=self.max_newton_iterations,
             max_bisections=self.max_bisections,
             reuse=self.reuse_factorisation,
         )
+
+    def solver(self, model) -> Solver:
+        """A :class:`sphgag.engine.solver.Solver` of ``model`` with these options (an empty factorisation cache)."""
+        return Solver(model, self.solver_options())

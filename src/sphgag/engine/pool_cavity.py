@@ -138,9 +138,9 @@ class Cavity:
 
 def hollow(model, members: np.ndarray, x: np.ndarray):
     """``model`` with the pool ``members`` as a cavity (:class:`Cavity`), its particles held at their positions in
-    ``x``; a new model, whose solver factorisation cache (:func:`sphgag.engine.solver.factorisation_cache`) starts empty
-    (its Jacobian pattern of loads changes)."""
-    return replace(model, cavities=(Cavity.around(model.layout, members, x),), _cache={})
+    ``x``: a new model, with its own derived data, solved by a :class:`sphgag.engine.solver.Solver` of its own (its
+    Jacobian's pattern of loads changes, so no factorisation of ``model`` carries over)."""
+    return replace(model, cavities=(Cavity.around(model.layout, members, x),))
 
 
 def pool_pressure(J: float, pressure_kPa: float, lz: float, mu: float, lam: float) -> float:

@@ -252,7 +252,7 @@ def reach_volume(
 
 
 def continue_path(
-    model: Model,
+    path_solver: solver.Solver,
     last: solver.State,
     members: np.ndarray,
     targets: list[float],
@@ -262,7 +262,6 @@ def continue_path(
     max_ratio: float = 100.0,
     min_growth: float = 1e-3,
     parameter: str = "concentration",
-    **options,
 ) -> tuple[Path, list[solver.State]]:
     """Trace the pool's path from the converged state ``last`` with its volume as the control.
 
@@ -271,13 +270,15 @@ def continue_path(
     rises, the state at exactly that concentration is solved by concentration control from the bracketing state
     and returned too. Stops at a limit point, when the targets are done, when the volume reaches ``max_ratio``
     times the pool's reference volume, or where volume control fails. ``parameter``: the load's material value that
-    plays ``c`` (``concentration``, or ``swelling_pressure`` for a prescribed pressure). ``options``: the solver
-    options of the path (:class:`sphgag.engine.solver.PathOptions`; Newton's ``tol`` and ``max_iter`` are used); an
-    option they do not know raises ``ValueError`` naming it.
+    plays ``c`` (``concentration``, or ``swelling_pressure`` for a prescribed pressure). ``path_solver``: the
+    :class:`sphgag.engine.solver.Solver` of the path this one continues (its model, and its Newton ``tol`` and
+    ``max_iter``, :meth:`sphgag.engine.solver.PathOptions.newton_budget`; the concentration-controlled steps keep
+    their factorisations in its cache).
     """
+    model = path_solver.model
     run = run or model.name
-    opts = solver.PathOptions.of(options)
-    tol, max_iter = opts.tol, opts.max_iter
+    load_control = path_solver.using(path_solver.options.newton_budget())
+    tol, max_iter = load_control.options.tol, load_control.options.max_iter
     pool = PoolVolume.of(model, members)
     reference = float(np.sum(pool.V))
     states, reached = [], []
@@ -321,9 +322,7 @@ def continue_path(
         while todo and s.concentration >= todo[0]:
             target = _at(s.load, todo.pop(0), parameter)
             try:
-                reached.append(
-                    solver.follow_path(model, s.x, s.load, [target], tol=tol, max_iter=max_iter, run=run)[-1]
-                )
+                reached.append(load_control.follow_path(s.x, s.load, [target], run=run)[-1])
             except solver.SimulationError as exc:
                 reason = (
                     f"{name} = {s.concentration:.4g} {unit} was held at volume control, but load control from "

@@ -15,7 +15,7 @@ one linearised step at a time, ``(M / dtau + K) dx = f_int + f_ext``, with no li
 search (the residual may rise while the wall moves: that is the snap). The
 pseudo-time step grows as the residual falls (switched evolution relaxation,
 ``dtau_k+1 = dtau_k |r_k-1| / |r_k|``), so the iteration turns into Newton's method as
-it comes to rest, and the state is then converged by :func:`sphgag.engine.solver.newton`
+it comes to rest, and the state is then converged by :meth:`sphgag.engine.solver.Solver.newton`
 to the same tolerance as every other state. The overdamped motion descends the
 energy, so where it comes to rest is a stable equilibrium (a saddle is not an
 attractor of it); a state it cannot converge within its budget is no state at all,
@@ -35,7 +35,6 @@ import numpy as np
 
 from . import solver
 from .loading import Load
-from .model import Model
 
 log = logging.getLogger("sphgag")
 
@@ -52,7 +51,7 @@ class NoStableState(solver.SimulationError):
 
 
 def follow(
-    model: Model,
+    path_solver: solver.Solver,
     x0: np.ndarray,
     load: Load,
     *,
@@ -60,30 +59,31 @@ def follow(
     max_steps: int = 300,
     handoff: float = 1e-2,
     damping: float = 1.0,
-    **options,
 ) -> solver.State:
-    """The equilibrium at ``load`` that the overdamped pseudo-dynamics from ``x0`` comes to rest at.
+    """The equilibrium at ``load`` that the overdamped pseudo-dynamics from ``x0`` come to rest at.
 
+    ``path_solver``: the :class:`sphgag.engine.solver.Solver` of the path the snap interrupts (its model, and its
+    Newton ``tol`` and ``max_iter``; its factorisation cache is emptied, then keeps the handoffs' factorisations).
     ``damping``: the first ``m = 1/dtau``. Once the relative residual is below ``handoff`` (or
-    ``m`` below 1e-3), Newton's method (:func:`sphgag.engine.solver.newton`) tries to converge
+    ``m`` below 1e-3), Newton's method (:meth:`sphgag.engine.solver.Solver.newton`) tries to converge
     the state; if it fails, the pseudo-dynamics resume from the best state so far
     with ten times more damping, and Newton is tried again once the residual is ten
     times lower (at most ``HANDOFFS`` tries). Raises :class:`NoStableState` after ``max_steps``
-    pseudo-time steps, or when the lowest residual has not halved in ``STALL_STEPS`` steps. ``options``: the solver
-    options of the path the snap interrupts (:class:`sphgag.engine.solver.PathOptions`; Newton's ``tol`` and
-    ``max_iter`` are used); an option they do not know raises ``ValueError`` naming it.
+    pseudo-time steps, or when the lowest residual has not halved in ``STALL_STEPS`` steps.
     """
-    run = run or model.name
-    opts = solver.PathOptions.of(options)
+    run = run or path_solver.model.name
     try:
-        return _follow(model, x0, load, opts.tol, opts.max_iter, run, max_steps, handoff, damping)
+        return _follow(path_solver, x0, load, run, max_steps, handoff, damping)
     except NoStableState:
         raise
     except solver.SimulationError as exc:  # a singular or inadmissible pseudo-time step
         raise NoStableState(run, load, f"the pseudo-dynamics failed ({exc.reason})") from exc
 
 
-def _follow(model, x0, load, tol, max_iter, run, max_steps, handoff, damping) -> solver.State:
+def _follow(path_solver, x0, load, run, max_steps, handoff, damping) -> solver.State:
+    model = path_solver.model
+    # Newton's handoffs: the path's tolerance and iterations, stopping where they stagnate, without chord steps
+    handoffs = path_solver.using(path_solver.options.newton_budget(), stall=solver.STALL_ITERATIONS)
     t0 = time.perf_counter()
     ev = model.evaluate(x0, load)
     solver.check(model, ev, run)
@@ -91,14 +91,12 @@ def _follow(model, x0, load, tol, max_iter, run, max_steps, handoff, damping) ->
     best = (rel, ev)
     halved = (rel, 0)  # (residual, step) when the best residual last halved
     m, n_eval, n_jac, attempts = damping, 1, 0, 0
-    solver.factorisation_cache(model).reset()
+    path_solver.reset()
     for k in range(max_steps):
         if rel < handoff or (m < 1e-3 and attempts == 0):
             attempts += 1
             try:
-                x, ev_n, conv = solver.newton(
-                    model, ev.x, load, tol=tol, max_iter=max_iter, run=run, stall=solver.STALL_ITERATIONS
-                )
+                x, ev_n, conv = handoffs.newton(ev.x, load, run=run)
             except solver.SimulationError as exc:
                 log.debug("[%s] snap: Newton from pseudo-time step %d failed (%s)", run, k, exc.reason)
                 if attempts == HANDOFFS:
@@ -166,23 +164,26 @@ def _follow(model, x0, load, tol, max_iter, run, max_steps, handoff, damping) ->
     )
 
 
-def transition(model: Model, x0: np.ndarray, material, after, load: Load, options: dict, on_snap=None):
+def transition(
+    path_solver: solver.Solver, x0: np.ndarray, material, after, load: Load, *, run: str | None = None, on_snap=None
+):
     """Solve the change of history from ``material``'s (a :class:`sphgag.engine.history.HistoryMaterial`) to ``after``
-    at ``load`` along its transition path (the load's ``transition`` 0 -> 1, :func:`solver.transition_options`); where
-    that path has no equilibrium, ``on_snap(exc)`` follows the snap under the new history in full (by default
-    :func:`follow` from ``x0``; it may raise :class:`NoStableState`). Returns ``(state, settled material,
-    snapped)``, the model set to the settled material and the state evaluated under it."""
+    at ``load`` along its transition path (the load's ``transition`` 0 -> 1, with the options of
+    :meth:`sphgag.engine.solver.PathOptions.for_transition`), on the model of ``path_solver``; where that path has no
+    equilibrium, ``on_snap(exc)`` follows the snap under the new history in full (by default :func:`follow` from
+    ``x0``; it may raise :class:`NoStableState`). Returns ``(state, settled material, snapped)``, the model set to the
+    settled material and the state evaluated under it."""
+    model = path_solver.model
     path = material.towards(after)
     model.set_props(path)
     try:
         end = load.with_material(transition=1.0)
-        state = solver.follow_path(
-            model, x0, load.with_material(transition=0.0), [end], **solver.transition_options(options)
-        )[-1]
+        transition_path = path_solver.using(path_solver.options.for_transition())
+        state = transition_path.follow_path(x0, load.with_material(transition=0.0), [end], run=run)[-1]
         snapped = False
     except solver.NotConverged as exc:
         model.set_props(path.settled())
-        state = on_snap(exc) if on_snap is not None else follow(model, x0, load, **options)
+        state = on_snap(exc) if on_snap is not None else follow(path_solver, x0, load, run=run)
         snapped = True
     settled = path.settled()
     model.set_props(settled)

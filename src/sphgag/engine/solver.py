@@ -21,13 +21,17 @@ A load increment that does not converge is bisected (up to ``max_bisections``
 times). A state with NaN forces, an inverted particle (``det F <= 0``) or no
 convergence stops the run with a :class:`SimulationError` naming the run and
 the load.
+
+A :class:`Solver` is Newton's method and the load paths on one model: it holds the model, the
+:class:`PathOptions` of its paths and the :class:`FactorisationCache` its chord steps reuse. The paths that follow
+one another on a model share its solver; a new model gets a solver of its own.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import time
-import weakref
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
@@ -86,12 +90,13 @@ class Convergence:
 
 @dataclass(frozen=True)
 class PathOptions(Options):
-    """The solver options of a load path: ``tol`` (the relative residual of a converged state), ``max_iter`` (Newton
-    iterations per load step), ``max_bisections`` (halvings of a load step, :func:`follow_path`), ``reuse`` (chord
-    steps with the cached factorisation) and ``stall`` (fresh iterations without halving the residual before Newton
-    gives up), with :func:`newton`'s and :func:`follow_path`'s defaults. :meth:`of` builds them from a mapping (the
-    keyword options a path passes on, :meth:`sphgag.engine.numerics.Numerics.solver_options`) and raises
-    ``ValueError`` naming a key it does not know."""
+    """The options of every kind of load path (the equilibrium path, :meth:`Solver.follow_path`; the volume-controlled
+    path, :func:`sphgag.engine.pool_volume.continue_path`; a snap, :func:`sphgag.engine.snap.follow`): ``tol`` (the
+    relative residual of a converged state), ``max_iter`` (Newton iterations per load step), ``max_bisections``
+    (halvings of a load step), ``reuse`` (chord steps with the cached factorisation) and ``stall`` (fresh iterations
+    without halving the residual before Newton gives up), with the solver's defaults. :meth:`of` builds them from a
+    mapping and raises ``ValueError`` naming a key it does not know; a run's own come from
+    :meth:`sphgag.engine.numerics.Numerics.solver_options`."""
 
     SECTION = "solver"
 
@@ -100,6 +105,18 @@ class PathOptions(Options):
     max_bisections: int = 10
     reuse: bool = False
     stall: int | None = None
+
+    def newton_budget(self) -> PathOptions:
+        """Newton's ``tol`` and ``max_iter`` alone, the defaults for the rest: the options of the load steps a
+        volume-controlled path takes (:func:`sphgag.engine.pool_volume.continue_path`)."""
+        return PathOptions(tol=self.tol, max_iter=self.max_iter)
+
+    def for_transition(self) -> PathOptions:
+        """The options of a path whose fallback is a snap (the transition of a damage pass): at most
+        FALLBACK_BISECTIONS bisections, and Newton's method stops where it stagnates (STALL_ITERATIONS)."""
+        return dataclasses.replace(
+            self, max_bisections=min(self.max_bisections, FALLBACK_BISECTIONS), stall=STALL_ITERATIONS
+        )
 
 
 def relative_residual(model: Model, ev: Evaluation) -> float:
@@ -144,9 +161,10 @@ class Factorisation:
 
 
 class FactorisationCache:
-    """The last undamped :class:`Factorisation` of one model's Jacobian, kept for the chord steps of :func:`newton`
-    (``reuse``) at this or later states. Every fresh Newton step replaces it (a damped one empties it); :meth:`reset`
-    empties it, so that the next solve starts as a solve of a new model does (a run continued from a snapshot)."""
+    """The last undamped :class:`Factorisation` of one model's Jacobian, kept for the chord steps of
+    :meth:`Solver.newton` (``reuse``) at this or later states. Every fresh Newton step replaces it (a damped one
+    empties it); :meth:`reset` empties it, so that the next solve starts as a solve of a new model does (a run
+    continued from a snapshot)."""
 
     def __init__(self):
         self.factorisation: Factorisation | None = None
@@ -158,20 +176,6 @@ class FactorisationCache:
     def reset(self) -> None:
         """Forget the kept factorisation."""
         self.factorisation = None
-
-
-_caches: dict[int, FactorisationCache] = {}
-
-
-def factorisation_cache(model: Model) -> FactorisationCache:
-    """The solver's factorisation cache of ``model`` (one per model object, empty for a new or copied model, dropped
-    with the model)."""
-    key = id(model)
-    cache = _caches.get(key)
-    if cache is None:
-        cache = _caches[key] = FactorisationCache()
-        weakref.finalize(model, _caches.pop, key, None)
-    return cache
 
 
 # The Jacobian is factorised as a band matrix (LAPACK gbtrf, partial pivoting) when the band is well filled and its
@@ -213,7 +217,7 @@ CHORD_STEPS = 12
 # 220 s run on a step with no equilibrium, and gave the same states). In the transition of a damage pass, whose
 # fallback is a snap (sphgag.engine.snap), Newton's method also gives up after STALL_ITERATIONS fresh iterations that
 # do not halve the relative residual: near a state with no equilibrium the residual has a positive local minimum
-# (:func:`transition_options`; a snap's own Newton handoffs stop the same way). The swelling steps keep Newton's full
+# (PathOptions.for_transition; a snap's own Newton handoffs stop the same way). The swelling steps keep Newton's full
 # iteration budget: on the swollen prescribed-law pools a converging step can take 20 damped iterations that each cut
 # the residual by only a few per cent, which the stall test would cut short (losing states the path has). Other load
 # steps (pressure, conversion, the concentration steps of a growth run) keep the configuration's full budget.
@@ -221,66 +225,8 @@ FALLBACK_BISECTIONS = 4
 STALL_ITERATIONS = 8
 
 
-def newton(
-    model: Model,
-    x0: np.ndarray,
-    load: Load,
-    *,
-    tol: float = 1e-4,
-    max_iter: int = 30,
-    run: str | None = None,
-    reuse: bool = False,
-    stall: int | None = None,
-) -> tuple[np.ndarray, Evaluation, Convergence]:
-    """Equilibrium at ``load`` starting from ``x0``.
-
-    Newton's method with the exact Jacobian, a backtracking line search on
-    the residual norm and, when the line search has to cut the step hard
-    (soft, nearly singular modes such as a GAG pool), Levenberg-Marquardt
-    damping of the linear system (``J - m diag|J|``), relaxed again as soon as
-    full steps succeed. Damping only shapes the steps; a state is accepted on
-    the undamped residual alone.
-
-    With ``reuse``, the last undamped factorisation of the model (from this
-    or an earlier state, kept in its :func:`factorisation_cache`) is tried first: a chord step
-    ``dx = -K_old^-1 r`` on the exact residual, kept while the chord steps cut the relative residual by
-    ``CHORD_CONTRACTION`` per step on average (at most ``CHORD_STEPS`` per
-    state). Otherwise (and whenever no factorisation fits)
-    the iteration is an ordinary Newton step with a fresh Jacobian, whose
-    factorisation is then kept. The acceptance test is the same in both cases.
-
-    With ``stall``, the iteration gives up once ``stall`` fresh iterations have not halved the relative residual.
-
-    Each iteration is a sequence of named steps: the convergence test (:func:`_converged`), a chord step with the
-    cached factorisation (:func:`_chord_step`), else a fresh step (:func:`_fresh_step`: assemble, factorise and line
-    search, :func:`_damped_step`), and the progress test (:func:`_check_progress`).
-    """
-    run = run or model.name
-    t0 = time.perf_counter()
-    cache = factorisation_cache(model)
-    x = x0.copy()
-    ev = model.evaluate(x, load)
-    check(model, ev, run)
-    s = _Iterate(x, ev, relative_residual(model, ev))
-    for it in range(max_iter + CHORD_STEPS + 1):
-        if _converged(model, s, tol):
-            return s.x, s.ev, Convergence(s.rel, it, s.n_eval, s.n_jac, time.perf_counter() - t0)
-        if it - s.chords == max_iter:
-            break
-        if reuse and _chord_step(model, cache, s, run, it):
-            continue
-        _fresh_step(model, cache, s, run, it)
-        _check_progress(s, stall, run)
-    raise NotConverged(
-        run,
-        load,
-        f"no convergence in {max_iter} Newton iterations (and {s.chords} chord steps; relative residual {s.rel:.3g})",
-        s.ev,
-    )
-
-
 class _Iterate:
-    """The state of one :func:`newton` solve: the iterate ``x`` and its evaluation ``ev`` and relative residual
+    """The state of one :meth:`Solver.newton` solve: the iterate ``x`` and its evaluation ``ev`` and relative residual
     ``rel``, the work done (``n_eval`` force evaluations, ``n_jac`` Jacobians, ``chords`` chord steps), the
     Levenberg-Marquardt ``damping``, the current sequence of chord steps (``run_start``: the residual it started
     from, ``run_length``: its steps) and ``progress``: ``(residual, fresh iterations)`` when the residual last
@@ -482,14 +428,6 @@ def _merit(ev: Evaluation, k: float) -> float:
     return float(np.sqrt((r * r).sum() + (c * c).sum()))
 
 
-def transition_options(options: dict) -> dict:
-    """Path options (:func:`follow_path`) for the transition of a damage pass, whose fallback is a snap: at most
-    FALLBACK_BISECTIONS bisections, and Newton's method stops where it stagnates (STALL_ITERATIONS)."""
-    return dict(
-        options, max_bisections=min(options.get("max_bisections", 10), FALLBACK_BISECTIONS), stall=STALL_ITERATIONS
-    )
-
-
 @dataclass
 class State:
     """A converged equilibrium state on a load path."""
@@ -500,56 +438,124 @@ class State:
     convergence: Convergence
 
 
-def follow_path(
-    model: Model,
-    x0: np.ndarray,
-    start: Load,
-    targets: Sequence[Load],
-    *,
-    tol: float = 1e-4,
-    max_iter: int = 30,
-    max_bisections: int = 10,
-    run: str | None = None,
-    on_state: Callable[[State], None] | None = None,
-    reuse: bool = False,
-    stall: int | None = None,
-) -> list[State]:
-    """Converged states at every load of ``targets``, moving from ``start`` (state ``x0``).
+class Solver:
+    """Newton's method and load paths on one model: the model, the :class:`PathOptions` of its paths and the
+    :class:`FactorisationCache` its Newton steps keep.
 
-    Each increment is solved with :func:`newton`; an increment that fails is
-    split in two (recursively, up to ``max_bisections`` levels). Only the
-    requested loads are returned (and passed to ``on_state``). ``reuse``, ``stall``: see :func:`newton`.
+    A solver is bound to one model object, and its cache lives as long as the paths on that model that follow one
+    another: with ``reuse`` the chord steps of a path reuse the last factorisation of the path before it, so a caller
+    that continues on the same model passes its solver on (a changed model, such as the pool made a cavity, gets a
+    solver of its own, with an empty cache). :meth:`using` gives a solver of the same model and cache with other
+    options (a snap's Newton handoffs, the transition of a damage pass, a step with a fallback); :meth:`reset` empties
+    the cache, so that the next solve starts as one on a new model does (a run continued from a snapshot).
     """
-    run = run or model.name
-    x, current = x0.copy(), start
-    states = []
-    for target in targets:
-        x, ev, conv = _reach(model, x, current, target, tol, max_iter, max_bisections, run, reuse, stall)
-        current = target
-        state = State(target, x.copy(), ev, conv)
-        states.append(state)
-        if on_state is not None:
-            on_state(state)
-    return states
 
+    def __init__(
+        self, model: Model, options: PathOptions | dict | None = None, cache: FactorisationCache | None = None
+    ):
+        self.model = model
+        self.options = PathOptions() if options is None else PathOptions.of(options)
+        self.cache = FactorisationCache() if cache is None else cache
 
-def _reach(model, x, current, target, tol, max_iter, depth, run, reuse, stall):
-    try:
-        return newton(model, x, target, tol=tol, max_iter=max_iter, run=run, reuse=reuse, stall=stall)
-    except (NotConverged, Inverted, Diverged) as exc:
-        if depth == 0:
-            raise NotConverged(
-                run, target, f"no convergence after bisecting the load increment ({exc.reason})"
-            ) from exc
-        log.debug("[%s] bisecting increment to %s (%s)", run, describe(target), exc.reason)
-    middle = current.lerp(target, 0.5)
-    xm, evm, cm = _reach(model, x, current, middle, tol, max_iter, depth - 1, run, reuse, stall)
-    x2, ev2, c2 = _reach(model, xm, middle, target, tol, max_iter, depth - 1, run, reuse, stall)
-    total = Convergence(
-        c2.residual,
-        cm.iterations + c2.iterations,
-        cm.force_evaluations + c2.force_evaluations,
-        cm.jacobians + c2.jacobians,
-        cm.seconds + c2.seconds,
-    )
-    return x2, ev2, total
+    def using(self, options: PathOptions | None = None, **changes) -> Solver:
+        """A solver of the same model and factorisation cache with ``options`` (by default this solver's), changed by
+        ``changes`` (names of :class:`PathOptions`)."""
+        return Solver(self.model, dataclasses.replace(options or self.options, **changes), self.cache)
+
+    def reset(self) -> None:
+        """Forget the kept factorisation (:meth:`FactorisationCache.reset`)."""
+        self.cache.reset()
+
+    def newton(
+        self, x0: np.ndarray, load: Load, *, run: str | None = None
+    ) -> tuple[np.ndarray, Evaluation, Convergence]:
+        """Equilibrium at ``load`` starting from ``x0`` (``run``: the name errors and logs give, the model's by
+        default).
+
+        Newton's method with the exact Jacobian, a backtracking line search on
+        the residual norm and, when the line search has to cut the step hard
+        (soft, nearly singular modes such as a GAG pool), Levenberg-Marquardt
+        damping of the linear system (``J - m diag|J|``), relaxed again as soon as
+        full steps succeed. Damping only shapes the steps; a state is accepted on
+        the undamped residual alone (``tol``).
+
+        With ``reuse``, the last undamped factorisation kept in the solver's cache (from this or an earlier state)
+        is tried first: a chord step ``dx = -K_old^-1 r`` on the exact residual, kept while the chord steps cut the
+        relative residual by ``CHORD_CONTRACTION`` per step on average (at most ``CHORD_STEPS`` per state).
+        Otherwise (and whenever no factorisation fits) the iteration is an ordinary Newton step with a fresh
+        Jacobian, whose factorisation is then kept. The acceptance test is the same in both cases.
+
+        With ``stall``, the iteration gives up once ``stall`` fresh iterations have not halved the relative residual.
+
+        Each iteration is a sequence of named steps: the convergence test (:func:`_converged`), a chord step with the
+        cached factorisation (:func:`_chord_step`), else a fresh step (:func:`_fresh_step`: assemble, factorise and
+        line search, :func:`_damped_step`), and the progress test (:func:`_check_progress`).
+        """
+        model, opts, cache = self.model, self.options, self.cache
+        run = run or model.name
+        t0 = time.perf_counter()
+        x = x0.copy()
+        ev = model.evaluate(x, load)
+        check(model, ev, run)
+        s = _Iterate(x, ev, relative_residual(model, ev))
+        for it in range(opts.max_iter + CHORD_STEPS + 1):
+            if _converged(model, s, opts.tol):
+                return s.x, s.ev, Convergence(s.rel, it, s.n_eval, s.n_jac, time.perf_counter() - t0)
+            if it - s.chords == opts.max_iter:
+                break
+            if opts.reuse and _chord_step(model, cache, s, run, it):
+                continue
+            _fresh_step(model, cache, s, run, it)
+            _check_progress(s, opts.stall, run)
+        reason = (
+            f"no convergence in {opts.max_iter} Newton iterations (and {s.chords} chord steps; relative residual "
+            f"{s.rel:.3g})"
+        )
+        raise NotConverged(run, load, reason, s.ev)
+
+    def follow_path(
+        self,
+        x0: np.ndarray,
+        start: Load,
+        targets: Sequence[Load],
+        *,
+        run: str | None = None,
+        on_state: Callable[[State], None] | None = None,
+    ) -> list[State]:
+        """Converged states at every load of ``targets``, moving from ``start`` (state ``x0``).
+
+        Each increment is solved with :meth:`newton`; an increment that fails is split in two (recursively, up to
+        ``max_bisections`` levels). Only the requested loads are returned (and passed to ``on_state``).
+        """
+        run = run or self.model.name
+        x, current = x0.copy(), start
+        states = []
+        for target in targets:
+            x, ev, conv = self._reach(x, current, target, self.options.max_bisections, run)
+            current = target
+            state = State(target, x.copy(), ev, conv)
+            states.append(state)
+            if on_state is not None:
+                on_state(state)
+        return states
+
+    def _reach(self, x, current, target, depth, run):
+        try:
+            return self.newton(x, target, run=run)
+        except (NotConverged, Inverted, Diverged) as exc:
+            if depth == 0:
+                raise NotConverged(
+                    run, target, f"no convergence after bisecting the load increment ({exc.reason})"
+                ) from exc
+            log.debug("[%s] bisecting increment to %s (%s)", run, describe(target), exc.reason)
+        middle = current.lerp(target, 0.5)
+        xm, evm, cm = self._reach(x, current, middle, depth - 1, run)
+        x2, ev2, c2 = self._reach(xm, middle, target, depth - 1, run)
+        total = Convergence(
+            c2.residual,
+            cm.iterations + c2.iterations,
+            cm.force_evaluations + c2.force_evaluations,
+            cm.jacobians + c2.jacobians,
+            cm.seconds + c2.seconds,
+        )
+        return x2, ev2, total

@@ -40,16 +40,21 @@ Where ``g <= Y_on`` the band is too wide for ``G_c`` (snap-back of the softening
 particle ruptures at onset and dissipates ``Y_on``.
 
 This module holds the laws and their bookkeeping as pure functions of flat arrays;
-the delamination protocol decides when to call them.
+the delamination protocol decides when to call them. A law is a class of the registry :data:`LAWS` (a
+:class:`sphgag.registry.Variant` by its class attributes ``name``, ``title``, ``paper``, ``keys``); it builds itself
+from a run's settings (``of``). The delamination tables name it in their column ``damage_law``, and
+:func:`sphgag.studies.delamination.tables.paper_law` keeps the rows of the paper's law (``paper``).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 from scipy.special import erfi
 
+from ..registry import Registry, Variant
 from . import materials
 from .fracture import J_M2
 
@@ -64,8 +69,17 @@ def shape(x) -> np.ndarray:
     return np.minimum(np.expm1(x * x * LN2), 1.0)
 
 
+class Law(Variant):
+    """The variant protocol of a damage law, held by the class (its instances carry a run's parameters): ``name``,
+    ``title``, ``paper`` and ``keys`` as class attributes, and :meth:`check` a class method."""
+
+    @classmethod
+    def check(cls, config, key: str) -> None:
+        """The law's keys are checked by the schema (their ranges) and by its constructor: nothing more here."""
+
+
 @dataclass(frozen=True)
-class DamageLaw:
+class DamageLaw(Law):
     """Eq. (2.28) with its two parameters.
 
     critical_stress_kPa : sigma_cr, the radial Cauchy stress at onset (the paper: 30, 40, 60; ~61 kPa measured).
@@ -74,7 +88,10 @@ class DamageLaw:
 
     critical_stress_kPa: float
     rupture_stretch_increment: float
-    name = "paper"
+    name: ClassVar[str] = "paper"
+    title: ClassVar[str] = "eq. (2.28) as printed: rupture a fixed radial stretch beyond onset"
+    paper: ClassVar[bool] = True
+    keys: ClassVar[tuple[str, ...]] = ("delamination.critical_stress_kPa", "delamination.rupture_stretch_increment")
 
     @classmethod
     def of(cls, settings) -> DamageLaw:
@@ -105,7 +122,7 @@ class DamageLaw:
 
 
 @dataclass(frozen=True)
-class FractureEnergyLaw:
+class FractureEnergyLaw(Law):
     """Onset at ``sigma_cr`` as eq. (2.28), then a softening that dissipates ``G_c / h`` per unit volume of a band of
     width ``h`` (crack band; module docstring).
 
@@ -115,7 +132,10 @@ class FractureEnergyLaw:
 
     critical_stress_kPa: float
     fracture_energy_J_m2: float
-    name = "fracture_energy"
+    name: ClassVar[str] = "fracture_energy"
+    title: ClassVar[str] = "a fracture energy G_c per delaminated area (crack band; our deviation)"
+    paper: ClassVar[bool] = False
+    keys: ClassVar[tuple[str, ...]] = ("delamination.critical_stress_kPa", "delamination.fracture_energy")
 
     @classmethod
     def of(cls, settings) -> FractureEnergyLaw:
@@ -173,9 +193,15 @@ def _shape_integral(x) -> np.ndarray:
     return 0.5 * np.sqrt(np.pi / LN2) * erfi(np.sqrt(LN2) * x) - x
 
 
-# the registry of damage laws, by name: each builds itself from a run's settings (``of``); a new law is a class with
-# ``name``, ``of``, ``damage_at`` and ``rupture``, and an entry here
-LAWS = {law.name: law for law in (DamageLaw, FractureEnergyLaw)}
+#: the registry of damage laws, by name (the paper's first): each builds itself from a run's settings (``of``); a new
+#: law is a :class:`Law` with ``of``, ``damage_at`` and ``rupture``, registered here (docs/contributing.md)
+LAWS: Registry[type[Law]] = Registry("damage law", (DamageLaw, FractureEnergyLaw))
+
+
+def matches_paper(gc) -> bool:
+    """Whether the G_c of a fracture-energy run (the pipeline's wildcard ``gc``: a number in J/m^2, or the name of
+    the paper's law) is the energy the paper's law (:data:`LAWS`, ``paper``) dissipated in the matched run."""
+    return isinstance(gc, str) and gc in LAWS and LAWS[gc].paper
 
 
 @dataclass

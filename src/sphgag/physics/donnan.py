@@ -10,7 +10,8 @@ volume ratio ``J`` (:meth:`ChargeLaw.concentration`):
 * ``conserved``, our documented deviation (mixture theory): the fixed charge stays in the particle, c_FC = c / J, so
   the Donnan pressure acts at the current concentration (the column ``FCD``, :func:`sphgag.physics.materials.donnan`).
 
-A law is a :class:`ChargeLaw` of the registry :data:`LAWS`, by its name in the configuration (``gag.charge_laws``),
+A law is a :class:`ChargeLaw` (a :class:`sphgag.registry.Variant`) of the registry :data:`LAWS`, by its name in the
+configuration (``gag.charge_laws``),
 the pipeline's wildcard ``{law}`` and every pool table (column ``charge_law``). The schema's enumeration, the typed
 GAG options (:class:`sphgag.physics.materials.Gag`), the engine's GAG material, the exact circular pool
 (:mod:`sphgag.physics.cavity`), the pool models that carry it and the figures' titles are read from the registry, so
@@ -21,9 +22,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ..registry import Registry, Variant
+
 
 @dataclass(frozen=True)
-class ChargeLaw:
+class ChargeLaw(Variant):
     """A Donnan law of the GAG pools.
 
     name : the law's name (configuration, wildcard, column ``charge_law``).
@@ -33,6 +36,8 @@ class ChargeLaw:
     paper : the paper's law (the one to compare with the paper's panels); every other law is a deviation.
     title : the heading of the law's block in the figures.
     short : the law's label in a panel title or an axis label.
+
+    It owns no configuration key of its own: the GAG options (``gag``) are every law's.
     """
 
     name: str
@@ -53,9 +58,9 @@ class ChargeLaw:
 
 
 #: the registry of charge laws, by name, in the order the figures and tables show them (the paper's first)
-LAWS = {
-    law.name: law
-    for law in (
+LAWS: Registry[ChargeLaw] = Registry(
+    "charge law",
+    (
         ChargeLaw(
             "prescribed",
             conserves_charge=False,
@@ -70,14 +75,14 @@ LAWS = {
             title="conserved charge law: Pi at the current concentration c/J (mixture theory; a deviation)",
             short="conserved charge, c/J",
         ),
-    )
-}
+    ),
+)
 
 #: the names of the registered laws (the schema's enumeration of ``gag.charge_laws``)
-CHARGE_LAWS = tuple(LAWS)
+CHARGE_LAWS = LAWS.names
 
 #: the name of the paper's law
-PAPER_LAW = next(name for name, law in LAWS.items() if law.paper)
+PAPER_LAW = LAWS.paper.name
 
 
 def charge_law(name: str) -> ChargeLaw:

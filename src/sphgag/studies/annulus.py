@@ -10,7 +10,8 @@ without pre-stretch or fibres) and a pool with contents of its own (eq. 2.27 wit
 :func:`sphgag.physics.cavity.limit_pressure` (a saturation for the hole, a limit point for the pool of particles,
 whose contents' bulk term adds a little pressure that falls again as they swell).
 
-**Cases** (``verification.annulus``): two pool models (:data:`POOL_MODELS`),
+**Cases** (``verification.annulus``): two pool models (:data:`POOL_MODELS`, each a pool model of the engine's
+registry :data:`sphgag.studies.protocols.POOL_MODELS` with its contents),
 
 * ``hole``: an empty hole, its lining loaded by the pressure (the cavity of :mod:`sphgag.engine.pool_cavity` with
   contents of zero stiffness);
@@ -35,9 +36,38 @@ from ..engine import pool_volume, solver
 from ..engine.numerics import Numerics
 from ..options import Options
 from ..physics import cavity
+from ..registry import Registry, Variant
 from . import gci, inclusion, swollen_pool
 
-POOL_MODELS = {"hole": "cavity", "particles": "particles"}  # the verification's pool model -> the engine's
+
+@dataclass(frozen=True)
+class AnnulusPool(Variant):
+    """A pool of the annulus verification (``verification.annulus.pool_models``, column ``pool_model``): the engine's
+    pool model ``engine`` (:data:`sphgag.studies.protocols.POOL_MODELS`) that holds it and whether its contents are
+    ``empty`` (zero stiffness: a hole, its lining loaded by the pressure)."""
+
+    name: str
+    title: str
+    engine: str
+    empty: bool = False
+    paper: bool = False
+
+    def materials(self, matrix: dict, gag: dict) -> inclusion.Materials:
+        """The annulus' matrix around the pool and its contents (those of ``gag``, with its bulk term, as in the
+        artery; none for an empty pool)."""
+        if self.empty:
+            gag = dict(gag, shear_modulus_kPa=0.0, lame_lambda_kPa=0.0)
+        return inclusion.Materials.of(matrix, gag, bulk=True)
+
+
+#: the annulus' pool models, by name (the paper's last, as the verification lists them)
+POOL_MODELS: Registry[AnnulusPool] = Registry(
+    "pool model of the annulus",
+    (
+        AnnulusPool("hole", "an empty hole, its lining loaded by the pressure", "cavity", empty=True),
+        AnnulusPool("particles", "the paper's GAG particles carrying the pressure", "particles", paper=True),
+    ),
+)
 MEASURES = {"volume_ratio": "volume_ratio_exact", "lining_hoop_kPa": "lining_hoop_exact_kPa"}  # measure -> its exact
 
 
@@ -64,13 +94,9 @@ class AnnulusVerification(Options):
 
 
 def materials(pool_model: str, matrix: dict, gag: dict) -> inclusion.Materials:
-    """The annulus' matrix around the pool: the GAG contents of ``gag`` (with its bulk term, as in the artery) or,
-    for the ``hole``, contents of zero stiffness."""
-    if pool_model not in POOL_MODELS:
-        raise ValueError(f"unknown pool model {pool_model!r} of the annulus: one of {sorted(POOL_MODELS)}")
-    if pool_model == "hole":
-        gag = dict(gag, shear_modulus_kPa=0.0, lame_lambda_kPa=0.0)
-    return inclusion.Materials.of(matrix, gag, bulk=True)
+    """The annulus' matrix around the pool ``pool_model`` (:data:`POOL_MODELS`): the GAG contents of ``gag`` (with its
+    bulk term, as in the artery) or, for the ``hole``, contents of zero stiffness (:meth:`AnnulusPool.materials`)."""
+    return POOL_MODELS.lookup(pool_model).materials(matrix, gag)
 
 
 def limit(A: float, B: float, mat: inclusion.Materials) -> cavity.LimitPressure:
@@ -78,44 +104,42 @@ def limit(A: float, B: float, mat: inclusion.Materials) -> cavity.LimitPressure:
     return cavity.limit_pressure(A, B, *swollen_pool.solids(mat))
 
 
-def swell_by_volume(model, pressures, numerics: Numerics, max_ratio: float) -> tuple[dict, str]:
+def swell_by_volume(path_solver: solver.Solver, pressures, max_ratio: float) -> tuple[dict, str]:
     """``({Pi: converged state}, end)``: the pool swollen from rest with its volume as the control (steps of at most
     5 %, the pressure the unknown: :func:`sphgag.engine.pool_volume.continue_path`), each of ``pressures`` solved by
     load control from the state before it; ``end`` is ``complete`` or why the path stopped. Near the limit the
     volume at a given pressure is ill-conditioned and load control creeps through ever smaller increments; a
-    prescribed volume is not, and every step converges in a few iterations."""
-    opts = numerics.solver_options()
+    prescribed volume is not, and every step converges in a few iterations. ``path_solver``: the solver of the
+    annulus' model."""
+    model = path_solver.model
     rest = inclusion.pressure_load(0.0)
-    start = solver.follow_path(model, model.layout.X, rest, [rest], run=model.name, **opts)[-1]
+    start = path_solver.follow_path(model.layout.X, rest, [rest], run=model.name)[-1]
     members = np.flatnonzero(model.layout.inclusion)
     path, reached = pool_volume.continue_path(
-        model, start, members, list(pressures), run=model.name, max_ratio=max_ratio, parameter="swelling_pressure",
-        **opts,
-    )  # fmt: skip
+        path_solver, start, members, list(pressures), run=model.name, max_ratio=max_ratio, parameter="swelling_pressure"
+    )
     at = {s.load.material_value("swelling_pressure"): s for s in reached}
     return at, "complete" if path.end == "complete" else f"{path.end}: {path.reason}"
 
 
-def beyond_limit(model, last, pressure_kPa: float, members: np.ndarray, numerics: Numerics, max_ratio: float) -> dict:
+def beyond_limit(path_solver: solver.Solver, last, pressure_kPa: float, members: np.ndarray, max_ratio: float) -> dict:
     """What the engine does above the exact limit: from the converged state ``last``, load control to
-    ``pressure_kPa`` (with the bisections of a transition, :func:`sphgag.engine.solver.transition_options`); where it
-    fails, as it must, volume control with the pressure as the unknown
+    ``pressure_kPa`` (with the options of a transition, :meth:`sphgag.engine.solver.PathOptions.for_transition`);
+    where it fails, as it must, volume control with the pressure as the unknown
     (:func:`sphgag.engine.pool_volume.continue_path`, up to ``max_ratio`` times the pool's reference volume) finds the
     discrete path's limit point or shows the pressure still rising (a saturation). ``state_beyond``: a state was
-    reached at ``pressure_kPa`` (a defect: the exact solution has none)."""
-    opts = numerics.solver_options()
+    reached at ``pressure_kPa`` (a defect: the exact solution has none). ``path_solver``: the solver of the path
+    that reached ``last``."""
+    model = path_solver.model
     try:
-        solver.follow_path(
-            model, last.x, last.load, [inclusion.pressure_load(pressure_kPa)], run=model.name,
-            **solver.transition_options(opts),
-        )  # fmt: skip
+        transition = path_solver.using(path_solver.options.for_transition())
+        transition.follow_path(last.x, last.load, [inclusion.pressure_load(pressure_kPa)], run=model.name)
         return dict(beyond_end="state", beyond_reason=f"a state at Pi = {pressure_kPa:.4g} kPa", state_beyond=True)
     except solver.SimulationError as exc:
         load_control = exc.reason
     path, reached = pool_volume.continue_path(
-        model, last, members, [pressure_kPa], run=model.name, max_ratio=max_ratio, parameter="swelling_pressure",
-        **opts,
-    )  # fmt: skip
+        path_solver, last, members, [pressure_kPa], run=model.name, max_ratio=max_ratio, parameter="swelling_pressure"
+    )
     held = [s.concentration for s in path.states]
     return dict(
         beyond_end=path.end,
@@ -143,8 +167,9 @@ def annulus_study(va: dict, matrix: dict, gag: dict, numerics, pool_model: str, 
         top = limit(A, B, mat)
         pressures = [f * top.pressure_kPa for f in fractions]
         for dx in va["dx_um"]:
-            model = swollen_pool.circle_model(A, B, float(dx), mat, numerics, POOL_MODELS[pool_model])
-            at, end = swell_by_volume(model, pressures, numerics, float(va["max_volume_ratio"]))
+            model = swollen_pool.circle_model(A, B, float(dx), mat, numerics, POOL_MODELS[pool_model].engine)
+            path_solver = numerics.solver(model)  # one solver for the model's paths, beyond the limit too
+            at, end = swell_by_volume(path_solver, pressures, float(va["max_volume_ratio"]))
             case = dict(
                 pool_model=pool_model,
                 outer_ratio=float(ratio),
@@ -174,7 +199,7 @@ def annulus_study(va: dict, matrix: dict, gag: dict, numerics, pool_model: str, 
                 continue
             p = float(va["beyond"]) * top.pressure_kPa
             members = np.flatnonzero(model.layout.inclusion)
-            found = beyond_limit(model, at[pressures[-1]], p, members, numerics, float(va["max_volume_ratio"]))
+            found = beyond_limit(path_solver, at[pressures[-1]], p, members, float(va["max_volume_ratio"]))
             rows.append(dict(case, fraction=float(va["beyond"]), pressure_kPa=p, state=found["state_beyond"], **found))
             if log is not None:
                 log.info("[%s B/A=%g] %.2f of the limit: %s", model.name, ratio, va["beyond"], found["beyond_reason"])

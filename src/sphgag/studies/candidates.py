@@ -8,9 +8,9 @@ of it, pool by pool. The paper compares "the radial stress at the tip of the poo
 particles in contact with the pool (``contact``); the authors' script tests the whole window (``window``), so damage
 can form islands ahead of a pool (docs/physics.md, "Damage candidates").
 
-A rule is a :class:`CandidateRule` of the registry :data:`RULES`. The configuration's schema
-(``delamination.candidates``, :func:`sphgag.config.schema`) is built from the registry, so a new rule is one function
-and one entry here.
+A rule is a :class:`CandidateRule` (a :class:`sphgag.registry.Variant`) of the registry :data:`RULES`. The
+configuration's schema (``delamination.candidates``, :func:`sphgag.config.schema`) is built from the registry, so a new
+rule is one function and one entry here.
 """
 
 from __future__ import annotations
@@ -21,16 +21,20 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..engine.history import ParticleHistory
+from ..registry import Registry, Variant
 
 
 @dataclass(frozen=True)
-class CandidateRule:
+class CandidateRule(Variant):
     """``admits(front, history, pool)``: the particles (a mask over all of them) that may be candidates of pool
-    ``pool`` (an index of ``front.sectors``), within the window of :class:`sphgag.studies.delamination.front.Front`."""
+    ``pool`` (an index of ``front.sectors``), within the window of :class:`sphgag.studies.delamination.front.Front`.
+    ``title``: which particles; ``paper``: the rule of the paper's text. A rule owns no key beyond
+    ``delamination.candidates`` (the window, ``delamination.candidate_window_deg``, is every rule's)."""
 
     name: str
-    description: str
+    title: str
     admits: Callable[[object, ParticleHistory, int], np.ndarray]
+    paper: bool = False
 
 
 def anywhere(front, hist: ParticleHistory, pool: int) -> np.ndarray:
@@ -45,10 +49,13 @@ def in_contact(front, hist: ParticleHistory, pool: int) -> np.ndarray:
     return front.touching(hist, pool)
 
 
-RULES = {
-    r.name: r
-    for r in (
-        CandidateRule("contact", "the particles touching the pool, within the window (the paper's text)", in_contact),
+#: the registry of candidate rules, by name (``delamination.candidates``; the paper's first)
+RULES: Registry[CandidateRule] = Registry(
+    "candidate rule",
+    (
+        CandidateRule(
+            "contact", "the particles touching the pool, within the window (the paper's text)", in_contact, paper=True
+        ),
         CandidateRule("window", "every particle within the window of the pool (the authors' script)", anywhere),
-    )
-}
+    ),
+)

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import pandas as pd
 
+from ..engine.numerics import Numerics
 from . import artery, gci, protocols, volume_states
 
 COLUMNS = [
@@ -73,8 +74,9 @@ def pressurised_wall(
     the homeostatic state (figure 2b), then the path of the pressure-diameter sweep
     (:func:`sphgag.studies.protocols.wall_at`)."""
     wall = artery.bilayer_model(dict(bilayer, dx_um=float(dx)), numerics, name=name)
-    h = protocols.homeostasis(wall, numerics, homeostasis)
-    return protocols.wall_at(wall, h.state, numerics, calibration, active, pressure_mmHg)
+    path_solver = Numerics.of(numerics).solver(wall)
+    h = protocols.homeostasis(wall, numerics, homeostasis, path_solver=path_solver)
+    return protocols.wall_at(wall, h.state, numerics, calibration, active, pressure_mmHg, path_solver)
 
 
 def case_model(dx: float, bilayer: dict, numerics: dict, gag: dict, entry: dict, name: str):

@@ -242,19 +242,16 @@ def grow(problem: Problem, numerics: Numerics, levels, growth_cells: int, log=No
     model, material = crack_model(problem, numerics, name)
     lay: SlitLayout = model.layout
     law, h = problem.law, lay.band_width
-    opts = dict(run=name, **numerics.solver_options())
+    path_solver = numerics.solver(model)
     state = solver.State(load_at(problem, 0.0), lay.X.copy(), None, None)
     dmg = damage.DamageState.intact(lay.n)
     passes, dissipated = [], 0.0
     p_crit, p_onset, area, max_res = np.nan, np.nan, np.nan, 0.0
     tol = 1e-3
 
-    def solve(start, target, options):
-        return solver.follow_path(model, state.x, start, [target], **options)[-1]
-
     for p in levels:
         model.set_props(material)
-        state = solve(state.load, load_at(problem, p), opts)
+        state = path_solver.follow_path(state.x, state.load, [load_at(problem, p)], run=name)[-1]
         max_res = max(max_res, state.convergence.residual)
         if np.isnan(area):
             area = opening_area(model, state.evaluation, material)
@@ -281,7 +278,7 @@ def grow(problem: Problem, numerics: Numerics, levels, growth_cells: int, log=No
                     p_crit = p
             at = load_at(problem, p)
             try:
-                state, material, _ = snap.transition(model, state.x, material, new, at, opts)
+                state, material, _ = snap.transition(path_solver, state.x, material, new, at, run=name)
             except snap.NoStableState as exc:  # the growth snapped to no equilibrium: end at the last one
                 if log is not None:
                     log.warning("[%s] p = %.4g kPa: no stable state after a snap (%s)", name, p, exc.reason)

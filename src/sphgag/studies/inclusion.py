@@ -257,9 +257,8 @@ def pressure_load(pressure_kPa: float) -> Load:
 
 def swell(model: Model, pressure_kPa: float, numerics: Numerics) -> solver.State:
     """The converged state with the inclusion at swelling pressure ``pressure_kPa`` (one load step from rest)."""
-    numerics = Numerics.of(numerics)
     load, rest = pressure_load(pressure_kPa), pressure_load(0.0)
-    return solver.follow_path(model, model.layout.X, rest, [load], run=model.name, **numerics.solver_options())[-1]
+    return Numerics.of(numerics).solver(model).follow_path(model.layout.X, rest, [load], run=model.name)[-1]
 
 
 def normal_stress(lay: EllipseLayout, ev) -> tuple[np.ndarray, np.ndarray]:

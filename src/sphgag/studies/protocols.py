@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import logging
 from dataclasses import dataclass, replace
+from typing import ClassVar
 
 import numpy as np
 import pandas as pd
@@ -27,6 +28,7 @@ from ..options import Options, file_name_problems
 from ..physics import analytic
 from ..physics.donnan import CHARGE_LAWS, LAWS
 from ..physics.materials import Gag, swelling_pressure
+from ..registry import Registry, Variant
 from . import artery
 
 log = logging.getLogger("sphgag")
@@ -75,7 +77,8 @@ def pressure_points(calibration: dict) -> np.ndarray:
 
 
 def log_state(run: str):
-    """A ``follow_path`` callback that logs each converged state (progress in the rule log)."""
+    """An ``on_state`` callback of :meth:`sphgag.engine.solver.Solver.follow_path` that logs each converged state
+    (progress in the rule log)."""
 
     def on_state(state: solver.State):
         c = state.convergence
@@ -189,7 +192,6 @@ def mean_pressure_diameter(
     ``label`` is the ``model`` column of the transmural table. The mean
     circumferential stretch is normalised by the unloaded geometry (eq. 2.17).
     """
-    numerics = Numerics.of(numerics)
     run = model.name
     lz = p["axial_stretch"]
     R_in, H = p["inner_radius_um"], p["outer_radius_um"] - p["inner_radius_um"]
@@ -207,15 +209,8 @@ def mean_pressure_diameter(
         len(pressures) - 1,
         pressures.max(),
     )
-    states = solver.follow_path(
-        model,
-        model.layout.X,
-        Load(1.0, 0.0),
-        loads,
-        run=run,
-        on_state=log_state(run),
-        **numerics.solver_options(),
-    )
+    path_solver = Numerics.of(numerics).solver(model)
+    states = path_solver.follow_path(model.layout.X, Load(1.0, 0.0), loads, run=run, on_state=log_state(run))
     final = [s for s in states if s.load.axial_stretch == lz]
     wanted = set(np.round(calibration["transmural_pressures_mmHg"], 10))
     table = pd.DataFrame([state_row(model, s, tube, R_in, H) for s in final])
@@ -297,7 +292,13 @@ class Homeostasis:
 
 
 def homeostasis(
-    model: Model, numerics: Numerics, homeo: dict, x0=None, start: Load | None = None, activation: float = 0.0
+    model: Model,
+    numerics: Numerics,
+    homeo: dict,
+    x0=None,
+    start: Load | None = None,
+    activation: float = 0.0,
+    path_solver: solver.Solver | None = None,
 ) -> Homeostasis:
     """Figure 2b: ramp every deposition pre-stretch from 1 to its value, inner radius held.
 
@@ -305,9 +306,11 @@ def homeostasis(
     ways (reactions of the held inner surface, mean radial stress of the inner
     ring, and global equilibrium ``int sigma_tt dr / r_in``). With
     ``activation > 0`` the active tone is ramped afterwards, still at the held
-    radius (``x0``/``start`` then give the passive homeostatic state).
+    radius (``x0``/``start`` then give the passive homeostatic state). ``path_solver``: the
+    :class:`sphgag.engine.solver.Solver` of ``model`` whose paths this one continues (its factorisation cache carries
+    over: the paths of a chain on one model are solved as one); by default a new one with ``numerics``' options.
     """
-    numerics = Numerics.of(numerics)
+    path_solver = path_solver or Numerics.of(numerics).solver(model)
     run = model.name
     R0 = model.layout.inner_radius
     steps = homeo["prestretch_steps"]
@@ -326,9 +329,7 @@ def homeostasis(
         steps,
         R0,
     )
-    state = solver.follow_path(model, x0, start, loads, run=run, on_state=log_state(run), **numerics.solver_options())[
-        -1
-    ]
+    state = path_solver.follow_path(x0, start, loads, run=run, on_state=log_state(run))[-1]
     profile = measure.ring_profile(model, state.evaluation)
     r_in = measure.surface_radius(model, state.x, "inner")
     pressures = dict(
@@ -340,25 +341,23 @@ def homeostasis(
 
 
 def pressurise(
-    model: Model, homeostatic: solver.State, pressure_mmHg: float, numerics: Numerics, on_state=None
+    model: Model,
+    homeostatic: solver.State,
+    pressure_mmHg: float,
+    numerics: Numerics,
+    on_state=None,
+    path_solver: solver.Solver | None = None,
 ) -> solver.State:
     """The homeostatic state (held radius) moved to ``pressure_mmHg`` under pressure control: first the same
     equilibrium under pressure control at the carried pressure P_h, then the pressure. Every pressurised state of the
     pipeline takes this path (:func:`bilayer_pressure_diameter`, the resolution studies, the sensitivity samples), so
-    that the same pressure gives the same state to the bit."""
-    numerics = Numerics.of(numerics)
+    that the same pressure gives the same state to the bit. ``path_solver``: as :func:`homeostasis`'s."""
+    path_solver = path_solver or Numerics.of(numerics).solver(model)
     P_h = measure.carried_pressure(model, homeostatic.evaluation)
     material = homeostatic.load.material
     here = Load(1.0, P_h, material=material)
-    return solver.follow_path(
-        model,
-        homeostatic.x,
-        here,
-        [here, Load(1.0, pressure_mmHg * MMHG_TO_KPA, material=material)],
-        run=model.name,
-        on_state=on_state,
-        **numerics.solver_options(),
-    )[-1]
+    loads = [here, Load(1.0, pressure_mmHg * MMHG_TO_KPA, material=material)]
+    return path_solver.follow_path(homeostatic.x, here, loads, run=model.name, on_state=on_state)[-1]
 
 
 def pressurised_wall(bilayer: dict, numerics: Numerics, homeostasis_settings: dict, pressure_mmHg: float, name: str):
@@ -366,18 +365,26 @@ def pressurised_wall(bilayer: dict, numerics: Numerics, homeostasis_settings: di
     (:func:`homeostasis`, :func:`pressurise`), the state without
     its evaluation (a start for a run)."""
     wall = artery.bilayer_model(bilayer, numerics, name=name)
-    h = homeostasis(wall, numerics, homeostasis_settings)
-    start = pressurise(wall, h.state, pressure_mmHg, numerics)
+    path_solver = Numerics.of(numerics).solver(wall)
+    h = homeostasis(wall, numerics, homeostasis_settings, path_solver=path_solver)
+    start = pressurise(wall, h.state, pressure_mmHg, numerics, path_solver=path_solver)
     return wall, solver.State(start.load, start.x, None, None)
 
 
 def activated(
-    model: Model, homeostatic: solver.State, numerics: Numerics, cal: dict, active: bool, label: str = ""
+    model: Model,
+    homeostatic: solver.State,
+    numerics: Numerics,
+    cal: dict,
+    active: bool,
+    label: str = "",
+    path_solver: solver.Solver | None = None,
 ) -> solver.State:
     """The wall at the activation pressure ``cal["activation_pressure_mmHg"]`` (:func:`pressurise` from the
     homeostatic state), with its active tone (eq. 2.24) ramped there in ``cal["activation_steps"]`` steps if
-    ``active``: the start of the pressure-diameter sweeps and of every pressurised state of the wall."""
-    numerics = Numerics.of(numerics)
+    ``active``: the start of the pressure-diameter sweeps and of every pressurised state of the wall.
+    ``path_solver``: as :func:`homeostasis`'s."""
+    path_solver = path_solver or Numerics.of(numerics).solver(model)
     run = model.name
     P_act = cal["activation_pressure_mmHg"]
     on_state = log_state(run)
@@ -389,7 +396,7 @@ def activated(
         P_act,
         f", then activation in {cal['activation_steps']} steps" if active else "",
     )
-    start = pressurise(model, homeostatic, P_act, numerics, on_state=on_state)
+    start = pressurise(model, homeostatic, P_act, numerics, on_state=on_state, path_solver=path_solver)
     if not active:
         return start
     steps = cal["activation_steps"]
@@ -397,23 +404,27 @@ def activated(
         Load(1.0, P_act * MMHG_TO_KPA, material=(("activation", a), ("prestretch", 1.0)))
         for a in np.linspace(0.0, 1.0, steps + 1)[1:]
     ]
-    return solver.follow_path(
-        model, start.x, start.load, activation, run=run, on_state=on_state, **numerics.solver_options()
-    )[-1]
+    return path_solver.follow_path(start.x, start.load, activation, run=run, on_state=on_state)[-1]
 
 
 def wall_at(
-    model: Model, homeostatic: solver.State, numerics: Numerics, cal: dict, active: bool, pressure_mmHg: float
+    model: Model,
+    homeostatic: solver.State,
+    numerics: Numerics,
+    cal: dict,
+    active: bool,
+    pressure_mmHg: float,
+    path_solver: solver.Solver | None = None,
 ) -> solver.State:
     """The passive or active wall at ``pressure_mmHg`` under pressure control, by the path of the pressure-diameter
     sweep (:func:`activated`, then one step to the pressure): at the activation pressure, the sweep's own state to the
-    bit."""
-    numerics = Numerics.of(numerics)
-    start = activated(model, homeostatic, numerics, cal, active)
+    bit. ``path_solver``: as :func:`homeostasis`'s."""
+    path_solver = path_solver or Numerics.of(numerics).solver(model)
+    start = activated(model, homeostatic, numerics, cal, active, path_solver=path_solver)
     if abs(pressure_mmHg - cal["activation_pressure_mmHg"]) < 1e-12:
         return start
     load = Load(1.0, pressure_mmHg * MMHG_TO_KPA, material=start.load.material)
-    return solver.follow_path(model, start.x, start.load, [load], run=model.name, **numerics.solver_options())[-1]
+    return path_solver.follow_path(start.x, start.load, [load], run=model.name)[-1]
 
 
 def bilayer_pressure_diameter(
@@ -435,9 +446,8 @@ def bilayer_pressure_diameter(
     geometry, as in figure 3a (that of the semi-analytical tube, so that SPH
     points and exact curve share the normalisation).
     """
-    numerics = Numerics.of(numerics)
-    opts = dict(run=model.name, on_state=log_state(model.name), **numerics.solver_options())
-    start = activated(model, homeostatic, numerics, cal, active, label)
+    path_solver = Numerics.of(numerics).solver(model)
+    start = activated(model, homeostatic, numerics, cal, active, label, path_solver)
     P_act = cal["activation_pressure_mmHg"]
     sweep = np.linspace(0.0, cal["max_pressure_mmHg"], cal["pressure_points"])
     pressures = np.unique(np.round(np.concatenate([sweep, cal["state_pressures_mmHg"], [P_act]]), 10))
@@ -446,7 +456,7 @@ def bilayer_pressure_diameter(
     states = [start]
     for branch in (down, up):
         loads = [Load(1.0, P * MMHG_TO_KPA, material=start.load.material) for P in branch]
-        states += solver.follow_path(model, start.x, start.load, loads, **opts)
+        states += path_solver.follow_path(start.x, start.load, loads, run=model.name, on_state=log_state(model.name))
     states.sort(key=lambda s: s.load.pressure_kPa)
     # eq. (2.17) normalised by the traction-free (zero-pressure) geometry of the semi-analytical tube, the
     # same constant for the SPH points and the exact curve
@@ -516,9 +526,10 @@ class PoolState:
     concentration [mEq/l], the positions and load, how the solver reached it (``control``: ``concentration``, or
     ``volume`` where the concentration-controlled path had lost equilibrium, :mod:`sphgag.engine.pool_volume`), the
     run's pool model (``pool_model``: ``particles``, the paper's GAG particles, or ``cavity``; :data:`POOL_MODELS`)
-    and whether the pool was a cavity in this state (``cavity``), and how the run's path ended (the same for every
-    state of a run: ``path_end`` ``complete``, ``limit point`` at ``limit_concentration``, or ``no equilibrium``,
-    with ``end_reason``)."""
+    and whether the state is in equilibrium with the pool model's converted wall (``cavity``, the name the state
+    files keep: :meth:`PoolModel.converts`; :meth:`model` rebuilds that wall), and how the run's path ended (the same
+    for every state of a run: ``path_end`` ``complete``, ``limit point`` at ``limit_concentration``, or
+    ``no equilibrium``, with ``end_reason``)."""
 
     stage: str
     concentration: float
@@ -544,8 +555,8 @@ class PoolState:
         model: Model | None = None,
         pool_model="particles",
     ) -> PoolState:
-        """The state ``state`` of a run with pool model ``pool_model``, in equilibrium with ``model`` (whose
-        cavities say whether the pool was a cavity in it)."""
+        """The state ``state`` of a run with pool model ``pool_model``, in equilibrium with ``model`` (the pool model
+        says whether that is its converted wall, :meth:`PoolModel.converts`)."""
         c = state.convergence
         return cls(
             stage,
@@ -557,8 +568,13 @@ class PoolState:
             c.force_evaluations,
             control,
             pool_model,
-            bool(model is not None and model.cavities),
+            bool(model is not None and POOL_MODELS.lookup(pool_model).converts(model)),
         )
+
+    def model(self, run_model: Model, converted: Model | None = None) -> Model:
+        """The wall this state is in equilibrium with: the run's ``run_model``, or the pool model's converted wall
+        (:meth:`PoolModel.converted_model`; ``converted`` if given, the one an earlier state of the run rebuilt)."""
+        return state_model(run_model, self.cavity, self.x, converted, self.pool_model)
 
     def info(self) -> dict:
         """What a state file keeps beside positions and load (:func:`sphgag.records.state.save_series`)."""
@@ -599,24 +615,125 @@ class PoolState:
 
 
 @dataclass(frozen=True)
-class PoolModel:
-    """A model of the pool in the figure 4 runs: the charge ``laws`` it carries and the hourglass form
-    (:data:`sphgag.engine.hourglass.FORMS`) its wall is solved with once the pool is converted (None: the
-    configuration's ``numerics.hourglass``)."""
+class PoolModel(Variant):
+    """A model of the pool in the figure 4 runs (a :class:`sphgag.registry.Variant` of :data:`POOL_MODELS`): its
+    ``name`` (``swelling.pool_models``, ``swelling.variant_pool_models``, ``verification.circular_pool.pool_models``,
+    wildcard ``{pool}``, column ``pool_model``), ``title`` (the figures' heading of its rows), the charge ``laws`` it
+    carries (:data:`sphgag.physics.donnan.LAWS`), ``noun`` (what the verification's run names call the pool) and
+    whether it is the paper's. Its behaviour: the wall of a pool swollen from rest (:meth:`around`, the
+    verification), what becomes of the wall once the pool is converted (:meth:`convert`, figure 4), and the wall a
+    converted state is in equilibrium with (:meth:`converted_model`, :meth:`converts`)."""
 
+    name: str
+    title: str
     laws: tuple[str, ...]
+    noun: str
+    paper: bool = False
+
+    keys: ClassVar[tuple[str, ...]] = (
+        "swelling.pool_models",
+        "swelling.variant_pool_models",
+        "verification.circular_pool.pool_models",
+    )
+    #: its converted states are in a wall of its own (:meth:`converted_model`), not the run's
+    rebuilds: ClassVar[bool] = False
+
+    def check(self, config, key: str) -> None:
+        """A pool model of the swelling runs carries one of the configured charge laws (it runs under those)."""
+        laws = config.get("gag", {}).get("charge_laws", [])
+        if not set(self.laws) & set(laws):
+            raise ValueError(
+                f"{key} = {self.name!r} carries the charge laws {', '.join(self.laws)}, none of "
+                f"gag.charge_laws = {laws}"
+            )
+
+    def around(self, model: Model, members: np.ndarray, mirrored: bool = False) -> Model:
+        """``model`` (whose pool ``members`` are GAG particles) with the pool as this model holds it from rest
+        (``mirrored``: a pool about the origin of a quarter layout)."""
+        return model
+
+    def convert(
+        self, path_solver: solver.Solver, state: solver.State, opts: dict
+    ) -> tuple[solver.Solver, solver.State]:
+        """``(solver, state)`` once the pool of the wall of ``path_solver`` is converted at ``state`` (c = 0): the
+        solver of the wall the swelling runs on (a new wall has a solver of its own, with the same options) and its
+        equilibrium (raises :class:`sphgag.engine.solver.NotConverged`, with :meth:`unconverged`'s reason, where it has
+        none near ``state``). ``opts``: the path's ``run`` and ``on_state``."""
+        return path_solver, state
+
+    def unconverged(self, exc: solver.NotConverged) -> str:
+        """Why the path of the run ends at conversion, where :meth:`convert` found no equilibrium."""
+        return f"the converted pool has no equilibrium ({exc.reason})"
+
+    def converts(self, model: Model) -> bool:
+        """Whether ``model`` is the converted wall of :meth:`convert` rather than the run's own."""
+        return False
+
+    def converted_model(self, model: Model, x: np.ndarray, converted: Model | None = None) -> Model:
+        """The converted wall of the run's ``model`` a state at positions ``x`` is in equilibrium with (``converted``
+        if given: the one an earlier state of the run rebuilt)."""
+        return model
+
+
+@dataclass(frozen=True)
+class CavityPool(PoolModel):
+    """The pool as a pressurised cavity (:mod:`sphgag.engine.pool_cavity`; our deviation): its lining carries the
+    prescribed Pi(c), its contents swell uniformly, so it carries only the laws that do not conserve the fixed charge
+    (a cavity carries one pressure, whatever its J). Once converted, its wall is solved with the hourglass form
+    ``hourglass`` (:data:`sphgag.engine.hourglass.FORMS`), whatever ``numerics.hourglass`` says: the form as printed
+    loses the path next to the swollen cavity (docs/physics.md). The override is logged where it changes the form."""
+
     hourglass: str | None = None
+    rebuilds: ClassVar[bool] = True
+
+    def around(self, model, members, mirrored=False):
+        cavity = pool_cavity.Cavity.around(model.layout, members, model.layout.X, mirrored=mirrored)
+        return replace(model, cavities=(cavity,))
+
+    def convert(self, path_solver, state, opts):
+        model = path_solver.model
+        log.info("[%s] the pool becomes a cavity: its contents swell uniformly, its lining carries Pi", model.name)
+        hollow = solver.Solver(self.converted_model(model, state.x), path_solver.options)  # a new model's own cache
+        return hollow, hollow.follow_path(state.x, state.load, [state.load], **opts)[-1]
+
+    def unconverged(self, exc):
+        return f"the unswollen pool has no equilibrium as a cavity ({exc.reason})"
+
+    def converts(self, model):
+        return bool(model.cavities)
+
+    def converted_model(self, model, x, converted=None):
+        """``model`` with its pool as the cavity, its particles held at ``x`` (where the pool became a cavity, so
+        every converted state of the run rebuilds the same wall), and the cavity's hourglass form."""
+        if converted is not None:
+            return converted
+        form = self.hourglass or model.hourglass
+        if form != model.hourglass:
+            log.info(
+                "[%s] pool model %s: its wall is solved with the %s hourglass form, not numerics.hourglass = %s",
+                model.name,
+                self.name,
+                form,
+                model.hourglass,
+            )
+        return pool_cavity.hollow(replace(model, hourglass=form), model.props.converting, x)
 
 
-#: the pool models of the figure 4 runs (``swelling.pool_models``, wildcard ``{pool}``, column ``pool_model``):
-#: ``particles``, the paper's GAG particles (eq. 2.27), every law; ``cavity``, the pool as a pressurised cavity whose
-#: lining carries the prescribed Pi(c) (:mod:`sphgag.engine.pool_cavity`; our deviation), so only the laws that do
-#: not conserve the fixed charge (``prescribed``: a cavity carries one pressure, whatever its J), its wall with the
-#: energy form of eq. (2.14) (the form as printed loses the path next to the swollen cavity: docs/physics.md)
-POOL_MODELS = {
-    "particles": PoolModel(CHARGE_LAWS),
-    "cavity": PoolModel(tuple(name for name, law in LAWS.items() if not law.conserves_charge), "energy"),
-}
+#: the pool models of the figure 4 runs and the pool verifications, by name (the paper's first): ``particles``, the
+#: paper's GAG particles (eq. 2.27), every law; ``cavity``, the pool as a pressurised cavity (:class:`CavityPool`)
+POOL_MODELS: Registry[PoolModel] = Registry(
+    "pool model",
+    (
+        PoolModel("particles", "the pool's GAG particles (eq. 2.27; the paper's)", CHARGE_LAWS, "pool", paper=True),
+        CavityPool(
+            "cavity",
+            "the pool as a pressurised cavity (our deviation: its lining carries Pi, its contents swell uniformly)",
+            tuple(name for name, law in LAWS.items() if not law.conserves_charge),
+            "cavity",
+            hourglass="energy",
+        ),
+    ),
+)
 
 
 def concentration_steps(sw: dict) -> np.ndarray:
@@ -632,10 +749,11 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
     2. convert the pool's medial particles to GAG at c = 0 (``conversion_steps``
        converged increments of the material homotopy of
        :func:`materials.convert_to_gag`) and relax;
-    3. with ``pool_model: cavity`` in ``sw`` (default ``particles``, the paper's), the converted pool becomes a
-       pressurised cavity (:mod:`sphgag.engine.pool_cavity`; our deviation) and the wall is relaxed again at c = 0
-       (where it finds no equilibrium, e.g. a long pool squeezed shut, whose lining's faces no contact keeps apart,
-       the path ends there: ``no equilibrium``, with the reason);
+    3. the pool model ``pool_model`` of ``sw`` (:data:`POOL_MODELS`; default the paper's, ``particles``) converts
+       the wall (:meth:`PoolModel.convert`): with ``cavity`` the converted pool becomes a pressurised cavity
+       (:mod:`sphgag.engine.pool_cavity`; our deviation) and the wall is relaxed again at c = 0 (where it finds no
+       equilibrium, e.g. a long pool squeezed shut, whose lining's faces no contact keeps apart, the path ends there:
+       ``no equilibrium``, with the reason);
     4. raise the fixed-charge concentration from 0 to ``max_concentration_mEq_l``
        (``concentration_points`` converged states, c = 0 included).
     The lumen pressure stays constant throughout: it is a follower pressure load
@@ -649,11 +767,11 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
     limit point there, the discretisation fails; the reason is recorded). No state beyond the last equilibrium is
     returned.
     """
-    numerics = Numerics.of(numerics)
+    path_solver = Numerics.of(numerics).solver(model)
     run = model.name
-    opts = dict(run=run, on_state=log_state(run), **numerics.solver_options())
+    opts = dict(run=run, on_state=log_state(run))
     base = swelling_load(start.load, 0.0, 0.0)
-    intact = solver.follow_path(model, start.x, base, [base], **opts)[-1]
+    intact = path_solver.follow_path(start.x, base, [base], **opts)[-1]
     steps = sw["conversion_steps"]
     log.info(
         "[%s] converting %d medial particles to GAG in %d steps at %.1f mmHg",
@@ -662,21 +780,19 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
         steps,
         base.pressure_mmHg,
     )
-    conv = solver.follow_path(
-        model, intact.x, base, [swelling_load(base, f, 0.0) for f in np.linspace(0, 1, steps + 1)[1:]], **opts
-    )[-1]
-    pool_model = sw.get("pool_model", "particles")
-    if pool_model not in POOL_MODELS:
-        raise ValueError(f"unknown pool model {pool_model!r}: one of {', '.join(POOL_MODELS)}")
+    conversion = [swelling_load(base, f, 0.0) for f in np.linspace(0, 1, steps + 1)[1:]]
+    conv = path_solver.follow_path(intact.x, base, conversion, **opts)[-1]
+    pool = POOL_MODELS.lookup(sw.get("pool_model", POOL_MODELS.paper.name))
+    pool_model = pool.name
     states = [PoolState.of("intact", 0.0, intact, pool_model=pool_model)]
-    if pool_model == "cavity":
-        try:
-            model, conv = _hollowed(model, conv, opts)
-        except solver.NotConverged as exc:
-            reason = f"the unswollen pool has no equilibrium as a cavity ({exc.reason})"
-            log.warning("[%s] the path ends at c = 0 mEq/l: %s", run, reason)
-            ended = PoolState.of("converted", 0.0, conv, pool_model=pool_model)
-            return [replace(s, path_end="no equilibrium", end_reason=reason) for s in states + [ended]]
+    try:
+        path_solver, conv = pool.convert(path_solver, conv, opts)
+        model = path_solver.model
+    except solver.NotConverged as exc:
+        reason = pool.unconverged(exc)
+        log.warning("[%s] the path ends at c = 0 mEq/l: %s", run, reason)
+        ended = PoolState.of("converted", 0.0, conv, pool_model=pool_model)
+        return [replace(s, path_end="no equilibrium", end_reason=reason) for s in states + [ended]]
     cs = concentration_steps(sw)
     log.info("[%s] swelling: c = %s mEq/l", run, ", ".join(f"{c:g}" for c in cs))
     states.append(PoolState.of("converted", 0.0, conv, model=model, pool_model=pool_model))
@@ -684,13 +800,11 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
     for k, c in enumerate(cs):
         try:  # a step with a fallback: where it finds no equilibrium on its path, the pool's volume takes over
             target = [swelling_load(base, 1.0, c)]
-            budget = dict(opts, max_bisections=solver.FALLBACK_BISECTIONS)  # Newton keeps its iterations: see solver
-            last = solver.follow_path(model, last.x, last.load, target, **budget)[-1]
+            budget = path_solver.using(max_bisections=solver.FALLBACK_BISECTIONS)  # Newton keeps its iterations
+            last = budget.follow_path(last.x, last.load, target, **opts)[-1]
         except solver.NotConverged as exc:
             log.info("[%s] c = %g mEq/l: %s; the pool's volume becomes the control", run, c, exc.reason)
-            path, reached = pool_volume.continue_path(
-                model, last, model.props.converting, list(cs[k:]), run=run, **numerics.solver_options()
-            )
+            path, reached = pool_volume.continue_path(path_solver, last, model.props.converting, list(cs[k:]), run=run)
             states += [
                 PoolState.of("converted", s.load.material_value("concentration"), s, "volume", model, pool_model)
                 for s in reached
@@ -703,25 +817,18 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
     return states
 
 
-def _hollowed(model: Model, state: solver.State, opts: dict) -> tuple[Model, solver.State]:
-    """The model with the pool as the cavity (:func:`state_model`) and its equilibrium at the load of ``state``
-    (raises :class:`sphgag.engine.solver.NotConverged` if it has none near ``state``)."""
-    log.info("[%s] the pool becomes a cavity: its contents swell uniformly, its lining carries Pi", model.name)
-    hollow = state_model(model, True, state.x)
-    return hollow, solver.follow_path(hollow, state.x, state.load, [state.load], **opts)[-1]
-
-
-def state_model(model: Model, cavity: bool, x: np.ndarray, hollow: Model | None = None) -> Model:
+def state_model(
+    model: Model, cavity: bool, x: np.ndarray, hollow: Model | None = None, pool_model: str | None = None
+) -> Model:
     """The model a state of :func:`swell_pool` is in equilibrium with: ``model`` (the run's wall with its pool), or,
-    for a state whose pool is a ``cavity``, ``model`` with its pool as the cavity and the cavity's hourglass form
-    (:data:`POOL_MODELS`; ``hollow`` if given: the pool's particles are held where the pool became a cavity, so any
-    such state of the run rebuilds the same model)."""
+    for a state in the converted wall (``cavity``, :attr:`PoolState.cavity`), the pool model's converted wall
+    (:meth:`PoolModel.converted_model`; ``hollow`` if given: the one an earlier state of the run rebuilt).
+    ``pool_model``: the run's pool model (by default the first that converts its wall, the cavity)."""
     if not cavity:
         return model
-    if hollow is not None:
-        return hollow
-    form = POOL_MODELS["cavity"].hourglass or model.hourglass
-    return pool_cavity.hollow(replace(model, hourglass=form, _cache={}), model.props.converting, x)
+    if pool_model is None:
+        pool_model = next(name for name, p in POOL_MODELS.items() if p.rebuilds)
+    return POOL_MODELS.lookup(pool_model).converted_model(model, x, hollow)
 
 
 def pool_table(model: Model, states: list[PoolState], pool, probe_length: float, gag: Gag | dict) -> pd.DataFrame:
@@ -731,8 +838,8 @@ def pool_table(model: Model, states: list[PoolState], pool, probe_length: float,
     members = model.props.converting  # the seeded pool (history.HistoryMaterial)
     rows, hollow = [], None
     for st in states:
-        at = state_model(model, st.cavity, st.x, hollow)
-        hollow = at if at.cavities else hollow
+        at = st.model(model, hollow)
+        hollow = at if st.cavity else hollow
         ev = at.evaluate(st.x, st.load)
         row = dict(
             stage=st.stage,

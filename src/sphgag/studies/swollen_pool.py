@@ -30,17 +30,17 @@ particle. **Measures** (each at a converged state with its residual):
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
 
-from ..engine import geometry, kernel, measure, pool_cavity, solver
+from ..engine import geometry, kernel, measure, solver
 from ..engine.model import Model
 from ..engine.numerics import Numerics
 from ..options import Options
 from ..physics import cavity
-from . import inclusion
+from . import artery, inclusion, protocols
 
 
 def two_rings_problems(where: str, radius: float, spacings) -> list[str]:
@@ -87,14 +87,12 @@ def swell_from_rest(model, pressures, steps: int, numerics: Numerics) -> tuple[d
     loads = sorted(set(ramp.tolist()) | {float(p) for p in pressures})
     reached = {}
     try:
-        solver.follow_path(
-            model,
+        Numerics.of(numerics).solver(model).follow_path(
             model.layout.X,
             inclusion.pressure_load(0.0),
             [inclusion.pressure_load(p) for p in loads],
             run=model.name,
             on_state=lambda st: reached.update({st.load.material_value("swelling_pressure"): st}),
-            **numerics.solver_options(),
         )
     except solver.SimulationError as exc:
         return reached, str(exc)
@@ -109,13 +107,12 @@ def solids(mat: inclusion.Materials) -> tuple[cavity.Solid, cavity.Solid]:
 
 def circle_model(A: float, B: float, dx: float, mat: inclusion.Materials, numerics: Numerics, pool_model: str):
     """The quarter annulus with its pool on offset-circle rings, mirror planes on both axes, the outer ring free;
-    ``pool_model``: ``particles`` (the paper's GAG particles) or ``cavity`` (:mod:`sphgag.engine.pool_cavity`)."""
-    model = inclusion.inclusion_model(A, A, dx, B - A, mat, numerics, name=f"circular_pool_dx{dx:g}", free=True)
-    if pool_model == "particles":
-        return model
-    lay = model.layout
-    pool = pool_cavity.Cavity.around(lay, np.flatnonzero(lay.inclusion), lay.X, mirrored=True)
-    return replace(model, name=f"circular_cavity_dx{dx:g}", cavities=(pool,), _cache={})
+    ``pool_model``: a name of :data:`sphgag.studies.protocols.POOL_MODELS` (``particles``, the paper's GAG
+    particles, or ``cavity``, :mod:`sphgag.engine.pool_cavity`), which holds the pool (:meth:`PoolModel.around`)."""
+    pool = protocols.POOL_MODELS.lookup(pool_model)
+    name = f"circular_{pool.noun}_dx{dx:g}"
+    model = inclusion.inclusion_model(A, A, dx, B - A, mat, numerics, name=name, free=True)
+    return pool.around(model, np.flatnonzero(model.layout.inclusion), mirrored=True)
 
 
 def volume_ratio_of(model, ev, members: np.ndarray) -> float:
@@ -248,9 +245,7 @@ def sector_model(walls, pool: geometry.Sector, dx: float, mat: inclusion.Materia
     nb = kernel.for_layout(lay, numerics.kernel_support_factor)
     material = inclusion.InclusionMaterial(lay, mat, members)
     model = Model(f"sector_pool_{pool_model}_dx{dx:g}", lay, nb, material, **numerics.hourglass_control())
-    if pool_model == "cavity":
-        model = replace(model, cavities=(pool_cavity.Cavity.around(lay, members, lay.X),), _cache={})
-    return model, members
+    return protocols.POOL_MODELS.lookup(pool_model).around(model, members), members
 
 
 def sector_study(vs: dict, matrix: dict, gag: dict, numerics: Numerics, pool_model: str, log=None) -> pd.DataFrame:
@@ -258,8 +253,6 @@ def sector_study(vs: dict, matrix: dict, gag: dict, numerics: Numerics, pool_mod
     (``vs``: ``walls_um``, ``pool`` (a figure-4 case), ``probe_length_um``, ``steps``): figure 4's measures
     (:func:`sphgag.studies.protocols.pool_measurements`) and the pool's volume ratio, to compare with
     :func:`sphgag.studies.fe_swelling.sector_pool` on the same geometry and laws."""
-    from . import artery, protocols
-
     numerics = Numerics.of(numerics)
     mat = inclusion.Materials.of(matrix, gag, bulk=True)
     pool = artery.pool_sector(vs["pool"])

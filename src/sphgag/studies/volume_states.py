@@ -34,7 +34,7 @@ STAGE = "at volume"  # the stage of the states this module returns
 def volume_of(model: Model, state: protocols.PoolState) -> tuple[pool_volume.PoolVolume, float, float]:
     """``(measure, V, V_0)``: the volume measure of the pool in the model ``state`` is in equilibrium with, the
     pool's volume in ``state`` and its reference volume."""
-    at = protocols.state_model(model, state.cavity, state.x)
+    at = state.model(model)
     pool = pool_volume.PoolVolume.of(at, model.props.converting)
     return pool, pool(at.evaluate(state.x, state.load)), float(np.sum(pool.V))
 
@@ -46,8 +46,7 @@ def at_volume_ratios(
     which the pool holds the volume ratio ``J``, for each ``J`` of ``targets`` that the path passes, or beyond the end
     of a path that lost equilibrium. Each is solved from the last state below it (of the path, or one reached beyond
     it), with the concentration as the unknown; its ``control`` is ``volume`` and its stage :data:`STAGE`."""
-    numerics = Numerics.of(numerics)
-    opts = numerics.solver_options()
+    opts = Numerics.of(numerics).solver_options()
     path = [s for s in states if s.stage == "converted"]
     if not path:
         return {}
@@ -66,11 +65,11 @@ def at_volume_ratios(
         start, (pool, _, v0) = path[k], measured[k]
         if beyond and out and max(out) > ratios[k]:
             start = out[max(out)]
-        at = protocols.state_model(model, start.cavity, start.x)
+        at = start.model(model)
         run = f"{model.name}_J{J:g}"
         try:
             vs = pool_volume.reach_volume(
-                at, pool, start.x, start.load, J * v0, run=run, tol=opts["tol"], max_iter=opts["max_iter"]
+                at, pool, start.x, start.load, J * v0, run=run, tol=opts.tol, max_iter=opts.max_iter
             )
         except solver.SimulationError as exc:
             log.warning("[%s] no state at J = %g: %s", run, J, exc.reason)

@@ -109,7 +109,9 @@ def swelling_frames(model: Model, states_path, expected_params: dict | None = No
     for k, saved in enumerate(state_io.load_series(states_path, expected_params)):
         stage = saved.info["stage"]
         history = seeding.after if stage == "converted" else seeding.before
-        at = protocols.state_model(model, bool(saved.info.get("cavity", False)), saved.x, hollow)
+        at = protocols.state_model(
+            model, bool(saved.info.get("cavity", False)), saved.x, hollow, saved.info.get("pool_model")
+        )
         hollow = at if at.cavities else hollow
         frames.append(Frame(float(k), saved.x, fields(at, saved.x, saved.load, history)))
     return frames

@@ -9,6 +9,7 @@ import numpy as np
 import pandas as pd
 import seaborn as sns
 
+from ..studies import annulus
 from .style import _style, palette, style_legend
 
 RATIO_COLOURS = {1.0: "#1b9e77", 2.0: "#d95f02", 3.0: "#7570b3"}
@@ -251,7 +252,7 @@ def verification_annulus(table: pd.DataFrame, orders: pd.DataFrame, exact: pd.Da
         top = float(case.limit_pressure_kPa.iloc[0])
         curve = exact[(exact.pool_model == model) & (exact.outer_ratio == ratio)]
         ax.plot(curve.volume_ratio, curve.pressure_kPa / top, color="k", lw=1.0, label="exact (engine's laws)")
-        if model == "hole":
+        if annulus.POOL_MODELS[model].empty:  # the incompressible closed form is the empty hole's
             ax.plot(
                 curve.volume_ratio, curve.incompressible_kPa / top, color="0.5", lw=0.8, ls=":", label="incompressible"
             )
@@ -311,7 +312,7 @@ def verification_annulus(table: pd.DataFrame, orders: pd.DataFrame, exact: pd.Da
         loc="center",
     )
     ax = axes[1][3]
-    crossing = below[below.pool_model == "particles"]
+    crossing = below[below.pool_model.isin([annulus.POOL_MODELS.paper.name])]  # the paper's particles only
     for (ratio, dx), g in crossing.groupby(["outer_ratio", "dx_um"]):
         style = "-" if ratio == ratios[0] else "--"
         ax.plot(g.fraction, g.ring_crossing_um, style, marker="o", ms=3, lw=0.8, color=colours[dx],

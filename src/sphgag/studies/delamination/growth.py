@@ -58,6 +58,7 @@ from ...engine.history import HistoryMaterial, ParticleHistory
 from ...engine.loading import MMHG_TO_KPA, Load
 from ...engine.model import Model
 from ...engine.numerics import Numerics
+from ...engine.solver import Solver
 from ...physics import damage
 from .. import artery, protocols
 from ..onset import CRITERIA
@@ -134,12 +135,17 @@ class GrowthRun:
     that has no equilibrium on its path; :meth:`level` repeats damage passes at one concentration until the pools
     arrest or the run ends; :meth:`run` walks the ramp and returns the
     :class:`Result`. Every state the run holds is converged below the solver tolerance.
+
+    Its paths, snaps and volume-controlled steps are solved by its ``solver`` (a
+    :class:`sphgag.engine.solver.Solver` of the run's model), which every :meth:`branch` of the run shares: one model
+    and one factorisation cache, emptied where the run keeps a snapshot and before each probe of :meth:`critical`.
+    ``name`` is the run's name in logs and errors.
     """
 
-    model: Model
+    solver: Solver  # of the run's model: its options (Numerics.solver_options) and factorisation cache
+    name: str  # the run's name (logs and errors), apart from its solver's options
     front: Front
     settings: Settings
-    opts: dict  # solver options and the run name (Numerics.solver_options)
     material: HistoryMaterial
     state: solver.State
     step: int = 0  # pseudo-time: damage passes so far
@@ -159,8 +165,8 @@ class GrowthRun:
     _front: tuple = ()  # (candidates, their pools, their onset measures) of the current state
 
     @property
-    def run_name(self) -> str:
-        return self.opts["run"]
+    def model(self) -> Model:
+        return self.solver.model
 
     @property
     def hist(self) -> ParticleHistory:
@@ -171,15 +177,14 @@ class GrowthRun:
     def seed(cls, model, start, sectors, settings, numerics, gag, base, run=None, snapshot_steps=()) -> GrowthRun:
         """Convert the medial particles of ``sectors`` to GAG pools at c = 0 in the converged pressurised state
         ``start`` (``settings.conversion_steps`` converged increments of the seeding path)."""
-        numerics = Numerics.of(numerics)
-        opts = dict(run=run or model.name, **numerics.solver_options())
+        path_solver, run = Numerics.of(numerics).solver(model), run or model.name
         material = artery.seeding(base, model.layout, sectors, gag)
         model.set_props(material)
         base_load = protocols.swelling_load(start.load, 0.0, 0.0)
         law = settings.law
         log.info(
             "[%s] seeding %d pool(s) (%d particles) in %d steps at %.1f mmHg; sigma_cr %.0f kPa, %s onset, %s",
-            opts["run"],
+            run,
             len(sectors),
             int(material.history.gag.sum()),
             settings.conversion_steps,
@@ -189,26 +194,24 @@ class GrowthRun:
             law.rupture,
         )
         fractions = np.linspace(0, 1, settings.conversion_steps + 1)[1:]
-        state = solver.follow_path(
-            model, start.x, base_load, [protocols.swelling_load(base_load, f, 0.0) for f in fractions], **opts
-        )[-1]
-        run = cls(model, Front.of(model, sectors, settings), settings, opts, material, state)
-        run.wanted = frozenset(int(s) for s in snapshot_steps)
-        run._settle(material.settled())
-        run._accept(state)
-        return run
+        seeding = [protocols.swelling_load(base_load, f, 0.0) for f in fractions]
+        state = path_solver.follow_path(start.x, base_load, seeding, run=run)[-1]
+        grown = cls(path_solver, run, Front.of(model, sectors, settings), settings, material, state)
+        grown.wanted = frozenset(int(s) for s in snapshot_steps)
+        grown._settle(material.settled())
+        grown._accept(state)
+        return grown
 
     @classmethod
     def resume(cls, model, snapshot, sectors, settings, numerics, gag, base, run=None, snapshot_steps=()) -> GrowthRun:
         """Continue from ``snapshot = (state, history, pseudo_time)`` of this run (:func:`load_snapshot`)."""
-        numerics = Numerics.of(numerics)
+        path_solver, run = Numerics.of(numerics).solver(model), run or model.name
         state, hist, step = snapshot
-        opts = dict(run=run or model.name, **numerics.solver_options())
         material = HistoryMaterial(base, hist, gag)
         model.set_props(material)
         log.info(
             "[%s] resuming at pass %d, c = %g mEq/l (%d GAG particles)",
-            opts["run"],
+            run,
             step,
             state.load.material_value("concentration"),
             int(hist.gag.sum()),
@@ -217,11 +220,11 @@ class GrowthRun:
             ev = model.evaluate(state.x, state.load)
             conv = state.convergence or solver.Convergence(solver.relative_residual(model, ev), 0, 1, 0, 0.0)
             state = solver.State(state.load, state.x, ev, conv)
-        run = cls(model, Front.of(model, sectors, settings), settings, opts, material, state, step)
-        run.wanted = frozenset(int(s) for s in snapshot_steps)
-        run._accept(state)
-        run._detect_merge()
-        return run
+        resumed = cls(path_solver, run, Front.of(model, sectors, settings), settings, material, state, step)
+        resumed.wanted = frozenset(int(s) for s in snapshot_steps)
+        resumed._accept(state)
+        resumed._detect_merge()
+        return resumed
 
     # -- steps of the protocol ------------------------------------------------------------------------------------
     @property
@@ -235,7 +238,7 @@ class GrowthRun:
         if load == self.state.load:
             return
         try:
-            state = solver.follow_path(self.model, self.state.x, self.state.load, [load], **self.opts)[-1]
+            state = self.solver.follow_path(self.state.x, self.state.load, [load], run=self.name)[-1]
         except solver.NotConverged as exc:
             state = self._volume_control(load, exc)
         self._accept(state)
@@ -247,15 +250,14 @@ class GrowthRun:
         at the step's concentration where volume control reaches it; else follows the step as a snap."""
         c = float(load.material_value("concentration"))
         what = f"c = {self.concentration:g} -> {c:g} mEq/l"
-        log.info("[%s] %s has no equilibrium on its path (%s): volume control", self.run_name, what, exc.reason)
+        log.info("[%s] %s has no equilibrium on its path (%s): volume control", self.name, what, exc.reason)
         members = np.flatnonzero(self.hist.gag)
-        options = {k: v for k, v in self.opts.items() if k != "run"}
-        path, reached = pool_volume.continue_path(self.model, self.state, members, [c], run=self.run_name, **options)
+        path, reached = pool_volume.continue_path(self.solver, self.state, members, [c], run=self.name)
         if path.end == "limit point":
-            raise LimitPoint(self.run_name, load, path.reason, path.limit_concentration)
+            raise LimitPoint(self.name, load, path.reason, path.limit_concentration)
         if reached:
             return reached[-1]
-        log.info("[%s] %s: %s", self.run_name, what, path.reason)
+        log.info("[%s] %s: %s", self.name, what, path.reason)
         return self.follow_snap(load, what, exc)
 
     def next_history(self) -> DamageUpdate:
@@ -300,13 +302,13 @@ class GrowthRun:
         ruptured = np.flatnonzero(new.gag & ~hist.gag)
         load = self.state.load
         state, self.material, snapped = snap.transition(
-            self.model,
+            self.solver,
             self.state.x,
             self.material,
             new,
             load,
-            self.opts,
-            lambda exc: self.follow_snap(load, f"pass {step}", exc),  # NoStableState leaves the run as it was
+            run=self.name,
+            on_snap=lambda exc: self.follow_snap(load, f"pass {step}", exc),  # NoStableState leaves the run as it was
         )
         self.step = step
         self.dissipated += released
@@ -319,7 +321,7 @@ class GrowthRun:
             log.info(
                 "[%s] pass %d, c = %g mEq/l: %d ruptured (%d converted in all), delaminated %.1f um, "
                 "%d islands apart, max onset stress %.1f kPa%s",
-                self.run_name,
+                self.name,
                 self.step,
                 self.concentration,
                 ruptured.size,
@@ -337,13 +339,13 @@ class GrowthRun:
         raises :class:`sphgag.engine.snap.NoStableState` if there is none."""
         log.info(
             "[%s] %s at c = %g mEq/l has no equilibrium on its path (%s): following the snap",
-            self.run_name,
+            self.name,
             what,
             load.material_value("concentration"),
             exc.reason,
         )
         self._snapping = what
-        state = snap.follow(self.model, self.state.x, load, **self.opts)
+        state = snap.follow(self.solver, self.state.x, load, run=self.name)
         self.snaps += 1
         return state
 
@@ -408,7 +410,7 @@ class GrowthRun:
             log.log(
                 logging.INFO if kind in ("arrested", "merged", "unstable") else logging.WARNING,
                 "[%s] c = %g mEq/l: %s (%d converted)",
-                self.run_name,
+                self.name,
                 c,
                 stop.reason,
                 self.rows[-1].converted[0],
@@ -420,10 +422,9 @@ class GrowthRun:
 
     # -- the concentrations of the run's events, between the ramp's levels ------------------------------------------
     def branch(self) -> GrowthRun:
-        """A run that continues from this one's current state without changing it (its own rows, no snapshots)."""
-        return dataclasses.replace(
-            self, rows=list(self.rows[-1:]), snapshots=[], wanted=frozenset(), opts=dict(self.opts)
-        )
+        """A run that continues from this one's current state without changing it (its own rows, no snapshots), on
+        the same model and solver."""
+        return dataclasses.replace(self, rows=list(self.rows[-1:]), snapshots=[], wanted=frozenset())
 
     def critical(self, stop: Stop, before: GrowthRun, before_onset: GrowthRun | None) -> Critical:
         """The concentrations of the run's events (:class:`Critical`), each bisected between the last level below
@@ -435,7 +436,7 @@ class GrowthRun:
         if stop.kind in RUNAWAY_KINDS:
             runaway = self._bisect(before, stop.level, _runs_away, "runaway")
         self.model.set_props(self.material)
-        solver.factorisation_cache(self.model).reset()
+        self.solver.reset()
         return Critical(
             onset=onset,
             runaway=runaway,
@@ -452,16 +453,14 @@ class GrowthRun:
         while hi - lo > self.settings.bisection_tolerance_mEq_l:
             c = 0.5 * (lo + hi)
             probe = below.branch()
-            probe.opts["run"] = f"{self.run_name} ({what} probe)"
+            probe.name = f"{self.name} ({what} probe)"
             self.model.set_props(below.material)
-            solver.factorisation_cache(self.model).reset()
+            self.solver.reset()
             if happens(probe, c):
                 hi = c
             else:
                 lo, below = c, probe
-        log.info(
-            "[%s] %s concentration %.2f mEq/l (between %.2f and %.2f)", self.run_name, what, 0.5 * (lo + hi), lo, hi
-        )
+        log.info("[%s] %s concentration %.2f mEq/l (between %.2f and %.2f)", self.name, what, 0.5 * (lo + hi), lo, hi)
         return 0.5 * (lo + hi)
 
     # -- bookkeeping ----------------------------------------------------------------------------------------------
@@ -486,7 +485,7 @@ class GrowthRun:
         seeded pools, pass 0, do not count)."""
         if self.merge_step is None and self.step and self.front.merged(self.hist):
             self.merge_step = self.step
-            log.info("[%s] pools merged at pass %d (c = %g mEq/l)", self.run_name, self.step, self.concentration)
+            log.info("[%s] pools merged at pass %d (c = %g mEq/l)", self.name, self.step, self.concentration)
 
     def _record(self, first_of_level=False, snapped=False) -> None:
         st = self.state
@@ -509,7 +508,7 @@ class GrowthRun:
             # the run continues from a snapshot exactly as a restart from it does: without a stale factorisation
             # (equilibria need not be unique, e.g. a crushed tissue bridge between two GAG regions, so the
             # solver's path must be the same)
-            solver.factorisation_cache(self.model).reset()
+            self.solver.reset()
 
     def result(self, stop: Stop, critical: Critical) -> Result:
         """The run's rows and summary (:func:`sphgag.studies.delamination.tables.run_summary`): where it stopped and

@@ -1,0 +1,148 @@
+"""The pipeline's jobs: one typed object between a Snakemake rule and the package.
+
+A :class:`Kind` declares one kind of job once: its rule, its run key (the pattern of wildcards that names its files)
+and the types of its wildcards. The rules take their paths from it (:meth:`Kind.output`, :attr:`Kind.log`,
+:attr:`Kind.benchmark`, :attr:`Kind.provenance`), and the job's script enters it with :func:`run`, which gives a
+:class:`Job`: the job's name (the rule and the run key, as every log line and record names it), its wildcards as
+typed values (a critical stress is a float from the rule to the package, never text), its threads (the rule's,
+:func:`sphgag.threads.use`), its log (:func:`sphgag.records.runlog.run`), the start states it loads
+(:meth:`Job.state`) and its provenance record (:meth:`Job.record`). A script is then only what its job computes.
+
+The kinds are registered by rule name (:data:`KINDS`, :func:`kind`); a kind's rule that runs under several rules
+(one script, two rules) gives each rule its own kind.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Mapping
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from pathlib import PurePosixPath
+from types import MappingProxyType, SimpleNamespace
+
+from .. import threads
+from ..records import provenance, runlog, state
+
+#: the types of the wildcards that carry numbers (every other wildcard is a name, kept as text); a key's text is the
+#: number's ``:g`` form, so that the text in a file name and the value a job reads are one quantity
+NUMBERS: Mapping[str, type] = MappingProxyType(
+    {"sigma": float, "dx": float, "dedx": float, "width": float, "factor": int, "batch": int}
+)
+
+
+def flat(key: str) -> str:
+    """The run key ``key`` ("{law}/{run}") as one file name ("{law}_{run}")."""
+    return "_".join(PurePosixPath(key).parts)
+
+
+@dataclass(frozen=True)
+class Kind:
+    """One kind of job: the rule ``rule`` and the run key ``key`` (a pattern of wildcards, "{law}/{pool}/...") that
+    names its files and its runs. ``prefix`` names its runs (the rule's name unless given: two rules that run one
+    computation share it)."""
+
+    rule: str
+    key: str
+    prefix: str | None = None
+
+    def output(self, folder: str, suffix: str) -> str:
+        """The path pattern of one output: ``results/<folder>/<key><suffix>`` (results nest by the key's parts)."""
+        return f"results/{folder}/{self.key}{suffix}"
+
+    @property
+    def log(self) -> str:
+        return f"logs/{self.rule}/{self.key}.log"
+
+    @property
+    def benchmark(self) -> str:
+        return f"results/benchmarks/{self.rule}_{flat(self.key)}.tsv"
+
+    @property
+    def provenance(self) -> str:
+        return f"results/provenance/{self.rule}_{flat(self.key)}.json"
+
+    def name(self, wildcards: Mapping) -> str:
+        """The name of the run with ``wildcards``: the prefix and the flat key ("swell_prescribed_particles_...")."""
+        return f"{self.prefix or self.rule}_{flat(self.key.format(**wildcards))}"
+
+
+#: the kinds of job, by rule name (:func:`register`)
+KINDS: dict[str, Kind] = {}
+
+
+def register(*new: Kind) -> None:
+    """Add the kinds ``new`` to :data:`KINDS` (a rule has one kind)."""
+    for k in new:
+        if k.rule in KINDS and KINDS[k.rule] != k:
+            raise ValueError(f"rule {k.rule!r} already has a kind of job: {KINDS[k.rule]}")
+        KINDS[k.rule] = k
+
+
+def kind(rule: str) -> Kind:
+    """The kind of job of rule ``rule`` (KeyError naming the registered rules for any other)."""
+    try:
+        return KINDS[rule]
+    except KeyError:
+        raise KeyError(f"rule {rule!r} has no kind of job: one of {', '.join(sorted(KINDS))}") from None
+
+
+def typed(wildcards: Mapping) -> SimpleNamespace:
+    """The wildcards ``wildcards`` with their values typed (:data:`NUMBERS`; names stay text)."""
+    return SimpleNamespace(**{k: NUMBERS.get(k, str)(v) for k, v in wildcards.items()})
+
+
+@dataclass
+class Job:
+    """One running job of the pipeline (built by :func:`run`): its Snakemake object ``sm``, its name, its typed
+    wildcards ``w``, its logger ``log`` and when it started."""
+
+    sm: object
+    name: str
+    w: SimpleNamespace
+    log: object = None
+    started: float = field(default_factory=time.time)
+
+    @property
+    def params(self):
+        return self.sm.params
+
+    @property
+    def input(self):
+        return self.sm.input
+
+    @property
+    def output(self):
+        return self.sm.output
+
+    def state(self, path=None, expected=None) -> state.SavedState:
+        """The saved state at ``path`` (the input ``state`` unless given), checked against the configuration slice
+        ``expected`` (the params ``state_slice`` unless given): :func:`sphgag.records.state.load`."""
+        path = self.sm.input.state if path is None else path
+        expected = self.sm.params.state_slice if expected is None else expected
+        return state.load(path, expected_params=expected)
+
+    def record(self, params: dict, summary: dict | None = None, rule: str | None = None) -> dict:
+        """The job's provenance record (the output ``provenance``): its rule, params, outputs and ``summary``."""
+        return provenance.write_record(
+            self.sm.output.provenance,
+            rule=rule or self.sm.rule,
+            params=params,
+            outputs=list(self.sm.output),
+            summary=summary,
+            started=self.started,
+        )
+
+
+@contextmanager
+def run(sm, name: str | None = None):
+    """Enter the job of the Snakemake object ``sm``: its rule's threads, its log and its name (its kind's,
+    :func:`kind`, unless ``name`` is given, e.g. a rule that draws one figure). Yields the :class:`Job`."""
+    started = time.time()
+    threads.use(sm.threads)
+    name = name or kind(sm.rule).name(sm.wildcards)
+    with runlog.run(name, sm.log[0]) as log:
+        yield Job(sm, name, typed(sm.wildcards), log, started)
+
+
+from . import kinds  # noqa: E402, F401  (registers every kind of job)
