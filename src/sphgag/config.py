@@ -30,8 +30,8 @@ from .studies import annulus, artery, candidates, onset, protocols
 from .studies.artery import Bilayer, Mean
 from .studies.delamination.section import Delamination
 from .studies.paper_procedure import PaperProcedure
+from .studies.pool_response import Sensitivity
 from .studies.protocols import BilayerCalibration, Calibration, HomeostasisSettings
-from .studies.sensitivity import Sensitivity
 from .studies.swelling import Swelling, SwellingConvergence
 from .studies.verification import Verification
 

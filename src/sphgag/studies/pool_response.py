@@ -19,14 +19,19 @@ pressure (rule ``bilayer_pressure_diameter``), the pool converted and swollen up
 from __future__ import annotations
 
 import copy
+import functools
 import logging
+import math
 import time
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 import pandas as pd
 
 from ..engine import solver
+from ..options import Options, key_text
 from . import artery, delamination, protocols
 
 log = logging.getLogger("sphgag")
@@ -36,6 +41,155 @@ SWELLING_OUTPUTS = ("tip_radial_stress_kPa", "top_circ_stress_kPa", "pool_volume
 #: the delamination quantities (section 2.7)
 DELAMINATION_OUTPUTS = ("onset_concentration_mEq_l", "runaway_concentration_mEq_l", "final_length_um", "propagated")
 OUTPUTS = SWELLING_OUTPUTS + DELAMINATION_OUTPUTS
+
+
+@dataclass(frozen=True)
+class Morris(Options):
+    """Morris screening of every input: ``trajectories`` r on a ``levels``-level grid, the bootstrap of the mu*
+    interval (``resamples``, ``confidence``)."""
+
+    trajectories: int
+    levels: int
+    seed: int
+    resamples: int
+    confidence: float
+
+
+@dataclass(frozen=True)
+class Sobol(Options):
+    """Sobol indices of the ``inputs`` inputs Morris ranks highest: ``base_samples`` N, the bootstrap of the S1 and
+    ST intervals (``resamples``, ``confidence``)."""
+
+    inputs: int
+    base_samples: int
+    seed: int
+    resamples: int
+    confidence: float
+
+
+@dataclass(frozen=True)
+class DelaminationMap(Options):
+    """Figure 5's pool at each angular extent and sigma_cr, every level of the ramp classed."""
+
+    angular_extents_deg: tuple
+    critical_stresses_kPa: tuple
+
+
+def _bounds(node: Mapping) -> tuple[list, str]:
+    """The range tests of a schema node (``minimum``, ``exclusiveMaximum``, ...) and their text."""
+    tests, words = [], []
+    for word, sym, ok in (
+        ("minimum", ">=", lambda v, b: v >= b),
+        ("exclusiveMinimum", ">", lambda v, b: v > b),
+        ("maximum", "<=", lambda v, b: v <= b),
+        ("exclusiveMaximum", "<", lambda v, b: v < b),
+    ):
+        if word in node:
+            tests.append((ok, node[word]))
+            words.append(f"{sym} {node[word]}")
+    return tests, " and ".join(words)
+
+
+@dataclass(frozen=True)
+class Sensitivity(Options):
+    """The ``sensitivity`` configuration section: figure 5's pool rerun (:func:`respond`) with the ``inputs``
+    (dotted paths into its scenario, uniform on ``[low, high]``) sampled, figure 4's quantities read at
+    ``concentration_mEq_l``, ``batch_size`` samples per job; Morris screening (:class:`Morris`) and Sobol indices
+    (:class:`Sobol`) of :mod:`sphgag.studies.sensitivity`, and the map of figure 5's pool
+    (:class:`DelaminationMap`)."""
+
+    SECTION = "sensitivity"
+
+    concentration_mEq_l: float
+    batch_size: int
+    inputs: Mapping
+    morris: Morris
+    sobol: Sobol
+    map: DelaminationMap
+
+    #: the sections an input may set (``pool``: figure 5's pool)
+    INPUT_SECTIONS: ClassVar[tuple] = ("bilayer", "numerics", "homeostasis", "gag", "delamination", "pool")
+
+    @staticmethod
+    def config_key(config: Mapping, path: str) -> tuple:
+        """The configuration key a sensitivity input (a dotted path into the scenario, :func:`perturbed`) sets:
+        ``pool.*`` is figure 5's pool (the first of ``delamination.figures.fig5``'s set), the other sections are the
+        configuration's own."""
+        section, *rest = path.split(".")
+        if section == "pool":
+            return ("delamination", "pool_sets", config["delamination"]["figures"]["fig5"], 0, *rest)
+        return (section, *rest)
+
+    @classmethod
+    def input_problems(cls, config: Mapping, schema_node: Callable[[tuple], Mapping]) -> list[str]:
+        """Every input names a number of the configuration that a sample may set (:data:`INPUT_SECTIONS`), and its
+        range lies inside that key's own allowed range (its node of the schema, ``schema_node(key)``; for the pool,
+        inside the media and away from the symmetry edges); the stated concentration is a step of the swelling ramp;
+        Sobol takes no more inputs than there are. The inputs refer to keys the other sections' checks vouch for
+        (e.g. figure 5's pool): check them only for a configuration whose other relations hold."""
+        se = config.get("sensitivity")
+        if not se:
+            return []
+        out = []
+        sections = cls.INPUT_SECTIONS
+        for path, r in se["inputs"].items():
+            name = f"sensitivity.inputs.{path}"
+            if path.split(".")[0] not in sections or path.startswith("delamination.pool_sets"):
+                out.append(
+                    f"{name}: an input is a number of one of the sections {', '.join(sections)} (pool: figure 5's pool)"
+                )
+                continue
+            key = cls.config_key(config, path)
+            try:
+                node = functools.reduce(lambda parent, part: parent[part], key, config)
+            except (KeyError, IndexError, TypeError):
+                node = None
+            if isinstance(node, bool) or not isinstance(node, (int, float)):
+                out.append(f"{name}: {key_text(key)} is not a number of the configuration")
+                continue
+            tests, text = _bounds(schema_node(key))
+            for end in ("low", "high"):
+                if not all(ok(r[end], b) for ok, b in tests):
+                    out.append(f"{name}.{end} = {r[end]} is outside the allowed range of {key_text(key)} ({text})")
+            if not r["low"] < r["high"]:
+                out.append(f"{name}: low = {r['low']} must be below high = {r['high']}")
+        de, bil = config["delamination"], artery.Bilayer.of(config["bilayer"])
+        pool = de["pool_sets"][de["figures"]["fig5"]][0]
+        radius = se["inputs"].get("pool.centre_radius_um", {})
+        for end in ("low", "high"):
+            if end in radius:
+                lo, hi = artery.Pool.of(dict(pool, centre_radius_um=radius[end])).radii()
+                if spans := bil.pool_span_text(lo, hi):
+                    out.append(
+                        f"sensitivity.inputs.pool.centre_radius_um.{end} = {radius[end]}: the pool ({lo:g}-{hi:g} "
+                        f"um) leaves {spans}"
+                    )
+        widths = [("sensitivity.map.angular_extents_deg", w) for w in se["map"]["angular_extents_deg"]]
+        widths += [
+            (f"sensitivity.inputs.pool.angular_extent_deg.{e}", se["inputs"].get("pool.angular_extent_deg", {}).get(e))
+            for e in ("low", "high")
+        ]
+        for name, w in widths:
+            if w is None:
+                continue
+            first, last = artery.Pool.of(dict(pool, angular_extent_deg=w)).angles()
+            if first <= 0 or last >= 90:
+                out.append(
+                    f"{name} = {w}: figure 5's pool (centre {pool['centre_angle_deg']:g} deg) would reach a symmetry "
+                    "edge"
+                )
+        steps = protocols.concentration_steps(config["swelling"])
+        if not any(math.isclose(c, se["concentration_mEq_l"]) for c in steps):
+            steps = ", ".join(f"{c:g}" for c in steps)
+            out.append(
+                f"sensitivity.concentration_mEq_l = {se['concentration_mEq_l']} must be a step of the swelling ramp "
+                f"({steps})"
+            )
+        if se["sobol"]["inputs"] > len(se["inputs"]):
+            out.append(
+                f"sensitivity.sobol.inputs = {se['sobol']['inputs']} exceeds the number of inputs ({len(se['inputs'])})"
+            )
+        return out
 
 
 def _node(scenario: dict, path: str):
