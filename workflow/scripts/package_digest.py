@@ -1,4 +1,9 @@
-"""Rule package_digest: the sha256 of each module the simulations depend on, one line per module (its path)."""
+"""Rule package_digest: the sha256 of each module a script's job imports, one line per module (its path).
+
+The file is rewritten whenever a module is touched, but a rule that reads it reruns only when its bytes change:
+Snakemake compares the checksum of an input newer than the outputs with the one it recorded when the job ran, so a
+checkout that touches the modules without changing them reruns nothing downstream.
+"""
 
 import hashlib
 from pathlib import Path
