@@ -12,7 +12,7 @@ rule package_digest:
     log:
         "logs/package_digest/{script}.log",
     benchmark:
-        "results/benchmarks/package_digest/{script}.tsv"
+        "results/benchmarks/package_digest_{script}.tsv"
     wildcard_constraints:
         script="|".join(CODE),
     localrule: True
