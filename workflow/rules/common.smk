@@ -21,12 +21,15 @@ GAG = {law: canonical(law_gag(config["gag"], law)) for law in LAWS}
 # Code inputs. Snakemake tracks a rule's script, not the package modules the script imports: a rule's code input is
 # the set of modules its script's job imports, computed from the imports (workflow/code_inputs.py: the script's
 # imports followed through the package, those inside functions included, less the modules that compute no number).
-# An edit of a module reruns exactly the jobs that import it, and a module no script imports is no rule's input.
-# A rule's input is not the modules themselves but one digest of them per script (code_of, rule package_digest in
-# package.smk): an edit of any of them reruns the same jobs, while the scheduler, which checks every input of every
-# ready job at each pass, checks one file per job instead of thirty (with the modules listed, a tenth of a core on
-# `all`).
-sys.path.insert(0, str(Path(SRC).parent / "workflow"))
+# An edit of a module reruns exactly the jobs that import it, and a module no script imports is no rule's input (the
+# site's aside: its API pages document every module, MODULES).
+# A rule's input is not the modules themselves but their digest, one file per script (code_of, the file
+# results/code/<script>.sha256 that package_digest in package.smk writes). An edit of any of them reruns the same jobs;
+# and the scheduler, which checks every input of every ready job at each pass, checks one file per job, not thirty
+# (with the modules listed, a tenth of a core on `all`). A digest rewritten to the same bytes (modules touched, not
+# changed) reruns nothing: Snakemake compares a newer input's checksum with the one recorded when the job ran.
+WORKFLOW = Path(SRC).parent / "workflow"
+sys.path.insert(0, str(WORKFLOW))
 from code_inputs import code_inputs  # noqa: E402
 
 # every module of the package, subpackages included, by its path in the package; each path relative to the working
@@ -36,7 +39,7 @@ MODULES = {p.relative_to(PACKAGE).as_posix(): os.path.relpath(p) for p in sorted
 # {script: the modules its job imports} of every workflow script that imports one computing a number
 CODE = {
     script: [MODULES[m] for m in modules]
-    for script, modules in code_inputs(Path(SRC).parent / "workflow" / "scripts", PACKAGE).items()
+    for script, modules in code_inputs(WORKFLOW / "scripts", PACKAGE).items()
     if modules
 }
 
