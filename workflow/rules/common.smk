@@ -26,8 +26,8 @@ GAG = {law: canonical(law_gag(config["gag"], law)) for law in LAWS}
 # A rule's input is not the modules themselves but their digest, one file per script (code_of, the file
 # results/code/<script>.sha256 that package_digest in package.smk writes). An edit of any of them reruns the same jobs;
 # and the scheduler, which checks every input of every ready job at each pass, checks one file per job, not thirty
-# (with the modules listed, a tenth of a core on `all`). A digest rewritten to the same bytes (modules touched, not
-# changed) reruns nothing: Snakemake compares a newer input's checksum with the one recorded when the job ran.
+# (with the modules listed, a tenth of a core on `all`). A module touched but not changed (a checkout) reruns
+# nothing: Snakemake compares a newer input's checksum with the one recorded when the job ran.
 WORKFLOW = Path(SRC).parent / "workflow"
 sys.path.insert(0, str(WORKFLOW))
 from code_inputs import code_inputs  # noqa: E402

@@ -1,8 +1,7 @@
 """Rule package_digest: the sha256 of each module a script's job imports, one line per module (its path).
 
-The file is rewritten whenever a module is touched, but a rule that reads it reruns only when its bytes change:
-Snakemake compares the checksum of an input newer than the outputs with the one it recorded when the job ran, so a
-checkout that touches the modules without changing them reruns nothing downstream.
+A module touched but not changed (a checkout, a copy) reruns nothing: Snakemake compares the checksum of an input
+newer than the outputs with the one it recorded when the job ran, and only a changed module rewrites the digest.
 """
 
 import hashlib
