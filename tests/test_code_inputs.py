@@ -4,6 +4,7 @@ the import graph of the workflow scripts, and what an edit of a module reruns (S
 import contextlib
 import importlib.util
 import os
+import re
 import time
 
 import pytest
@@ -97,6 +98,30 @@ def test_a_module_no_script_imports_and_the_bookkeeping_are_inputs_of_nothing(co
     assert "studies/fe_swelling.py" not in counted
     assert not counted & code_inputs.BOOKKEEPING
     assert code["concat_tables"] == []  # it imports the bookkeeping alone: no code input but its script
+
+
+# a rule, a rule of a loop (`for ...:` then `    rule:`) or a rule derived from another (`use rule A as B with:`)
+RULE = re.compile(r"^(?:use rule (\w+) as (\w+) with:|rule (\w+):|    rule:)", re.M)
+
+
+def test_every_rule_that_runs_a_script_takes_the_digest_of_its_scripts_modules(code):
+    """``code=code_of("<script>")`` in every rule whose script imports a module computing a number (a derived rule
+    that redefines its inputs included), and no code input in the others."""
+    scripts, wrong = {}, []
+    for smk in sorted((ROOT / "workflow" / "rules").glob("*.smk")):
+        text = smk.read_text()
+        starts = [m.start() for m in RULE.finditer(text)] + [len(text)]
+        for start, end in zip(starts, starts[1:]):
+            block, head = text[start:end], RULE.match(text, start)
+            name = head.group(2) or head.group(3) or f"{smk.name}:{start}"
+            own = re.search(r"scripts/(\w+)\.py", block)
+            scripts[name] = script = own.group(1) if own else scripts.get(head.group(1))
+            if script is None or (head.group(1) and "input:" not in block):
+                continue  # no script (the site's MkDocs), or inputs inherited with the rule
+            found = re.findall(r"^\s+code=(.*),$", block, re.M)
+            if found != ([f'code_of("{script}")'] if code[script] else []):
+                wrong.append((name, script, found))
+    assert not wrong, wrong
 
 
 def dry_run_jobs(out: str) -> list[tuple[str, dict]]:

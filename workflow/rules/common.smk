@@ -36,18 +36,14 @@ from code_inputs import code_inputs  # noqa: E402
 # directory, so that moving or re-cloning the checkout reruns nothing
 PACKAGE = Path(SRC, "sphgag")
 MODULES = {p.relative_to(PACKAGE).as_posix(): os.path.relpath(p) for p in sorted(PACKAGE.rglob("*.py"))}
-# {script: the modules its job imports} of every workflow script that imports one computing a number
-CODE = {
-    script: [MODULES[m] for m in modules]
-    for script, modules in code_inputs(WORKFLOW / "scripts", PACKAGE).items()
-    if modules
-}
+# {script: the modules its job imports} of every workflow script (none where it imports no module computing a number)
+CODE = {script: [MODULES[m] for m in modules] for script, modules in code_inputs(WORKFLOW / "scripts", PACKAGE).items()}
 
 
 def code_of(script):
     """Rule input: the digest of the modules that the job of workflow/scripts/``script``.py imports (CODE), none
     where it imports no module that computes a number."""
-    return f"results/code/{script}.sha256" if script in CODE else []
+    return f"results/code/{script}.sha256" if CODE[script] else []
 
 
 # Configuration slices that saved states depend on: a later rule refuses a state made with others.
