@@ -42,10 +42,12 @@ def code():
 
 
 def importers(code, module):
+    """The scripts whose jobs import ``module``."""
     return {script for script, modules in code.items() if module in modules}
 
 
 def write(path, text):
+    """``text`` in the file ``path``, its directories made."""
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(text)
 
