@@ -1,7 +1,7 @@
 rule calibrate_mean:
     """Figure 2a on the mean-behaviour model: axial stretch, then 0-200 mmHg, beside the exact thick wall."""
     input:
-        code=SPHGAG,
+        code=code_of("calibrate_mean"),
     output:
         states=report(
             "results/calibration/mean_pressure_diameter.csv",

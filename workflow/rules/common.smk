@@ -19,54 +19,32 @@ LAWS = config["gag"]["charge_laws"]
 GAG = {law: canonical(law_gag(config["gag"], law)) for law in LAWS}
 
 
-# Snakemake tracks a rule's script, not the modules it imports: every simulation
-# rule depends on the package's physics sources, so a physics edit reruns what it
-# affects; figure, claims, sensitivity-index and view (ParaView, animation) rules depend on their own modules only (a
-# series depends on the physics it recomputes the stresses with, too); the modules that
-# compute no number (validation, logging, provenance records) are inputs of nothing.
-# The figures are drawn by families (sphgag.views.<family>: figure 1, the wall models of figure 3, the swelling of
-# figure 4, the verification problems, the delamination of figures 5-7, the sensitivity study), on a shared style.
-FIGURE_FAMILIES = (
-    "layout",
-    "wall",
-    "swelling",
-    "verification",
-    "delamination",
-    "sensitivity",
-    "variants",
-    "procedure",
-)
-PRESENTATION = {
-    "views/style.py",
-    *(f"views/{family}.py" for family in FIGURE_FAMILIES),
-    "views/paraview.py",
-    "views/animation.py",
-    "views/pages.py",
-    "studies/claims.py",
-    "studies/sensitivity.py",
-    "config.py",
-    "threads.py",
-    "records/runlog.py",
-    "records/provenance.py",
-}
+# Code inputs. Snakemake tracks a rule's script, not the package modules the script imports: a rule's code input is
+# the set of modules its script's job imports, computed from the imports (workflow/code_inputs.py: the script's
+# imports followed through the package, those inside functions included, less the modules that compute no number).
+# An edit of a module reruns exactly the jobs that import it, and a module no script imports is no rule's input (the
+# site's aside: its API pages document every module, MODULES).
+# A rule's input is not the modules themselves but their digest, one file per script (code_of, the file
+# results/code/<script>.sha256 that package_digest in package.smk writes). An edit of any of them reruns the same jobs;
+# and the scheduler, which checks every input of every ready job at each pass, checks one file per job, not thirty
+# (with the modules listed, a tenth of a core on `all`). A module touched but not changed (a checkout) reruns
+# nothing: Snakemake compares a newer input's checksum with the one recorded when the job ran.
+WORKFLOW = Path(SRC).parent / "workflow"
+sys.path.insert(0, str(WORKFLOW))
+from code_inputs import code_inputs  # noqa: E402
+
 # every module of the package, subpackages included, by its path in the package; each path relative to the working
 # directory, so that moving or re-cloning the checkout reruns nothing
 PACKAGE = Path(SRC, "sphgag")
 MODULES = {p.relative_to(PACKAGE).as_posix(): os.path.relpath(p) for p in sorted(PACKAGE.rglob("*.py"))}
-SPHGAG_MODULES = [path for name, path in MODULES.items() if name not in PRESENTATION]
-# The simulations' code input is one digest of those modules (package.smk), not the modules themselves; an
-# edit of any of them reruns the same jobs, while the scheduler, which checks every input of every ready job at each
-# pass, checks one file per job instead of fifty (with the modules listed, a tenth of a core on `all`).
-SPHGAG = "results/code/sphgag.sha256"
-# a figure rule's code: its family's module, the shared style and the charge laws' titles it reads
-# (physics/donnan.py) (an edit of one family redraws its figures only)
-VIEWS = {
-    family: [MODULES["views/style.py"], MODULES["physics/donnan.py"], MODULES[f"views/{family}.py"]]
-    for family in FIGURE_FAMILIES
-}
-CLAIMS = [MODULES["studies/claims.py"], MODULES["physics/donnan.py"]]  # the claims and the paper's charge law
-SENSITIVITY = MODULES["studies/sensitivity.py"]  # the indices, not the samples' simulations
-PARAVIEW = MODULES["views/paraview.py"]
+# {script: the modules its job imports} of every workflow script (none where it imports no module computing a number)
+CODE = {script: [MODULES[m] for m in modules] for script, modules in code_inputs(WORKFLOW / "scripts", PACKAGE).items()}
+
+
+def code_of(script):
+    """Rule input: the digest of the modules that the job of workflow/scripts/``script``.py imports (CODE), none
+    where it imports no module that computes a number."""
+    return f"results/code/{script}.sha256" if CODE[script] else []
 
 
 # Configuration slices that saved states depend on: a later rule refuses a state made with others.

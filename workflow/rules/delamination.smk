@@ -15,7 +15,7 @@ rule delaminate:
     """Pool set {poolset} in the passive wall, {law} charge: seeded, swollen, grown by damage at sigma_cr = {sigma} kPa
     ({criterion})."""
     input:
-        code=SPHGAG,
+        code=code_of("delaminate"),
         state=DE_STATE,
     output:
         **de_run(DE_NAME),
@@ -43,7 +43,7 @@ rule delaminate_fracture_energy:
     """Pool set {poolset} in the passive wall, {law} charge, grown by the damage law with a fracture energy G_c = {gc}
     J/m^2 (onset at sigma_cr = {sigma} kPa, {criterion}); G_c = paper: the energy the paper's law dissipates."""
     input:
-        code=SPHGAG,
+        code=code_of("delaminate"),
         state=DE_STATE,
         matched=lambda wildcards: de_run(DE_MATCHED)["summary"] if wildcards.gc == "paper" else [],
     output:
@@ -148,7 +148,7 @@ rule delamination_convergence_dx:
     """Resolution study of delamination, one particle spacing (dx = {dedx} um), {law} charge, {criterion} onset:
     the pool sets of delamination.convergence.pool_sets."""
     input:
-        code=SPHGAG,
+        code=code_of("delamination_convergence"),
     output:
         table=f"results/delamination/convergence/{DC_NAME}.csv",
         provenance=f"results/provenance/delamination_convergence_{flat(DC_NAME)}.json",
@@ -203,7 +203,7 @@ rule delamination_gci:
     """The discretisation error of the onset, runaway and merge concentrations: observed order, extrapolated value and
     grid convergence index of the three finest spacings (Celik et al. 2008)."""
     input:
-        code=SPHGAG,  # studies/gci.py and the delamination package it is read through
+        code=code_of("delamination_gci"),
         convergence=rules.delamination_convergence.output[0],
     output:
         report(

@@ -26,7 +26,7 @@ rule docs_pages:
     """The site's results pages, every number read from the pipeline's tables, stamped with their commit and the
     configuration."""
     input:
-        code=[SPHGAG, MODULES["views/pages.py"], *CLAIMS],  # the tables read through studies.annulus and gci
+        code=code_of("docs_pages"),
         claims=rules.claims.output.table,
         tips=rules.tip_stress.output[0],
         delamination=rules.delamination_summary.output[0],

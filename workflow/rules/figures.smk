@@ -1,7 +1,7 @@
 rule fig3a_mean:
     """Figure 3a for the mean-behaviour model: pressure-outer diameter and mean stress-stretch."""
     input:
-        code=VIEWS["wall"],
+        code=code_of("fig3a_mean"),
         states=rules.calibrate_mean.output.states,
         exact=rules.calibrate_mean.output.exact,
     output:
@@ -32,7 +32,7 @@ rule fig3b:
     """Figure 3b: transmural radial and circumferential stress of the mean model at the calibration's transmural
     pressures (103, 145, 200 mmHg)."""
     input:
-        code=VIEWS["wall"],
+        code=code_of("fig3b"),
         profiles=rules.transmural.output[0],
     output:
         pdf="figures/fig3b.pdf",
@@ -59,7 +59,7 @@ rule fig3b:
 rule fig3:
     """Figure 3, complete: mean, passive and active models (pressure-diameter, stress-stretch, transmural)."""
     input:
-        code=VIEWS["wall"],
+        code=code_of("fig3"),
         mean_states=rules.calibrate_mean.output.states,
         mean_exact=rules.calibrate_mean.output.exact,
         bilayer=rules.bilayer_table.output.table,
@@ -93,7 +93,7 @@ rule fig3:
 rule fig1:
     """Figure 1: particle layout of the bi-layered model, the kernel, the layer composition."""
     input:
-        code=VIEWS["layout"],
+        code=code_of("fig1"),
         particles=rules.homeostasis.output.particles,
     output:
         pdf="figures/fig1.pdf",
@@ -126,7 +126,7 @@ rule fig4:
     """Figure 4: the pools, and the tip radial and top hoop stress against GAG concentration, for every charge law;
     with the resolution study's bands and its tip stress against pool volume where target `resolution` has run."""
     input:
-        code=VIEWS["swelling"],
+        code=code_of("fig4"),
         tips=rules.tip_stress.output[0],
         particles=rules.homeostasis.output.particles,
         band=study_input(lambda: rules.swelling_gci.output.band, "resolution"),
@@ -166,7 +166,7 @@ rule fig4:
 rule claims:
     """The paper's claims (figures 3-7) against our numbers, from the CSV tables alone."""
     input:
-        code=CLAIMS,
+        code=code_of("claims"),
         mean=rules.calibrate_mean.output.states,
         bilayer=rules.bilayer_table.output.table,
         activation=rules.bilayer_table.output.activation,
@@ -213,7 +213,7 @@ rule claims:
 rule swelling_convergence_figure:
     """Resolution study of the pool stresses: tip, top and pool volume change against concentration per dx and law."""
     input:
-        code=VIEWS["swelling"],
+        code=code_of("swelling_convergence_figure"),
         table=rules.swelling_convergence.output[0],
     output:
         pdf="figures/swelling_convergence.pdf",
@@ -265,7 +265,7 @@ for figure, spec in DE_FIGURE_RULES.items():
         name:
             figure
         input:
-            code=VIEWS["delamination"],
+            code=code_of("delamination_figure"),
             growth=rules.delamination_growth.output[0],
             summary=rules.delamination_summary.output[0],
             # the snapshots of the figure's runs, by law, then pool set, then criterion (the order the script reads)

@@ -5,7 +5,7 @@ wildcard_constraints:
 rule homeostasis:
     """Figure 2b: deposition pre-stretches ramped at the held in vivo inner radius; the carried pressure is measured."""
     input:
-        code=SPHGAG,
+        code=code_of("homeostasis"),
     output:
         state="results/states/homeostatic.npz",
         summary=report(
@@ -55,7 +55,7 @@ rule homeostasis_target:
 rule bilayer_pressure_diameter:
     """Passive or active bi-layered model under pressure control, beside the semi-analytical tube."""
     input:
-        code=SPHGAG,
+        code=code_of("bilayer_pressure_diameter"),
         homeostatic=rules.homeostasis.output.state,
     output:
         table="results/calibration/bilayer_{model}.csv",

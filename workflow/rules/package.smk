@@ -1,16 +1,20 @@
-# The package's physics sources as one file: the code input of every simulation (common.smk: SPHGAG).
+# The code input of the rules that run a script: the package modules its job imports as one file per script
+# (common.smk: CODE, code_of).
 
 
 rule package_digest:
-    """The sha256 of every module the simulations depend on, one per line: their code input (SPHGAG)."""
+    """The sha256 of every module that the job of workflow/scripts/{script}.py imports, one per line: the code input
+    of the rules that run the script (code_of)."""
     input:
-        SPHGAG_MODULES,
+        lambda wildcards: CODE[wildcards.script],
     output:
-        SPHGAG,
+        "results/code/{script}.sha256",
     log:
-        "logs/package_digest.log",
+        "logs/package_digest/{script}.log",
     benchmark:
-        "results/benchmarks/package_digest.tsv"
+        "results/benchmarks/package_digest_{script}.tsv"
+    wildcard_constraints:
+        script="|".join(script for script, modules in CODE.items() if modules),
     localrule: True
     conda:
         "../envs/sphgag.yaml"

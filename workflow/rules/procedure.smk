@@ -36,7 +36,7 @@ wildcard_constraints:
 rule procedure_start:
     """The {model} wall at the procedure's spacing and pressure (equilibrium): the state its runs start from."""
     input:
-        code=SPHGAG,
+        code=code_of("procedure_start"),
     output:
         start="results/paper_procedure/{model}/start.npz",
         provenance="results/provenance/procedure_start_{model}.json",
@@ -60,7 +60,7 @@ rule procedure_equilibrium:
     """Figure 4's equilibrium path of each of the procedure's pools in the {model} wall, at its spacing and
     temperature, measured."""
     input:
-        code=SPHGAG,
+        code=code_of("procedure_equilibrium"),
         start=rules.procedure_start.output.start,
     output:
         table="results/paper_procedure/{model}/equilibrium.csv",
@@ -87,7 +87,7 @@ rule procedure_explicit:
     """Figure 4's pool {case} in the {model} wall by the explicit procedure, every stage's steps times {factor}:
     the recorded states and their pool stresses, residuals and kinetic energies."""
     input:
-        code=SPHGAG,
+        code=code_of("procedure_explicit"),
         start=rules.procedure_start.output.start,
     output:
         states=f"results/paper_procedure/states/{PP_RUN}.npz",
@@ -115,7 +115,7 @@ rule procedure_delaminate:
     """The pools of set {poolset} in the passive wall at sigma_cr = {sigma} kPa by the explicit damage stage, every
     count of steps times {factor}: one row per load update, and the saved states."""
     input:
-        code=SPHGAG,
+        code=code_of("procedure_delaminate"),
         start=expand(rules.procedure_start.output.start, model="passive"),
     output:
         states=f"results/paper_procedure/states/{PP_DAMAGE}.npz",
@@ -146,7 +146,7 @@ rule procedure_summary:
     """Every explicit run's states in one table, and figure 4's quantities at the top of the paper's range by path
     (equilibrium, explicit at each step factor) with their residuals."""
     input:
-        code=MODULES["studies/paper_procedure.py"],
+        code=code_of("procedure_summary"),
         equilibrium=expand(rules.procedure_equilibrium.output.table, model=PP["models"]),
         runs=expand(rules.procedure_explicit.output.table, model=PP["models"], case=PP["cases"], factor=PP_FACTORS),
         damage=[f"results/paper_procedure/damage/{run}.csv" for run in PP_DAMAGE_RUNS],
@@ -175,7 +175,7 @@ rule procedure_figure:
     """The explicit procedure against the equilibria: figure 4's tip and top stresses and the residual against
     concentration, per pool, wall and step factor."""
     input:
-        code=VIEWS["procedure"],
+        code=code_of("procedure_figure"),
         equilibrium=rules.procedure_summary.input.equilibrium,
         runs=rules.procedure_summary.output.runs,
         damage=rules.procedure_summary.output.damage,

@@ -56,7 +56,7 @@ rule sensitivity_design:
     """The samples of the {method} design (nominal: the configuration's own values; morris: Morris trajectories over
     every input)."""
     input:
-        code=SENSITIVITY,
+        code=code_of("sensitivity_design"),
     output:
         SE_DESIGN,
     log:
@@ -81,7 +81,7 @@ rule sobol_design:
     """The Saltelli samples of the Sobol indices, over the inputs with the largest Morris mu* (read from the Morris
     indices)."""
     input:
-        code=SENSITIVITY,
+        code=code_of("sensitivity_design"),
         morris=SE_INDICES.format(method="morris"),
     output:
         SE_DESIGN.format(method="sobol"),
@@ -102,7 +102,7 @@ rule sensitivity_batch:
     """Samples of batch {batch} of the {method} design, {law} charge: each reruns figure 5's pool from the homeostatic
     state at its inputs (swelling to the stated concentration, then growth); a failed run is a row with its error."""
     input:
-        code=SPHGAG,
+        code=code_of("sensitivity_batch"),
         design=SE_DESIGN,
     output:
         table=f"results/sensitivity/{SE_BATCH_NAME}.csv",
@@ -128,7 +128,7 @@ rule sensitivity_method:
     """The {method} indices of every output under every charge law, and every sample of the design with its
     outputs."""
     input:
-        code=SENSITIVITY,
+        code=code_of("sensitivity_indices"),
         design=SE_DESIGN,
         batches=lambda wildcards: expand(
             rules.sensitivity_batch.output.table, method=wildcards.method, law=LAWS, batch=SE_BATCHES[wildcards.method]
@@ -155,6 +155,7 @@ rule sensitivity_tables:
     """The study in three tidy tables: the indices, every sample with its inputs and outputs (the nominal one first),
     and the samples without an output (a failed run, or no equilibrium at the stated concentration), by their inputs."""
     input:
+        code=code_of("sensitivity_tables"),
         indices=expand(rules.sensitivity_method.output.indices, method=("morris", "sobol")),
         samples=expand(rules.sensitivity_method.output.samples, method=("morris", "sobol")),
         nominal=expand(rules.sensitivity_batch.output.table, method="nominal", law=LAWS, batch=0),
@@ -180,7 +181,7 @@ rule sensitivity_tables:
 rule sensitivity_figure:
     """Morris mu* against sigma, and Sobol S1 and ST with their intervals, for every output and charge law."""
     input:
-        code=VIEWS["sensitivity"],
+        code=code_of("sensitivity_figure"),
         indices=rules.sensitivity_tables.output.indices,
     output:
         pdf="figures/sensitivity.pdf",
@@ -204,7 +205,7 @@ rule delamination_map_point:
     """Figure 5's pool at {width} deg and sigma_cr = {sigma} kPa, {law} charge, grown over the ramp: what it does at
     each concentration level."""
     input:
-        code=SPHGAG,
+        code=code_of("delamination_map_point"),
         state=DE_STATE,
     output:
         table=f"results/sensitivity/map/{SE_MAP_NAME}.csv",
@@ -259,7 +260,7 @@ rule delamination_map_figure:
     """The map: angular extent x concentration, one panel per sigma_cr and charge law, with the limit concentrations
     of figure 4's swelling runs."""
     input:
-        code=VIEWS["sensitivity"],
+        code=code_of("delamination_map_figure"),
         map=rules.delamination_map.output[0],
         swelling=rules.tip_stress.output[0],
     output:

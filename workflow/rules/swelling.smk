@@ -10,7 +10,7 @@ rule swell:
     """One GAG pool ({case}, as {pool}) in the {model} wall at {pressure} mmHg, {law} charge: conversion, then swelling
     (states)."""
     input:
-        code=SPHGAG,
+        code=code_of("swell"),
         state=STATE,
     output:
         states=JOBS.swell.output("swelling/states", ".npz"),
@@ -38,7 +38,7 @@ rule pool_stresses:
     """The stresses around the pool ({case} as {pool}, {model} wall, {pressure} mmHg, {law} charge) in every state of
     its run."""
     input:
-        code=SPHGAG,
+        code=code_of("pool_stresses"),
         states=rules.swell.output.states,
     output:
         table=f"results/swelling/runs/{SWELL_NAME}.csv",
@@ -111,7 +111,7 @@ rule swelling_convergence_dx:
     """Resolution study, one particle spacing (dx = {dx} um), {law} charge, pools as {pool}: the {model} wall, every
     study pool swollen."""
     input:
-        code=SPHGAG,
+        code=code_of("swelling_convergence"),
     output:
         states=f"results/swelling/convergence/states/{SC_NAME}.npz",
         provenance=f"results/provenance/swelling_convergence_{flat(SC_NAME)}.json",
@@ -137,7 +137,7 @@ rule swelling_convergence_stresses:
     """Resolution study, one particle spacing (dx = {dx} um), {law} charge, pools as {pool}, {model} wall: the pool
     stresses of the saved states."""
     input:
-        code=SPHGAG,
+        code=code_of("swelling_convergence_stresses"),
         states=rules.swelling_convergence_dx.output.states,
     output:
         table=f"results/swelling/convergence/{SC_NAME}.csv",
@@ -194,7 +194,7 @@ rule swelling_gci:
     stated concentrations, the observed order, the extrapolated value and the GCI of the finest spacing; and at
     every step of the ramp, the bands of figure 4."""
     input:
-        code=[MODULES[m] for m in ("studies/convergence.py", "studies/gci.py", "studies/volume_states.py")],
+        code=code_of("swelling_gci"),
         table=rules.swelling_convergence.output[0],
     output:
         table=report(

@@ -11,7 +11,7 @@ rule variant:
     """Figure 4's first pool and figure 5's pool with the hourglass control's {form} form (the paper's charge law), from
     a passive wall of its own at the delamination pressure."""
     input:
-        code=SPHGAG,
+        code=code_of("variant"),
     output:
         swelling=f"results/variants/{VARIANT_NAME}_swelling.csv",
         growth=f"results/variants/{VARIANT_NAME}_growth.csv",
@@ -51,7 +51,7 @@ rule variant:
 rule variants_figure:
     """The hourglass control's forms side by side: figure 4's first pool and figure 5's pool under each."""
     input:
-        code=VIEWS["variants"],
+        code=code_of("variants_figure"),
         swelling=expand(rules.variant.output.swelling, form=HOURGLASS_FORMS),
         growth=expand(rules.variant.output.growth, form=HOURGLASS_FORMS),
         summary=expand(rules.variant.output.summary, form=HOURGLASS_FORMS),
@@ -103,7 +103,7 @@ use rule tip_stress as variants_tip_stress with:
 
 use rule fig4 as variants_fig4 with:
     input:
-        code=VIEWS["swelling"],
+        code=code_of("fig4"),
         tips=rules.variants_tip_stress.output[0],
         particles=rules.homeostasis.output.particles,
         band=study_input(lambda: rules.swelling_gci.output.band, "resolution"),
@@ -124,7 +124,7 @@ use rule fig4 as variants_fig4 with:
 
 use rule claims as variants_claims with:
     input:
-        code=CLAIMS,
+        code=code_of("claims"),
         mean=rules.calibrate_mean.output.states,
         bilayer=rules.bilayer_table.output.table,
         activation=rules.bilayer_table.output.activation,

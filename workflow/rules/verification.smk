@@ -15,7 +15,7 @@ wildcard_constraints:
 rule verify_pool_ratio:
     """Pressurised elliptical inclusion (a/b = {ratio}) at every resolution, against Inglis (and Lame)."""
     input:
-        code=SPHGAG,
+        code=code_of("verify_pool"),
     output:
         table="results/verification/runs/elliptic_pool_ab{ratio}.csv",
         profiles="results/verification/runs/elliptic_pool_profiles_ab{ratio}.csv",
@@ -79,7 +79,7 @@ rule verify_pool_profiles:
 rule verification_pool_figure:
     """SPH around a swelling inclusion against Inglis and Lame; errors against resolution with the observed order."""
     input:
-        code=VIEWS["verification"],
+        code=code_of("verification_pool_figure"),
         table=rules.verify_pool.output[0],
         profiles=rules.verify_pool_profiles.output[0],
     output:
@@ -112,7 +112,7 @@ rule verify_crack_length:
     """Pressurised crack of half-length {length} um at every spacing: the fracture-energy damage law against Sneddon,
     Griffith and G_c."""
     input:
-        code=SPHGAG,
+        code=code_of("verify_crack"),
     output:
         table="results/verification/runs/pressurised_crack_a{length}.csv",
         provenance="results/provenance/verify_crack_a{length}.json",
@@ -165,7 +165,7 @@ rule verification_crack_figure:
     """The fracture-energy damage law on a pressurised crack: SPH against Sneddon and Griffith, and the errors against
     resolution."""
     input:
-        code=VIEWS["verification"],
+        code=code_of("verification_crack_figure"),
         table=rules.verify_crack.output[0],
     output:
         pdf="figures/verification_crack.pdf",
@@ -196,7 +196,7 @@ rule verify_circular_pool_model:
     """A circular pool swollen to large strain ({model}: the paper's GAG particles, or the pool as a pressurised
     cavity) at every spacing, against the exact radially symmetric solution of the same laws."""
     input:
-        code=SPHGAG,
+        code=code_of("verify_circular_pool"),
     output:
         table="results/verification/runs/circular_pool_{model}.csv",
         provenance="results/provenance/verify_circular_pool_{model}.json",
@@ -245,7 +245,7 @@ rule verify_circular_pool:
 rule verification_circular_pool_figure:
     """The circular pool at large strain: errors of the pool's volume and of its lining's radius against dx."""
     input:
-        code=VIEWS["verification"],
+        code=code_of("verification_circular_pool_figure"),
         table=rules.verify_circular_pool.output[0],
     output:
         pdf="figures/verification_circular_pool.pdf",
@@ -276,7 +276,7 @@ rule verify_annulus_model:
     """The prescribed law's limit of existence ({model}: an empty hole, or the paper's GAG particles): a pressurised
     annulus at every spacing below, and above, the largest pressure its exact solution holds."""
     input:
-        code=SPHGAG,
+        code=code_of("verify_annulus"),
     output:
         table="results/verification/runs/annulus_{model}.csv",
         provenance="results/provenance/verify_annulus_{model}.json",
@@ -304,7 +304,7 @@ rule verify_annulus_model:
 rule verify_annulus:
     """The annulus verification of every pool model in one table, and the observed order of each measure."""
     input:
-        code=SPHGAG,
+        code=code_of("verify_annulus_orders"),
         tables=expand(rules.verify_annulus_model.output.table, model=VAN["pool_models"]),
     output:
         table=report(
@@ -337,7 +337,7 @@ rule verification_annulus_figure:
     """The pressurised annulus: pressure against volume ratio beside the exact curve and its limit, and the errors
     against dx."""
     input:
-        code=VIEWS["verification"],
+        code=code_of("verification_annulus_figure"),
         table=rules.verify_annulus.output.table,
         orders=rules.verify_annulus.output.orders,
         exact=rules.verify_annulus.output.exact,

@@ -7,7 +7,7 @@
 rule paraview_delamination:
     """Delamination run {law}/{run}: its snapshots as a ParaView series (a .vtu file per snapshot, a .pvd collection)."""
     input:
-        code=[SPHGAG, PARAVIEW],
+        code=code_of("paraview"),
         states=DE_SNAPSHOTS,
     output:
         series=directory(f"results/paraview/delamination/{DE_ANY_NAME}"),
@@ -29,7 +29,7 @@ rule paraview_swelling:
     """Swelling run {law}/{pool}/{model}_{case}_{pressure}mmHg: its states as a ParaView series (a .vtu file per state, a .pvd
     collection)."""
     input:
-        code=[SPHGAG, PARAVIEW],
+        code=code_of("paraview"),
         states=rules.swell.output.states,
     output:
         series=directory(f"results/paraview/swelling/{SWELL_NAME}"),
@@ -50,7 +50,7 @@ rule paraview_swelling:
 rule animation:
     """Delamination run {law}/{run} drawn frame by frame from its ParaView series: an animated GIF."""
     input:
-        code=[PARAVIEW, MODULES["views/animation.py"]],
+        code=code_of("animation"),
         series=rules.paraview_delamination.output.series,
     output:
         report(
@@ -70,7 +70,7 @@ rule animation:
         "../scripts/animation.py"
 
 
-# every run's series and animation: the target views (VIEWS is common.smk's figure code by family)
+# every run's series and animation: the target views
 RUN_VIEWS = (
     swell_runs(rules.paraview_swelling.output.series, pools=SWELL_POOLS)
     + expand(rules.paraview_delamination.output.series, zip, **law_and_run(DE_SNAPSHOT_NAMES))

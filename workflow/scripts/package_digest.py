@@ -1,4 +1,8 @@
-"""Rule package_digest: the sha256 of each module the simulations depend on, one line per module (its path)."""
+"""Rule package_digest: the sha256 of each module a script's job imports, one line per module (its path).
+
+A module touched but not changed (a checkout, a copy) reruns nothing: Snakemake compares the checksum of an input
+newer than the outputs with the one it recorded when the job ran, and only a changed module rewrites the digest.
+"""
 
 import hashlib
 from pathlib import Path

@@ -6,6 +6,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 
+from ..engine.kernel import spiky, spiky_derivative
 from .style import _style, layer_colours
 
 
@@ -15,7 +16,6 @@ def fig1(particles: pd.DataFrame, mass_fractions: dict, support_factor: float, d
     lumen outwards; by default those of ``mass_fractions``)."""
     layers = list(layers or mass_fractions)
     layer_colour = layer_colours([*layers, *particles.layer.unique()])
-    from ..engine.kernel import spiky, spiky_derivative
 
     _style()
     fig = plt.figure(figsize=(11, 3.8))

@@ -11,6 +11,8 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 from matplotlib.ticker import NullFormatter, ScalarFormatter
 
+from ..engine.measure import pool_probes
+from ..studies.artery import pool_sector
 from .style import (
     GAG_CONCENTRATION,
     LAST_CONVERGED,
@@ -30,9 +32,6 @@ from .style import (
 def pool_geometry_panel(ax, particles: pd.DataFrame, case: dict, probe_length: float, title: str, pool_layers):
     """Figure 4a: the pool (red: its particles of ``pool_layers``), the layers around it, and the probe regions
     (outlines)."""
-    from ..engine.measure import pool_probes
-    from ..studies.artery import pool_sector
-
     pool = pool_sector(case)
     th0 = np.deg2rad(pool.centre_angle_deg)
     half = 0.5 * np.deg2rad(max(pool.angular_extent_deg, 3.0)) + 25.0 / pool.centre_radius

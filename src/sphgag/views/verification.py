@@ -9,7 +9,9 @@ import numpy as np
 import pandas as pd
 import seaborn as sns
 
+from ..physics import fracture
 from ..studies import annulus
+from ..studies.inclusion import TIP_PARTICLES, observed_order
 from .style import _style, palette, style_legend
 
 RATIO_COLOURS = {1.0: "#1b9e77", 2.0: "#d95f02", 3.0: "#7570b3"}
@@ -18,8 +20,6 @@ RATIO_COLOURS = {1.0: "#1b9e77", 2.0: "#d95f02", 3.0: "#7570b3"}
 def verification_pool(table: pd.DataFrame, profiles: pd.DataFrame):
     """The pool verification: (a) Lamé field of the circle, (b) hoop stress ahead of the tip against Inglis,
     (c) tip error and (d) traction jump and field error against resolution (log-log, observed order)."""
-    from ..studies.inclusion import TIP_PARTICLES, observed_order
-
     _style()
     fig, axes = plt.subplots(1, 4, figsize=(16.0, 3.1))
     Pi = float(table.pressure_kPa.iloc[0])
@@ -133,8 +133,6 @@ def verification_circular_pool(table: pd.DataFrame):
     """The circular pool at large strain (circular_pool.csv): |relative error| of (a) the pool's volume ratio and
     (b) its lining's radius against dx, log-log; a colour per volume ratio, a line style per pool model, the
     observed order of each line in the legend."""
-    from ..studies.inclusion import observed_order
-
     _style()
     fig, axes = plt.subplots(1, 2, figsize=(11.0, 3.2))
     ratios = sorted(table.target_volume_ratio.unique())
@@ -174,8 +172,6 @@ def verification_crack(table: pd.DataFrame, modulus: float, fracture_energy_J_m2
     """The pressurised crack (pressurised_crack.csv): (a) the pressure at which it grows against Griffith's (and
     Dugdale's, for the cohesive length), a marker per spacing; (b) the opening area before growth against Sneddon's;
     (c) the three relative errors against dx, log-log, a colour per half-length."""
-    from ..physics import fracture
-
     _style()
     fig, axes = plt.subplots(1, 3, figsize=(11.5, 3.5), layout="constrained")
     spacings = sorted(table.dx_um.unique(), reverse=True)
