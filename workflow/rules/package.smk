@@ -12,7 +12,5 @@ rule package_digest:
     benchmark:
         "results/benchmarks/package_digest.tsv"
     localrule: True
-    conda:
-        "../envs/sphgag.yaml"
     script:
         "../scripts/package_digest.py"
