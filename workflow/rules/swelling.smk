@@ -78,8 +78,9 @@ rule tip_stress:
 SC = config["swelling_convergence"]
 CONVERGENCE_DX = [f"{dx:g}" for dx in SC["dx_um"]]
 # what the study's simulations depend on besides their charge law (params gag; the measurement adds
-# swelling.probe_length_um)
+# swelling.probe_length_um): first the run's spacing, as its key names it
 SC_SIMULATION = dict(
+    dx=lambda wildcards: wildcards.dx,
     bilayer=config["bilayer"],
     numerics=config["numerics"],
     homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
