@@ -31,23 +31,14 @@ swelling_convergence_stresses = Kind(
 )
 
 # The authors' explicit procedure (target paper_procedure): the start wall and equilibrium paths of each wall model,
-# and the explicit runs of figure 4's pools and of the delamination pool sets at each step factor
-procedure_start = Kind("procedure_start", "{model}", log_path="logs/paper_procedure/{model}/start.log")
-procedure_equilibrium = Kind(
-    "procedure_equilibrium", "{model}", log_path="logs/paper_procedure/{model}/equilibrium.log"
-)
-procedure_explicit = Kind(
-    "procedure_explicit",
-    "{model}/{case}_x{factor}",
-    "procedure",
-    log_path="logs/paper_procedure/{model}/{case}_x{factor}.log",
-)
-procedure_delaminate = Kind(
-    "procedure_delaminate",
-    "{poolset}/{sigma}kPa_x{factor}",
-    prefix="procedure",
-    log_path="logs/paper_procedure/{poolset}/{sigma}kPa_x{factor}.log",
-)
+# and the explicit runs ("procedure_..."; their logs in one folder) of figure 4's pools and of the delamination pool
+# sets at each step factor
+PROCEDURE_LOGS = "logs/paper_procedure"
+procedure_start = Kind("procedure_start", "{model}", log_path=f"{PROCEDURE_LOGS}/{{model}}/start.log")
+procedure_equilibrium = Kind("procedure_equilibrium", "{model}", log_path=f"{PROCEDURE_LOGS}/{{model}}/equilibrium.log")
+EXPLICIT, DAMAGE = "{model}/{case}_x{factor}", "{poolset}/{sigma}kPa_x{factor}"
+procedure_explicit = Kind("procedure_explicit", EXPLICIT, "procedure", log_path=f"{PROCEDURE_LOGS}/{EXPLICIT}.log")
+procedure_delaminate = Kind("procedure_delaminate", DAMAGE, "procedure", log_path=f"{PROCEDURE_LOGS}/{DAMAGE}.log")
 
 # The views of every run: a ParaView series of each swelling and delamination run ("{law}/{run}": any delamination
 # run, of the paper's damage law or of one with a fracture energy), and an animation of each delamination run
@@ -63,8 +54,6 @@ variant = Kind("variant", "hourglass_{form}", log_path="logs/variants/hourglass_
 
 register(
     bilayer_pressure_diameter,
-    swell,
-    pool_stresses,
     swelling_convergence_dx,
     swelling_convergence_stresses,
     procedure_start,
@@ -76,3 +65,5 @@ register(
     animation,
     variant,
 )
+
+register(swell, pool_stresses)
