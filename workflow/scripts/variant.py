@@ -7,14 +7,11 @@ from sphgag.studies import variants
 with jobs.run(snakemake) as job:  # noqa: F821
     p = job.params
     v = variants.run_variant(p.bilayer, p.numerics, p.homeostasis, p.swelling, p.delamination, p.gag, name=job.name)
-    for table, path in (
-        (v.swelling, job.output.swelling),
-        (v.growth, job.output.growth),
-        (v.summary, job.output.summary),
-    ):
+    for what in ("swelling", "growth", "summary"):  # each table first by its form and charge law
+        table = getattr(v, what)
         table.insert(0, "hourglass", job.w.form)
         table.insert(1, "charge_law", p.gag["charge_law"])
-        table.to_csv(path, index=False)
+        table.to_csv(job.output[what], index=False)
     s, last = v.summary.iloc[0], v.swelling.iloc[-1]
     job.log.info(
         "[%s] figure 4's pool: %g mEq/l reached, volume change %.3g; figure 5's pool: %s (%s), onset %.2f mEq/l, "
