@@ -160,3 +160,12 @@ rule everything:
         rules.paper_procedure.input,
         rules.views.input,
         rules.docs.input,
+
+
+# One software environment for every job (--sdm conda): set here on each rule that runs a script or a command and
+# names none, rather than by `conda:` in each rule. (Snakemake's top-level `conda:` directive injects an environment
+# into Snakemake's own process, not into the jobs: a script job runs with the Python Snakemake runs with.)
+ENV = str(Path(workflow.basedir, "workflow", "envs", "sphgag.yaml"))
+for _rule in workflow.rules:
+    if _rule.conda_env is None and (_rule.script or _rule.shellcmd):
+        _rule.conda_env = ENV

@@ -16,12 +16,7 @@ rule calibrate_mean:
         "logs/calibrate_mean.log",
     benchmark:
         "results/benchmarks/calibrate_mean.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
     params:
         mean=config["mean"],
         numerics=config["numerics"],

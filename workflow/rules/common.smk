@@ -100,11 +100,6 @@ def swell_runs(pattern, pools=SW["pool_models"], **wildcards):
     return [path for law, pool in pairs if pool in pools for path in expand(pattern, law=law, pool=pool, **others)]
 
 
-# the key of a swelling run (rules swell, pool_stresses, paraview_swelling): one run per (charge law, pool model,
-# model, pool, pressure), each with its own law and pool model only
-SWELL_NAME = "{law}/{pool}/{model}_{case}_{pressure}mmHg"
-
-
 # Delamination (figures 5-7)
 DE = config["delamination"]
 DE_PRESSURE = f"{DE['pressure_mmHg']:g}"

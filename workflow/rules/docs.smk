@@ -39,8 +39,6 @@ rule docs_pages:
         "logs/docs_pages.log",
     benchmark:
         "results/benchmarks/docs_pages.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     params:
         studies=studies_evidence(DOCS_STUDIES),
         configuration=dict(
@@ -64,7 +62,5 @@ rule site:
         "logs/site.log",
     benchmark:
         "results/benchmarks/site.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     shell:
         "mkdocs build --strict --site-dir {output} > {log} 2>&1"

@@ -16,12 +16,7 @@ rule fig3a_mean:
         "logs/fig3a_mean.log",
     benchmark:
         "results/benchmarks/fig3a_mean.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
     params:
         homeostatic_pressure=config["homeostasis"]["target_pressure_mmHg"],
     script:
@@ -46,12 +41,7 @@ rule fig3b:
         "logs/fig3b.log",
     benchmark:
         "results/benchmarks/fig3b.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
     script:
         "../scripts/fig3b.py"
 
@@ -78,12 +68,7 @@ rule fig3:
         "logs/fig3.log",
     benchmark:
         "results/benchmarks/fig3.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
     params:
         homeostatic_pressure=config["homeostasis"]["target_pressure_mmHg"],
     script:
@@ -107,12 +92,7 @@ rule fig1:
         "logs/fig1.log",
     benchmark:
         "results/benchmarks/fig1.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
     params:
         mass_fractions=config["bilayer"]["mass_fractions"],
         layers=Bilayer.of(config["bilayer"]).layer_names(),
@@ -143,12 +123,7 @@ rule fig4:
         "logs/fig4.log",
     benchmark:
         "results/benchmarks/fig4.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
     params:
         cases=config["swelling"]["cases"],
         probe_length=config["swelling"]["probe_length_um"],
@@ -192,8 +167,6 @@ rule claims:
         "logs/claims.log",
     benchmark:
         "results/benchmarks/claims.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     params:
         cases=config["swelling"]["cases"],
         max_concentration=config["swelling"]["max_concentration_mEq_l"],
@@ -227,12 +200,7 @@ rule swelling_convergence_figure:
         "logs/swelling_convergence_figure.log",
     benchmark:
         "results/benchmarks/swelling_convergence_figure.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
     params:
         laws=LAWS,
     script:
@@ -289,12 +257,7 @@ for figure, spec in DE_FIGURE_RULES.items():
             f"logs/{figure}.log",
         benchmark:
             f"results/benchmarks/{figure}.tsv"
-        conda:
-            "../envs/sphgag.yaml"
         threads: 1
-        resources:
-            runtime=5,
-            mem_mb=1000,
         params:
             poolsets=spec["poolsets"],
             sigma=spec["sigma"],

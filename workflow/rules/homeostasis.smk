@@ -22,12 +22,7 @@ rule homeostasis:
         "logs/homeostasis.log",
     benchmark:
         "results/benchmarks/homeostasis.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
     params:
         slice=HOMEOSTATIC_SLICE,
     script:
@@ -44,8 +39,6 @@ rule homeostasis_target:
         "logs/homeostasis_target.log",
     benchmark:
         "results/benchmarks/homeostasis_target.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     params:
         target_pressure=config["homeostasis"]["target_pressure_mmHg"],
     script:
@@ -62,17 +55,12 @@ rule bilayer_pressure_diameter:
         exact="results/calibration/bilayer_{model}_exact_curve.csv",
         transmural="results/calibration/transmural_{model}.csv",
         states=[STATE.format(model="{model}", pressure=p) for p in STATE_PRESSURES],
-        provenance="results/provenance/bilayer_pressure_diameter_{model}.json",
+        provenance=JOBS.bilayer_pressure_diameter.provenance,
     log:
-        "logs/bilayer_pressure_diameter_{model}.log",
+        JOBS.bilayer_pressure_diameter.log,
     benchmark:
-        "results/benchmarks/bilayer_pressure_diameter_{model}.tsv"
-    conda:
-        "../envs/sphgag.yaml"
+        JOBS.bilayer_pressure_diameter.benchmark
     threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
     params:
         slice=PRESSURISED_SLICE,
         homeostatic_slice=HOMEOSTATIC_SLICE,
@@ -92,8 +80,6 @@ rule transmural:
         "logs/transmural.log",
     benchmark:
         "results/benchmarks/transmural.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     script:
         "../scripts/concat_tables.py"
 
@@ -110,8 +96,6 @@ rule bilayer_table:
         "logs/bilayer_table.log",
     benchmark:
         "results/benchmarks/bilayer_table.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     params:
         pressure=config["bilayer_calibration"]["activation_pressure_mmHg"],
     script:

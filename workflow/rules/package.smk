@@ -16,7 +16,5 @@ rule package_digest:
     wildcard_constraints:
         script="|".join(script for script, modules in CODE.items() if modules),
     localrule: True
-    conda:
-        "../envs/sphgag.yaml"
     script:
         "../scripts/package_digest.py"

@@ -18,11 +18,9 @@ PP_SIMULATION = dict(
     cases={c: SW["cases"][c] for c in PP["cases"]},
 )
 PP_TIMING = {k: PP[k] for k in ("time_step", "load_update_steps")}
-PP_RUN = "{model}/{case}_x{factor}"
 # the damage runs: each pool set of paper_procedure.pool_sets at each of its sigma_cr and every step factor
-PP_DAMAGE = "{poolset}/{sigma}kPa_x{factor}"
 PP_DAMAGE_RUNS = [
-    f"{name}/{sigma:g}kPa_x{factor}"
+    dict(poolset=name, sigma=f"{sigma:g}", factor=factor)
     for name, sigmas in PP["pool_sets"].items()
     for sigma in sigmas
     for factor in PP_FACTORS
@@ -39,17 +37,12 @@ rule procedure_start:
         code=code_of("procedure_start"),
     output:
         start="results/paper_procedure/{model}/start.npz",
-        provenance="results/provenance/procedure_start_{model}.json",
+        provenance=JOBS.procedure_start.provenance,
     log:
-        "logs/paper_procedure/{model}/start.log",
+        JOBS.procedure_start.log,
     benchmark:
-        "results/benchmarks/procedure_start_{model}.tsv"
-    conda:
-        "../envs/sphgag.yaml"
+        JOBS.procedure_start.benchmark
     threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
     params:
         wall=PP_SIMULATION["wall"],
     script:
@@ -64,17 +57,12 @@ rule procedure_equilibrium:
         start=rules.procedure_start.output.start,
     output:
         table="results/paper_procedure/{model}/equilibrium.csv",
-        provenance="results/provenance/procedure_equilibrium_{model}.json",
+        provenance=JOBS.procedure_equilibrium.provenance,
     log:
-        "logs/paper_procedure/{model}/equilibrium.log",
+        JOBS.procedure_equilibrium.log,
     benchmark:
-        "results/benchmarks/procedure_equilibrium_{model}.tsv"
-    conda:
-        "../envs/sphgag.yaml"
+        JOBS.procedure_equilibrium.benchmark
     threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
     params:
         **PP_SIMULATION,
         settings=dict(SWELL_SETTINGS, pool_model="particles"),
@@ -90,15 +78,13 @@ rule procedure_explicit:
         code=code_of("procedure_explicit"),
         start=rules.procedure_start.output.start,
     output:
-        states=f"results/paper_procedure/states/{PP_RUN}.npz",
-        table=f"results/paper_procedure/runs/{PP_RUN}.csv",
-        provenance=f"results/provenance/procedure_explicit_{flat(PP_RUN)}.json",
+        states=JOBS.procedure_explicit.output("paper_procedure/states", ".npz"),
+        table=JOBS.procedure_explicit.output("paper_procedure/runs", ".csv"),
+        provenance=JOBS.procedure_explicit.provenance,
     log:
-        f"logs/paper_procedure/{PP_RUN}.log",
+        JOBS.procedure_explicit.log,
     benchmark:
-        f"results/benchmarks/procedure_explicit_{flat(PP_RUN)}.tsv"
-    conda:
-        "../envs/sphgag.yaml"
+        JOBS.procedure_explicit.benchmark
     threads: 1
     resources:
         runtime=15,
@@ -118,15 +104,13 @@ rule procedure_delaminate:
         code=code_of("procedure_delaminate"),
         start=expand(rules.procedure_start.output.start, model="passive"),
     output:
-        states=f"results/paper_procedure/states/{PP_DAMAGE}.npz",
-        table=f"results/paper_procedure/damage/{PP_DAMAGE}.csv",
-        provenance=f"results/provenance/procedure_delaminate_{flat(PP_DAMAGE)}.json",
+        states=JOBS.procedure_delaminate.output("paper_procedure/states", ".npz"),
+        table=JOBS.procedure_delaminate.output("paper_procedure/damage", ".csv"),
+        provenance=JOBS.procedure_delaminate.provenance,
     log:
-        f"logs/paper_procedure/{PP_DAMAGE}.log",
+        JOBS.procedure_delaminate.log,
     benchmark:
-        f"results/benchmarks/procedure_delaminate_{flat(PP_DAMAGE)}.tsv"
-    conda:
-        "../envs/sphgag.yaml"
+        JOBS.procedure_delaminate.benchmark
     threads: 1
     resources:
         runtime=10,
@@ -149,7 +133,7 @@ rule procedure_summary:
         code=code_of("procedure_summary"),
         equilibrium=expand(rules.procedure_equilibrium.output.table, model=PP["models"]),
         runs=expand(rules.procedure_explicit.output.table, model=PP["models"], case=PP["cases"], factor=PP_FACTORS),
-        damage=[f"results/paper_procedure/damage/{run}.csv" for run in PP_DAMAGE_RUNS],
+        damage=[rules.procedure_delaminate.output.table.format(**run) for run in PP_DAMAGE_RUNS],
     output:
         runs="results/paper_procedure/explicit.csv",
         damage="results/paper_procedure/damage.csv",
@@ -163,8 +147,6 @@ rule procedure_summary:
         "logs/paper_procedure/summary.log",
     benchmark:
         "results/benchmarks/procedure_summary.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     params:
         concentration=SW["max_concentration_mEq_l"],
     script:
@@ -192,8 +174,6 @@ rule procedure_figure:
         "logs/paper_procedure/figure.log",
     benchmark:
         "results/benchmarks/procedure_figure.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     params:
         tolerance=config["numerics"]["tolerance"],
         concentration=SW["max_concentration_mEq_l"],

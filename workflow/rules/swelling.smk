@@ -19,8 +19,6 @@ rule swell:
         JOBS.swell.log,
     benchmark:
         JOBS.swell.benchmark
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
     resources:
         runtime=8,
@@ -41,18 +39,13 @@ rule pool_stresses:
         code=code_of("pool_stresses"),
         states=rules.swell.output.states,
     output:
-        table=f"results/swelling/runs/{SWELL_NAME}.csv",
-        provenance=f"results/provenance/pool_stresses_{flat(SWELL_NAME)}.json",
+        table=JOBS.pool_stresses.output("swelling/runs", ".csv"),
+        provenance=JOBS.pool_stresses.provenance,
     log:
-        f"logs/pool_stresses/{SWELL_NAME}.log",
+        JOBS.pool_stresses.log,
     benchmark:
-        f"results/benchmarks/pool_stresses_{flat(SWELL_NAME)}.tsv"
-    conda:
-        "../envs/sphgag.yaml"
+        JOBS.pool_stresses.benchmark
     threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
     params:
         state_slice=lambda wildcards: dict(PRESSURISED_SLICE, model=wildcards.model),
         pool=lambda wildcards: SW["cases"][wildcards.case],
@@ -78,8 +71,6 @@ rule tip_stress:
         "logs/tip_stress.log",
     benchmark:
         "results/benchmarks/tip_stress.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     script:
         "../scripts/concat_tables.py"
 
@@ -87,8 +78,9 @@ rule tip_stress:
 SC = config["swelling_convergence"]
 CONVERGENCE_DX = [f"{dx:g}" for dx in SC["dx_um"]]
 # what the study's simulations depend on besides their charge law (params gag; the measurement adds
-# swelling.probe_length_um)
+# swelling.probe_length_um): first the run's spacing, as its key names it
 SC_SIMULATION = dict(
+    dx=lambda wildcards: wildcards.dx,
     bilayer=config["bilayer"],
     numerics=config["numerics"],
     homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
@@ -98,9 +90,6 @@ SC_SIMULATION = dict(
     calibration={k: config["bilayer_calibration"][k] for k in ("activation_pressure_mmHg", "activation_steps")},
     volume_ratios=SC["volume_ratios"],
 )
-# the key of a run of the study: its pools, under one charge law and pool model, in one wall, at one spacing
-SC_POOLS = "{law}/{pool}"
-SC_NAME = f"{SC_POOLS}/{{model}}_dx{{dx}}"
 
 
 wildcard_constraints:
@@ -113,14 +102,12 @@ rule swelling_convergence_dx:
     input:
         code=code_of("swelling_convergence"),
     output:
-        states=f"results/swelling/convergence/states/{SC_NAME}.npz",
-        provenance=f"results/provenance/swelling_convergence_{flat(SC_NAME)}.json",
+        states=JOBS.swelling_convergence_dx.output("swelling/convergence/states", ".npz"),
+        provenance=JOBS.swelling_convergence_dx.provenance,
     log:
-        f"logs/swelling_convergence/{SC_NAME}.log",
+        JOBS.swelling_convergence_dx.log,
     benchmark:
-        f"results/benchmarks/swelling_convergence_{flat(SC_NAME)}.tsv"
-    conda:
-        "../envs/sphgag.yaml"
+        JOBS.swelling_convergence_dx.benchmark
     threads: 1
     resources:
         runtime=90,
@@ -140,17 +127,14 @@ rule swelling_convergence_stresses:
         code=code_of("swelling_convergence_stresses"),
         states=rules.swelling_convergence_dx.output.states,
     output:
-        table=f"results/swelling/convergence/{SC_NAME}.csv",
-        provenance=f"results/provenance/swelling_convergence_stresses_{flat(SC_NAME)}.json",
+        table=JOBS.swelling_convergence_stresses.output("swelling/convergence", ".csv"),
+        provenance=JOBS.swelling_convergence_stresses.provenance,
     log:
-        f"logs/swelling_convergence/{SC_POOLS}/stresses_{{model}}_dx{{dx}}.log",
+        JOBS.swelling_convergence_stresses.log,
     benchmark:
-        f"results/benchmarks/swelling_convergence_stresses_{flat(SC_NAME)}.tsv"
-    conda:
-        "../envs/sphgag.yaml"
+        JOBS.swelling_convergence_stresses.benchmark
     threads: 1
     resources:
-        runtime=5,
         mem_mb=2000,
     params:
         **SC_SIMULATION,
@@ -183,8 +167,6 @@ rule swelling_convergence:
         "logs/swelling_convergence.log",
     benchmark:
         "results/benchmarks/swelling_convergence.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     script:
         "../scripts/concat_tables.py"
 
@@ -208,12 +190,7 @@ rule swelling_gci:
         "logs/swelling_gci.log",
     benchmark:
         "results/benchmarks/swelling_gci.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
     params:
         concentrations=SC["gci_concentrations_mEq_l"],
         pressure=SC["pressure_mmHg"],

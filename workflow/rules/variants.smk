@@ -3,9 +3,6 @@
 
 from sphgag.engine.hourglass import FORMS as HOURGLASS_FORMS
 
-# the key of a variant run: one hourglass form, the paper's charge law
-VARIANT_NAME = "hourglass_{form}"
-
 
 rule variant:
     """Figure 4's first pool and figure 5's pool with the hourglass control's {form} form (the paper's charge law), from
@@ -13,18 +10,16 @@ rule variant:
     input:
         code=code_of("variant"),
     output:
-        swelling=f"results/variants/{VARIANT_NAME}_swelling.csv",
-        growth=f"results/variants/{VARIANT_NAME}_growth.csv",
-        summary=f"results/variants/{VARIANT_NAME}_summary.csv",
-        provenance=f"results/provenance/variant_{VARIANT_NAME}.json",
+        swelling=JOBS.variant.output("variants", "_swelling.csv"),
+        growth=JOBS.variant.output("variants", "_growth.csv"),
+        summary=JOBS.variant.output("variants", "_summary.csv"),
+        provenance=JOBS.variant.provenance,
     log:
-        f"logs/variants/{VARIANT_NAME}.log",
+        JOBS.variant.log,
     benchmark:
-        f"results/benchmarks/variant_{VARIANT_NAME}.tsv"
+        JOBS.variant.benchmark
     wildcard_constraints:
         form="|".join(HOURGLASS_FORMS),
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
     resources:
         runtime=30,
@@ -67,12 +62,7 @@ rule variants_figure:
         "logs/variants_figure.log",
     benchmark:
         "results/benchmarks/variants_figure.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
     params:
         forms=list(HOURGLASS_FORMS),
         default=config["numerics"]["hourglass"],

@@ -10,17 +10,12 @@ rule paraview_delamination:
         code=code_of("paraview"),
         states=DE_SNAPSHOTS,
     output:
-        series=directory(f"results/paraview/delamination/{DE_ANY_NAME}"),
-        provenance=f"results/provenance/paraview_delamination_{flat(DE_ANY_NAME)}.json",
+        series=directory(JOBS.paraview_delamination.output("paraview/delamination", "")),
+        provenance=JOBS.paraview_delamination.provenance,
     log:
-        f"logs/paraview/delamination/{DE_ANY_NAME}.log",
+        JOBS.paraview_delamination.log,
     benchmark:
-        f"results/benchmarks/paraview_delamination_{flat(DE_ANY_NAME)}.tsv"
-    conda:
-        "../envs/sphgag.yaml"
-    resources:
-        runtime=5,
-        mem_mb=1000,
+        JOBS.paraview_delamination.benchmark
     script:
         "../scripts/paraview.py"
 
@@ -32,17 +27,12 @@ rule paraview_swelling:
         code=code_of("paraview"),
         states=rules.swell.output.states,
     output:
-        series=directory(f"results/paraview/swelling/{SWELL_NAME}"),
-        provenance=f"results/provenance/paraview_swelling_{flat(SWELL_NAME)}.json",
+        series=directory(JOBS.paraview_swelling.output("paraview/swelling", "")),
+        provenance=JOBS.paraview_swelling.provenance,
     log:
-        f"logs/paraview/swelling/{SWELL_NAME}.log",
+        JOBS.paraview_swelling.log,
     benchmark:
-        f"results/benchmarks/paraview_swelling_{flat(SWELL_NAME)}.tsv"
-    conda:
-        "../envs/sphgag.yaml"
-    resources:
-        runtime=5,
-        mem_mb=1000,
+        JOBS.paraview_swelling.benchmark
     script:
         "../scripts/paraview.py"
 
@@ -54,18 +44,16 @@ rule animation:
         series=rules.paraview_delamination.output.series,
     output:
         report(
-            f"figures/animations/{DE_ANY_NAME}.gif",
+            f"figures/animations/{JOBS.animation.key}.gif",
             caption="../report/animation.rst",
             category="5 Delamination",
             subcategory="Animations",
             labels={"charge law": "{law}", "run": "{run}"},
         ),
     log:
-        f"logs/animation/{DE_ANY_NAME}.log",
+        JOBS.animation.log,
     benchmark:
-        f"results/benchmarks/animation_{flat(DE_ANY_NAME)}.tsv"
-    conda:
-        "../envs/sphgag.yaml"
+        JOBS.animation.benchmark
     script:
         "../scripts/animation.py"
 

@@ -3,15 +3,11 @@
 
 from pathlib import Path
 
-from sphgag import threads
-from sphgag.records import runlog
+from sphgag import jobs
 from sphgag.views import animation, paraview
 
-sm = snakemake  # noqa: F821
-threads.use(sm.threads)
-series = Path(sm.input.series)
-run = f"animation_{sm.wildcards.law}_{series.name}"
-with runlog.run(run, sm.log[0]) as log:
+with jobs.run(snakemake) as job:  # noqa: F821
+    series = Path(job.input.series)
     frames = paraview.read_series(series / f"{series.name}.pvd")
-    animation.write(sm.output[0], frames, f"{sm.wildcards.law} charge, {series.name}")
-    log.info("[%s] %d frames -> %s", run, len(frames), sm.output[0])
+    animation.write(job.output[0], frames, f"{job.w.law} charge, {job.w.run}")
+    job.log.info("[%s] %d frames -> %s", job.name, len(frames), job.output[0])

@@ -5,16 +5,13 @@ claims on the pool sets of their figures (``params.figures``, i.e. ``delaminatio
 
 import pandas as pd
 
-from sphgag import threads
-from sphgag.records import runlog
+from sphgag import jobs
 from sphgag.studies import claims, delamination
 
-sm = snakemake  # noqa: F821
-threads.use(sm.threads)
-with runlog.run("claims", sm.log[0]) as log:
-    p = sm.params
+with jobs.run(snakemake, name="claims") as job:  # noqa: F821
+    p = job.params
     t = {
-        k: pd.read_csv(sm.input[k])
+        k: pd.read_csv(job.input[k])
         for k in ("mean", "bilayer", "activation", "layers", "transmural", "tips", "growth", "delamination")
     }
     # the paper's claims are about its damage law (eq. 2.28 as printed)
@@ -32,10 +29,10 @@ with runlog.run("claims", sm.log[0]) as log:
     )
     found = claims.evaluate(evidence, p.laws)
     df = claims.table(found)
-    df.to_csv(sm.output.table, index=False)
-    with open(sm.output.markdown, "w") as fh:
+    df.to_csv(job.output.table, index=False)
+    with open(job.output.markdown, "w") as fh:
         fh.write(claims.markdown(df))
     for c in found:
-        log.info(
+        job.log.info(
             "[claims] %s (%s) holds: %s -- %s (ours: %s)", c.claim_id, c.charge_law, c.holds, c.statement, c.our_value
         )

@@ -2,13 +2,10 @@
 
 import pandas as pd
 
-from sphgag import threads
-from sphgag.records import runlog
+from sphgag import jobs
 
-sm = snakemake  # noqa: F821
-threads.use(sm.threads)
-with runlog.run("concat", sm.log[0]) as log:
-    tables = [pd.read_csv(path) for path in sm.input]
+with jobs.run(snakemake, name="concat") as job:  # noqa: F821
+    tables = [pd.read_csv(path) for path in job.input]
     out = pd.concat(tables, ignore_index=True)
-    out.to_csv(sm.output[0], index=False)
-    log.info("%d rows from %d tables -> %s", len(out), len(tables), sm.output[0])
+    out.to_csv(job.output[0], index=False)
+    job.log.info("%d rows from %d tables -> %s", len(out), len(tables), job.output[0])

@@ -2,13 +2,10 @@
 
 import pandas as pd
 
-from sphgag import threads
-from sphgag.records import runlog
+from sphgag import jobs
 from sphgag.views import layout, style
 
-sm = snakemake  # noqa: F821
-threads.use(sm.threads)
-with runlog.run("fig1", sm.log[0]):
-    particles = pd.read_csv(sm.input.particles)
-    fig = layout.fig1(particles, sm.params.mass_fractions, sm.params.support_factor, sm.params.dx, sm.params.layers)
-    style.save(fig, [sm.output.pdf, sm.output.png], "Figure 1 (particle layout), sphgag")
+with jobs.run(snakemake, name="fig1") as job:  # noqa: F821
+    p = job.params
+    fig = layout.fig1(pd.read_csv(job.input.particles), p.mass_fractions, p.support_factor, p.dx, p.layers)
+    style.save(fig, [job.output.pdf, job.output.png], "Figure 1 (particle layout), sphgag")

@@ -2,15 +2,12 @@
 
 import pandas as pd
 
-from sphgag import threads
-from sphgag.records import runlog
+from sphgag import jobs
 from sphgag.views import style, wall
 
-sm = snakemake  # noqa: F821
-threads.use(sm.threads)
-with runlog.run("fig3", sm.log[0]):
+with jobs.run(snakemake, name="fig3") as job:  # noqa: F821
     tables = {
-        k: pd.read_csv(sm.input[k])
+        k: pd.read_csv(job.input[k])
         for k in ("mean_states", "mean_exact", "bilayer", "passive_exact", "active_exact", "profiles")
     }
     style.finite_or_raise(tables["bilayer"], ["outer_diameter_um", "pressure_mmHg", "mean_circ_stretch"], "fig3")
@@ -21,6 +18,6 @@ with runlog.run("fig3", sm.log[0]):
         tables["bilayer"],
         {"passive": tables["passive_exact"], "active": tables["active_exact"]},
         tables["profiles"],
-        sm.params.homeostatic_pressure,
+        job.params.homeostatic_pressure,
     )
-    style.save(fig, [sm.output.pdf, sm.output.png], "Figure 3 (mean, passive and active models), sphgag")
+    style.save(fig, [job.output.pdf, job.output.png], "Figure 3 (mean, passive and active models), sphgag")

@@ -2,13 +2,10 @@
 
 import pandas as pd
 
-from sphgag import threads
-from sphgag.records import runlog
+from sphgag import jobs
 from sphgag.views import style, wall
 
-sm = snakemake  # noqa: F821
-threads.use(sm.threads)
-with runlog.run("fig3b", sm.log[0]):
-    profiles = pd.read_csv(sm.input.profiles)
+with jobs.run(snakemake, name="fig3b") as job:  # noqa: F821
+    profiles = pd.read_csv(job.input.profiles)
     style.finite_or_raise(profiles, ["radius_um", "radial_stress_kPa", "circ_stress_kPa"], "fig3b")
-    style.save(wall.fig3b(profiles), [sm.output.pdf, sm.output.png], "Figure 3b (mean-behaviour model), sphgag")
+    style.save(wall.fig3b(profiles), [job.output.pdf, job.output.png], "Figure 3b (mean-behaviour model), sphgag")

@@ -3,21 +3,18 @@ the resolution study's bands where target `resolution` has run."""
 
 import pandas as pd
 
-from sphgag import threads
-from sphgag.records import runlog
+from sphgag import jobs
 from sphgag.views import style, swelling
 
-sm = snakemake  # noqa: F821
-threads.use(sm.threads)
-with runlog.run("fig4", sm.log[0]):
-    tips = pd.read_csv(sm.input.tips)
+with jobs.run(snakemake, name="fig4") as job:  # noqa: F821
+    tips = pd.read_csv(job.input.tips)
     style.finite_or_raise(tips, ["tip_radial_stress_kPa", "top_circ_stress_kPa", "concentration_mEq_l"], "fig4")
-    p = sm.params
+    p = job.params
     # the resolution study, where this run or an earlier one made it (else the figure says it has not run)
     study = {k: pd.read_csv(p[k]["path"]) if p[k]["state"] != "not run" else None for k in ("band", "resolution")}
     fig = swelling.fig4(
         tips,
-        pd.read_csv(sm.input.particles),
+        pd.read_csv(job.input.particles),
         p.cases,
         p.probe_length,
         p.laws,
@@ -26,4 +23,4 @@ with runlog.run("fig4", sm.log[0]):
         pool_layers=p.pool_layers,
         **study,
     )
-    style.save(fig, [sm.output.pdf, sm.output.png], "Figure 4 (GAG pool swelling), sphgag")
+    style.save(fig, [job.output.pdf, job.output.png], "Figure 4 (GAG pool swelling), sphgag")

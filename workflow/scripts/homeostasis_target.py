@@ -2,23 +2,17 @@
 
 import pandas as pd
 
-from sphgag import threads
-from sphgag.records import runlog
+from sphgag import jobs
 
-sm = snakemake  # noqa: F821
-threads.use(sm.threads)
-with runlog.run("homeostasis_target", sm.log[0]) as log:
-    summary = pd.read_csv(sm.input.summary)
-    target = float(sm.params.target_pressure)
+with jobs.run(snakemake, name="homeostasis_target") as job:  # noqa: F821
+    summary = pd.read_csv(job.input.summary)
+    target = float(job.params.target_pressure)
     out = summary[["model", "carried_pressure_mmHg", "semi_analytical_pressure_mmHg"]].assign(
         target_pressure_mmHg=target, relative_to_target=summary.carried_pressure_mmHg / target - 1.0
     )
-    out.to_csv(sm.output[0], index=False)
+    out.to_csv(job.output[0], index=False)
     for r in out.itertuples():
-        log.info(
+        job.log.info(
             "[homeostasis_target] %s: carried %.2f mmHg, target %.0f (%+.1f %%)",
-            r.model,
-            r.carried_pressure_mmHg,
-            target,
-            100 * r.relative_to_target,
+            *(r.model, r.carried_pressure_mmHg, target, 100 * r.relative_to_target),
         )

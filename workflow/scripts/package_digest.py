@@ -7,9 +7,8 @@ newer than the outputs with the one it recorded when the job ran, and only a cha
 import hashlib
 from pathlib import Path
 
-from sphgag import threads
+from sphgag import jobs
 
-sm = snakemake  # noqa: F821
-threads.use(sm.threads)
-lines = [f"{hashlib.sha256(Path(path).read_bytes()).hexdigest()}  {path}" for path in sm.input]
-Path(sm.output[0]).write_text("\n".join(lines) + "\n")
+with jobs.run(snakemake, name="package_digest") as job:  # noqa: F821
+    lines = [f"{hashlib.sha256(Path(path).read_bytes()).hexdigest()}  {path}" for path in job.input]
+    Path(job.output[0]).write_text("\n".join(lines) + "\n")

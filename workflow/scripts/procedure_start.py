@@ -1,20 +1,12 @@
 """Rule procedure_start: the wall at the procedure's spacing and pressure (equilibrium), saved for its runs."""
 
-import time
-
-from sphgag import threads
-from sphgag.records import provenance, runlog, state
+from sphgag import jobs
+from sphgag.records import state
 from sphgag.studies import convergence
 
-sm = snakemake  # noqa: F821
-threads.use(sm.threads)
-started = time.time()
-w, model = sm.params.wall, sm.wildcards.model
-run = f"procedure_start_{model}"
-with runlog.run(run, sm.log[0]) as log:
-    start = convergence.pressurised_wall(**w, active=model == "active", name=run)
-    state.save(sm.output.start, start.x, start.load, w, dict(residual=start.convergence.residual))
-    log.info("[%s] residual %.2e", run, start.convergence.residual)
-    provenance.write_record(sm.output.provenance, rule="procedure_start", params=dict(wall=w),
-                            outputs=list(sm.output), summary=dict(residual=start.convergence.residual),
-                            started=started)  # fmt: skip
+with jobs.run(snakemake) as job:  # noqa: F821
+    wall = job.params.wall
+    start = convergence.pressurised_wall(**wall, active=job.w.model == "active", name=job.name)
+    state.save(job.output.start, start.x, start.load, wall, dict(residual=start.convergence.residual))
+    job.log.info("[%s] residual %.2e", job.name, start.convergence.residual)
+    job.record(dict(wall=wall), dict(residual=start.convergence.residual))

@@ -2,18 +2,15 @@
 
 import pandas as pd
 
-from sphgag import threads
-from sphgag.records import runlog
+from sphgag import jobs
 from sphgag.views import style, swelling
 
-sm = snakemake  # noqa: F821
-threads.use(sm.threads)
-with runlog.run("swelling_convergence_figure", sm.log[0]):
-    table = pd.read_csv(sm.input.table)
+with jobs.run(snakemake, name="swelling_convergence_figure") as job:  # noqa: F821
+    table = pd.read_csv(job.input.table)
     table = table[table.stage == "converted"]  # the path (the states at a volume ratio are in results/swelling/gci.csv)
     style.finite_or_raise(table, ["tip_radial_stress_kPa", "pool_volume_change"], "swelling_convergence")
     style.save(
-        swelling.swelling_convergence(table, sm.params.laws),
-        [sm.output.pdf, sm.output.png],
+        swelling.swelling_convergence(table, job.params.laws),
+        [job.output.pdf, job.output.png],
         "Resolution study of the GAG-pool stresses, sphgag",
     )

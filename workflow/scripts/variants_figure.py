@@ -2,18 +2,15 @@
 
 import pandas as pd
 
-from sphgag import threads
-from sphgag.records import runlog
+from sphgag import jobs
 from sphgag.views import style, variants
 
-sm = snakemake  # noqa: F821
-threads.use(sm.threads)
-with runlog.run("variants_figure", sm.log[0]):
+with jobs.run(snakemake, name="variants_figure") as job:  # noqa: F821
     tables = {
-        k: pd.concat([pd.read_csv(p) for p in sm.input[k]], ignore_index=True)
+        k: pd.concat([pd.read_csv(p) for p in job.input[k]], ignore_index=True)
         for k in ("swelling", "growth", "summary")
     }
     fig = variants.hourglass_comparison(
-        tables["swelling"], tables["growth"], tables["summary"], sm.params.forms, sm.params.default
+        tables["swelling"], tables["growth"], tables["summary"], job.params.forms, job.params.default
     )
-    style.save(fig, [sm.output.pdf, sm.output.png], "The hourglass control's forms side by side, sphgag")
+    style.save(fig, [job.output.pdf, job.output.png], "The hourglass control's forms side by side, sphgag")

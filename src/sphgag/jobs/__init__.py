@@ -45,22 +45,32 @@ class Kind:
     rule: str
     key: str
     prefix: str | None = None
+    #: the name of its benchmark and provenance files and of its log folder (the rule's unless given: a rule that
+    #: shares its files' names with another, e.g. one stage of a study)
+    stem: str | None = None
+    #: the pattern of its log, where it is not ``logs/<stem>/<key>.log`` (the logs of one study in one folder)
+    log_path: str | None = None
 
     def output(self, folder: str, suffix: str) -> str:
         """The path pattern of one output: ``results/<folder>/<key><suffix>`` (results nest by the key's parts)."""
         return f"results/{folder}/{self.key}{suffix}"
 
     @property
+    def files(self) -> str:
+        """The stem of its files' names: ``stem`` or the rule."""
+        return self.stem or self.rule
+
+    @property
     def log(self) -> str:
-        return f"logs/{self.rule}/{self.key}.log"
+        return self.log_path or f"logs/{self.files}/{self.key}.log"
 
     @property
     def benchmark(self) -> str:
-        return f"results/benchmarks/{self.rule}_{flat(self.key)}.tsv"
+        return f"results/benchmarks/{self.files}_{flat(self.key)}.tsv"
 
     @property
     def provenance(self) -> str:
-        return f"results/provenance/{self.rule}_{flat(self.key)}.json"
+        return f"results/provenance/{self.files}_{flat(self.key)}.json"
 
     def name(self, wildcards: Mapping) -> str:
         """The name of the run with ``wildcards``: the prefix and the flat key ("swell_prescribed_particles_...")."""
@@ -122,13 +132,14 @@ class Job:
         expected = self.sm.params.state_slice if expected is None else expected
         return state.load(path, expected_params=expected)
 
-    def record(self, params: dict, summary: dict | None = None, rule: str | None = None) -> dict:
-        """The job's provenance record (the output ``provenance``): its rule, params, outputs and ``summary``."""
+    def record(self, params: dict, summary: dict | None = None, rule: str | None = None, outputs=None) -> dict:
+        """The job's provenance record (the output ``provenance``): its rule, params, outputs (its rule's unless
+        given) and ``summary``."""
         return provenance.write_record(
             self.sm.output.provenance,
             rule=rule or self.sm.rule,
             params=params,
-            outputs=list(self.sm.output),
+            outputs=list(self.sm.output) if outputs is None else outputs,
             summary=summary,
             started=self.started,
         )

@@ -13,10 +13,14 @@ pool's volume change, with the residual of each converged state.
 
 from __future__ import annotations
 
+import logging
+
 import pandas as pd
 
 from ..engine.numerics import Numerics
 from . import artery, gci, protocols, volume_states
+
+log = logging.getLogger("sphgag")
 
 COLUMNS = [
     "dx_um",
@@ -57,6 +61,22 @@ def swell_cases(
         model = case_model(dx, bilayer, numerics, gag, entry, f"{name}_{case}")
         path = protocols.swell_pool(model, start, numerics, swelling)
         out[case] = path + list(volume_states.at_volume_ratios(model, path, volume_ratios, numerics).values())
+    return out
+
+
+def series(states: dict[str, list[protocols.PoolState]], run: str) -> list:
+    """The states of :func:`swell_cases` as one saved series (:func:`sphgag.records.state.save_series`: each state's
+    info with its case), each case's path and its concentrations at the volume ratios logged."""
+    out = [(s.x, s.load, dict(s.info(), case=case), None) for case, ss in states.items() for s in ss]
+    largest = max(s.residual for ss in states.values() for s in ss)
+    log.info("[%s] %d converged states of %d pools, largest residual %.2e", run, len(out), len(states), largest)
+    for case, ss in states.items():
+        path = [s for s in ss if s.stage == "converted"]
+        held = ", ".join(f"{s.concentration:.4g}" for s in ss if s.stage == "at volume") or "none"
+        log.info(
+            "[%s] case %s: path up to %g mEq/l (end: %s); concentrations at the volume ratios: %s",
+            run, case, path[-1].concentration, ss[-1].path_end, held,
+        )  # fmt: skip
     return out
 
 
@@ -108,6 +128,26 @@ def measure(
         tables.append(kept.assign(dx_um=float(dx), particles=model.n, model=wall, case=case))
     out = pd.concat(tables, ignore_index=True)
     return out[COLUMNS + [c for c in out.columns if c not in COLUMNS]]
+
+
+def measure_saved(
+    saved, dx: float, bilayer: dict, numerics: dict, gag: dict, cases: dict, probe_length: float, wall: str, name: str
+) -> pd.DataFrame:
+    """The rows of one run of the study (rule ``swelling_convergence_stresses``) from its saved states ``saved`` (the
+    series of :func:`series`): :func:`measure`, first the run's charge law and pool model; each case's last state
+    logged."""
+    states = {case: [protocols.PoolState.from_saved(s) for s in saved if s.info["case"] == case] for case in cases}
+    table = measure(dx, bilayer, numerics, gag, cases, states, probe_length, wall, name=name)
+    table.insert(0, "charge_law", gag["charge_law"])
+    table.insert(1, "pool_model", table.pop("pool_model"))
+    for case, g in table.groupby("case", sort=False):
+        last = g.iloc[-1]
+        log.info(
+            "[%s] case %s, %d particles: at %g mEq/l tip %.1f kPa (peak %.1f), top %.1f kPa, pool volume change %+.3f",
+            name, case, int(last.particles), last.concentration_mEq_l, last.tip_radial_stress_kPa,
+            last.tip_peak_radial_stress_kPa, last.top_circ_stress_kPa, last.pool_volume_change,
+        )  # fmt: skip
+    return table
 
 
 GCI_KEYS = ["charge_law", "pool_model", "model", "case", "pressure_mmHg", "quantity", "at"]

@@ -855,3 +855,25 @@ def pool_table(model: Model, states: list[PoolState], pool, probe_length: float,
         row.update(limit_concentration_mEq_l=st.limit_concentration)  # NaN, not None, without a limit point
         rows.append(row)
     return pd.DataFrame(rows)
+
+
+def run_table(
+    model: Model, saved, pool, probe_length: float, gag: dict, wall: str, case: str, run: str
+) -> pd.DataFrame:
+    """The rows of one swelling run of figure 4 (rule ``pool_stresses``) from its saved states ``saved``:
+    :func:`pool_table`, first its charge law, pool model, wall model ``wall`` and pool ``case``; its tip radial and
+    top hoop stresses intact, converted and at the end logged."""
+    table = pool_table(model, [PoolState.from_saved(s) for s in saved], pool, probe_length, gag)
+    table.insert(0, "charge_law", gag["charge_law"])
+    table.insert(1, "pool_model", table.pop("pool_model"))
+    table.insert(2, "model", wall)
+    table.insert(3, "case", case)
+    first, last = table[table.stage == "converted"].iloc[0], table.iloc[-1]
+    log.info(
+        "[%s] %d pool particles; tip radial stress %.1f kPa intact, %.1f converted, %.1f at %g mEq/l; "
+        "top hoop stress %.1f -> %.1f -> %.1f kPa",
+        run, int(last.pool_particles), table.tip_radial_stress_kPa.iloc[0], first.tip_radial_stress_kPa,
+        last.tip_radial_stress_kPa, last.concentration_mEq_l, table.top_circ_stress_kPa.iloc[0],
+        first.top_circ_stress_kPa, last.top_circ_stress_kPa,
+    )  # fmt: skip
+    return table

@@ -9,7 +9,16 @@ import numpy as np
 import pandas as pd
 import seaborn as sns
 
-from .style import GAG_CONCENTRATION, LAYER_COLOURS, _style, distinct_colours, law_blocks, palette, style_legend
+from .style import (
+    GAG_CONCENTRATION,
+    LAYER_COLOURS,
+    _style,
+    distinct_colours,
+    finite_or_raise,
+    law_blocks,
+    palette,
+    style_legend,
+)
 
 SEEDED, CONVERTED = 1, 2  # history origin codes (sphgag.engine.history): a seeded GAG pool, tissue converted by damage
 MATERIAL_COLOURS = {SEEDED: LAYER_COLOURS["GAG"], CONVERTED: "#2166ac"}
@@ -477,3 +486,38 @@ def fig7(
     material_key(fig, layers)
     fit_particle_sizes(fig)
     return fig
+
+
+# figures 5-7 by the name of the rule that draws them: the columns of their pool sets' growth that must be finite, and
+# their title
+FIGURES = {
+    "fig5": (
+        ["concentration_mEq_l", "converted_particles", "delaminated_length_um"],
+        "Figure 5 (delamination by a single GAG pool)",
+    ),
+    "fig6": (
+        ["concentration_mEq_l", "converted_interior", "converted_exterior"],
+        "Figure 6 (coalescence of two GAG pools at one radius)",
+    ),
+    "fig7": (
+        ["concentration_mEq_l", "converted_interior", "converted_exterior"],
+        "Figure 7 (coalescence of two radially offset GAG pools)",
+    ),
+}
+
+
+def figure(
+    name: str, growth: pd.DataFrame, summary: pd.DataFrame, snapshot_paths, poolsets, sigma, criteria, laws, layers
+):
+    """Figure ``name`` (fig5, fig6 or fig7, :data:`FIGURES`) of the runs of its pool sets ``poolsets`` at ``sigma``
+    [kPa]: ``growth`` and ``summary`` are the runs' tables (eq. 2.28 as printed), ``snapshot_paths`` their snapshot
+    files by charge law, then pool set, then criterion."""
+    finite_or_raise(growth[growth.case.isin(poolsets)], FIGURES[name][0], name)
+    keys = [(law, case, c) for law in laws for case in poolsets for c in criteria]
+    snapshots = {key: read_snapshots(path) for key, path in zip(keys, snapshot_paths)}
+    if name == "fig6":
+        return fig6(growth, summary, snapshots, poolsets, criteria, laws, layers)
+    (poolset,) = poolsets
+    by_criterion = {(law, c): snapshots[law, poolset, c] for law in laws for c in criteria}
+    draw = fig5 if name == "fig5" else fig7
+    return draw(growth, summary, by_criterion, poolset, sigma, criteria, laws, layers)
