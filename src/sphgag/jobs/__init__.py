@@ -27,7 +27,16 @@ from ..records import provenance, runlog, state
 #: the types of the wildcards that carry numbers (every other wildcard is a name, kept as text); a key's text is the
 #: number's ``:g`` form, so that the text in a file name and the value a job reads are one quantity
 NUMBERS: Mapping[str, type] = MappingProxyType(
-    {"sigma": float, "dx": float, "dedx": float, "width": float, "factor": int, "batch": int}
+    {
+        "sigma": float,
+        "dx": float,
+        "dedx": float,
+        "width": float,
+        "factor": int,
+        "batch": int,
+        "ratio": float,
+        "length": float,
+    }
 )
 
 
@@ -39,32 +48,43 @@ def flat(key: str) -> str:
 @dataclass(frozen=True)
 class Kind:
     """One kind of job: the rule ``rule`` and the run key ``key`` (a pattern of wildcards, "{law}/{pool}/...") that
-    names its files and its runs. ``prefix`` names its runs (the rule's name unless given: two rules that run one
-    computation share it)."""
+    names its files and its runs. ``prefix`` names its runs and its log, benchmark and provenance files (the rule's
+    name unless given: two rules that run one computation share it); ``logs`` is the folder of its logs (its prefix
+    unless given)."""
 
     rule: str
     key: str
     prefix: str | None = None
+    logs: str | None = None
+
+    @property
+    def stem(self) -> str:
+        """What names its runs and files: its prefix, or its rule's name."""
+        return self.prefix or self.rule
 
     def output(self, folder: str, suffix: str) -> str:
         """The path pattern of one output: ``results/<folder>/<key><suffix>`` (results nest by the key's parts)."""
         return f"results/{folder}/{self.key}{suffix}"
 
+    def flat_output(self, folder: str, name: str, suffix: str) -> str:
+        """The path pattern of one output named by the flat key: ``results/<folder>/<name>_<flat key><suffix>``."""
+        return f"results/{folder}/{name}_{flat(self.key)}{suffix}"
+
     @property
     def log(self) -> str:
-        return f"logs/{self.rule}/{self.key}.log"
+        return f"logs/{self.logs or self.stem}/{self.key}.log"
 
     @property
     def benchmark(self) -> str:
-        return f"results/benchmarks/{self.rule}_{flat(self.key)}.tsv"
+        return f"results/benchmarks/{self.stem}_{flat(self.key)}.tsv"
 
     @property
     def provenance(self) -> str:
-        return f"results/provenance/{self.rule}_{flat(self.key)}.json"
+        return f"results/provenance/{self.stem}_{flat(self.key)}.json"
 
     def name(self, wildcards: Mapping) -> str:
         """The name of the run with ``wildcards``: the prefix and the flat key ("swell_prescribed_particles_...")."""
-        return f"{self.prefix or self.rule}_{flat(self.key.format(**wildcards))}"
+        return f"{self.stem}_{flat(self.key.format(**wildcards))}"
 
 
 #: the kinds of job, by rule name (:func:`register`)
