@@ -48,43 +48,46 @@ def flat(key: str) -> str:
 @dataclass(frozen=True)
 class Kind:
     """One kind of job: the rule ``rule`` and the run key ``key`` (a pattern of wildcards, "{law}/{pool}/...") that
-    names its files and its runs. ``prefix`` names its runs and its log, benchmark and provenance files (the rule's
-    name unless given: two rules that run one computation share it); ``logs`` is the folder of its logs (its prefix
-    unless given)."""
+    names its files and its runs. ``prefix`` names its runs (the rule's name unless given: two rules that run one
+    computation share it)."""
 
     rule: str
     key: str
     prefix: str | None = None
-    logs: str | None = None
-
-    @property
-    def stem(self) -> str:
-        """What names its runs and files: its prefix, or its rule's name."""
-        return self.prefix or self.rule
+    #: the name of its benchmark and provenance files and of its log folder (the rule's unless given: a rule that
+    #: shares its files' names with another, e.g. one stage of a study)
+    stem: str | None = None
+    #: the pattern of its log, where it is not ``logs/<stem>/<key>.log`` (the logs of one study in one folder)
+    log_path: str | None = None
 
     def output(self, folder: str, suffix: str) -> str:
         """The path pattern of one output: ``results/<folder>/<key><suffix>`` (results nest by the key's parts)."""
         return f"results/{folder}/{self.key}{suffix}"
 
-    def flat_output(self, folder: str, name: str, suffix: str) -> str:
-        """The path pattern of one output named by the flat key: ``results/<folder>/<name>_<flat key><suffix>``."""
-        return f"results/{folder}/{name}_{flat(self.key)}{suffix}"
+    @property
+    def files(self) -> str:
+        """The stem of its files' names: ``stem`` or the rule."""
+        return self.stem or self.rule
 
     @property
     def log(self) -> str:
-        return f"logs/{self.logs or self.stem}/{self.key}.log"
+        return self.log_path or f"logs/{self.files}/{self.key}.log"
 
     @property
     def benchmark(self) -> str:
-        return f"results/benchmarks/{self.stem}_{flat(self.key)}.tsv"
+        return f"results/benchmarks/{self.files}_{flat(self.key)}.tsv"
 
     @property
     def provenance(self) -> str:
-        return f"results/provenance/{self.stem}_{flat(self.key)}.json"
+        return f"results/provenance/{self.files}_{flat(self.key)}.json"
 
     def name(self, wildcards: Mapping) -> str:
         """The name of the run with ``wildcards``: the prefix and the flat key ("swell_prescribed_particles_...")."""
-        return f"{self.stem}_{flat(self.key.format(**wildcards))}"
+        return f"{self.prefix or self.rule}_{flat(self.key.format(**wildcards))}"
+
+    def flat_output(self, folder: str, name: str, suffix: str) -> str:
+        """The path pattern of one output named by the flat key: ``results/<folder>/<name>_<flat key><suffix>``."""
+        return f"results/{folder}/{name}_{flat(self.key)}{suffix}"
 
 
 #: the kinds of job, by rule name (:func:`register`)
@@ -142,13 +145,14 @@ class Job:
         expected = self.sm.params.state_slice if expected is None else expected
         return state.load(path, expected_params=expected)
 
-    def record(self, params: dict, summary: dict | None = None, rule: str | None = None) -> dict:
-        """The job's provenance record (the output ``provenance``): its rule, params, outputs and ``summary``."""
+    def record(self, params: dict, summary: dict | None = None, rule: str | None = None, outputs=None) -> dict:
+        """The job's provenance record (the output ``provenance``): its rule, params, outputs (its rule's unless
+        given) and ``summary``."""
         return provenance.write_record(
             self.sm.output.provenance,
             rule=rule or self.sm.rule,
             params=params,
-            outputs=list(self.sm.output),
+            outputs=list(self.sm.output) if outputs is None else outputs,
             summary=summary,
             started=self.started,
         )
