@@ -50,8 +50,6 @@ rule delaminate_fracture_energy:
     wildcard_constraints:
         gc="|".join(re.escape(g) for g in DE_TOUGHNESS),
     threads: 1
-    resources:
-        mem_mb=1000,
     params:
         state_slice=dict(PRESSURISED_SLICE, model="passive"),
         pools=lambda wildcards: DE["pool_sets"][wildcards.poolset],

@@ -200,7 +200,6 @@ rule delamination_map_point:
     threads: 1
     resources:
         runtime=15,
-        mem_mb=1000,
     params:
         state_slice=dict(PRESSURISED_SLICE, model="passive"),
         pool=lambda wildcards: dict(DE["pool_sets"][FIG5_SET][0], angular_extent_deg=float(wildcards.width)),

@@ -88,8 +88,6 @@ rule verification_pool_figure:
     benchmark:
         "results/benchmarks/verification_pool_figure.tsv"
     threads: 1
-    resources:
-        mem_mb=1000,
     script:
         "../scripts/verification_pool_figure.py"
 
@@ -166,8 +164,6 @@ rule verification_crack_figure:
     benchmark:
         "results/benchmarks/verification_crack_figure.tsv"
     threads: 1
-    resources:
-        mem_mb=1000,
     script:
         "../scripts/verification_crack_figure.py"
 
@@ -239,8 +235,6 @@ rule verification_circular_pool_figure:
     benchmark:
         "results/benchmarks/verification_circular_pool_figure.tsv"
     threads: 1
-    resources:
-        mem_mb=1000,
     script:
         "../scripts/verification_circular_pool_figure.py"
 
@@ -294,8 +288,6 @@ rule verify_annulus:
     benchmark:
         "results/benchmarks/verify_annulus.tsv"
     threads: 1
-    resources:
-        mem_mb=1000,
     params:
         radius=VAN["radius_um"],
         matrix=POOL_MATRIX,
@@ -325,7 +317,5 @@ rule verification_annulus_figure:
     benchmark:
         "results/benchmarks/verification_annulus_figure.tsv"
     threads: 1
-    resources:
-        mem_mb=1000,
     script:
         "../scripts/verification_annulus_figure.py"
