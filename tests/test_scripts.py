@@ -13,6 +13,8 @@ from sphgag import jobs
 from sphgag.engine.loading import Load
 from sphgag.jobs import kinds
 from sphgag.records import state
+from sphgag.studies import delamination
+from sphgag.studies.delamination import Settings
 
 from .conftest import ROOT
 
@@ -179,3 +181,28 @@ def test_a_job_on_a_fake_snakemake_object_logs_loads_its_state_and_records_its_p
     sm.rule = "sensitivity_figure"
     with jobs.run(sm, name="sensitivity_figure") as job:
         assert job.name == "sensitivity_figure"
+
+
+def test_a_delamination_job_has_one_shape_of_settings(ci_config, tmp_path):
+    """Its params hold what every run reads; sigma_cr and the criterion are its typed wildcards, or the section's own
+    float for a study at the configured sigma_cr; either way one Settings."""
+    de = ci_config["delamination"]
+    params = Settings.params(de)
+    assert list(params) == list(Settings.config_keys())
+    assert not {"critical_stress_kPa", "criterion", "damage_law", "fracture_energy_J_m2"} & set(params)
+    study = Settings.params(de, "critical_stress_kPa", "pressure_mmHg", criteria=["particle"])
+    assert list(study)[-3:] == ["criteria", "critical_stress_kPa", "pressure_mmHg"]
+    sigma = f"{de['critical_stress_kPa']:g}"  # the text of the run's file names
+    w = jobs.typed(dict(sigma=sigma, criterion="particle"))
+    assert Settings.from_config(params, w.sigma, w.criterion) == Settings.from_config(
+        study, study["critical_stress_kPa"], "particle"
+    )
+    # G_c: none, a number, or the energy the paper's law dissipated in the matched run
+    assert delamination.fracture_energy(None) == (None, "")
+    assert delamination.fracture_energy("51") == (51.0, "")
+    summary = tmp_path / "matched.csv"
+    summary.write_text("dissipated_energy_J_m2\n12.5\n")
+    assert delamination.fracture_energy(delamination.MATCHED, str(summary)) == (12.5, "")
+    summary.write_text("dissipated_energy_J_m2\nnan\n")
+    gc, unmatched = delamination.fracture_energy(delamination.MATCHED, str(summary))
+    assert np.isnan(gc) and "no G_c to match" in unmatched
