@@ -9,6 +9,7 @@ from sphgag.jobs import kinds as JOBS
 from sphgag.physics.donnan import PAPER_LAW
 from sphgag.physics.materials import law_gag
 from sphgag.studies.artery import Bilayer
+from sphgag.studies.delamination.settings import MATCHED
 from sphgag.studies.delamination.settings import Settings as DelaminationSettings
 from sphgag.studies.onset import CRITERIA
 from sphgag.studies.protocols import POOL_MODELS
@@ -119,11 +120,11 @@ DE_RUNS = [
 ]
 # what every run reads of the section (its sigma_cr and criterion are its own wildcards), so that adding or removing a
 # sigma_cr or a criterion reruns no other run; the candidate rule (delamination.candidates) is one of these run-level
-# settings, not a wildcard: changing it reruns every delamination run
-DE_SETTINGS = {k: DE[k] for k in DelaminationSettings.config_keys()}
+# settings, not a wildcard: changing it reruns every delamination run. A study that runs at the section's own sigma_cr
+# (and lumen pressure) reads them after its other settings (DE_AT_CONFIG).
+DE_SETTINGS = DelaminationSettings.params(DE)
+DE_AT_CONFIG = ("critical_stress_kPa", "pressure_mmHg")
 DE_DX = [f"{dx:g}" for dx in DE["convergence"]["dx_um"]]
-# the key of a delamination run under the paper's damage law (rule delaminate)
-DE_NAME = "{law}/{poolset}_{sigma}kPa_{criterion}"
 
 
 def de_run(name):
@@ -134,20 +135,20 @@ def de_run(name):
 
 
 # the damage law with a fracture energy: figure 5's set at critical_stress_kPa, default criterion, one run per G_c
-# (and per charge law); "paper" is the G_c that the paper's law (PAPER_LAW) dissipates in its run of that pool
+# (and per charge law); MATCHED is the G_c that the paper's law (PAPER_LAW) dissipates in its run of that pool
 DE_FE = DE["fracture_energy"]
 # (matched where the paper's charge law is studied, against its own run: another law's default run may not grow)
 DE_MATCH = DE_FE["match_paper"] and PAPER_LAW in LAWS
-DE_TOUGHNESS = [f"{g:g}" for g in DE_FE["fracture_energies_J_m2"]] + (["paper"] if DE_MATCH else [])
+DE_TOUGHNESS = [f"{g:g}" for g in DE_FE["fracture_energies_J_m2"]] + ([MATCHED] if DE_MATCH else [])
 DE_FE_RUN = dict(poolset=FIG5_SET, sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"][0])
-# the key of a run of the damage law with a fracture energy (rule delaminate_fracture_energy)
-DE_FE_NAME = f"{DE_NAME}_Gc{{gc}}"
-# every delamination run by its name (its key filled in: DE_NAME, or DE_FE_NAME for the fracture-energy runs), which
+# every delamination run by its name (its key filled in: the kind delaminate's, or delaminate_fracture_energy's), which
 # names its files (de_run: growth and summary tables, snapshots), ParaView series and animation.
 # The runs of the paper's damage law (figures 5-7, the claims) and those of the law with a fracture energy (target
 # fracture_energy) have tables of their own.
-DE_PAPER_NAMES = [DE_NAME.format(law=law, **r) for law in LAWS for r in DE_RUNS]
-DE_FE_NAMES = [DE_FE_NAME.format(law=law, gc=gc, **DE_FE_RUN) for law in LAWS for gc in DE_TOUGHNESS]
+DE_PAPER_NAMES = [JOBS.delaminate.key.format(law=law, **r) for law in LAWS for r in DE_RUNS]
+DE_FE_NAMES = [
+    JOBS.delaminate_fracture_energy.key.format(law=law, gc=gc, **DE_FE_RUN) for law in LAWS for gc in DE_TOUGHNESS
+]
 DE_RUN_NAMES = DE_PAPER_NAMES + DE_FE_NAMES
 
 
@@ -156,9 +157,9 @@ def run_tables(names, table):
     return [de_run(name)[table] for name in names]
 
 
-# the run whose dissipation is the fracture-energy runs' "paper" G_c (PAPER_LAW), and every run that keeps
+# the run whose dissipation is the fracture-energy runs' MATCHED G_c (PAPER_LAW), and every run that keeps
 # snapshots: the runs of the tables and that one, where it is not among them (a reduced configuration's sigma_cr)
-DE_MATCHED = DE_NAME.format(law=PAPER_LAW, **DE_FE_RUN)
+DE_MATCHED = JOBS.delaminate.key.format(law=PAPER_LAW, **DE_FE_RUN)
 DE_SNAPSHOT_NAMES = DE_RUN_NAMES + ([DE_MATCHED] if DE_MATCH and DE_MATCHED not in DE_RUN_NAMES else [])
 # any delamination run (rule delaminate or delaminate_fracture_energy) by its name "{law}/{run}" (law_and_run), and
 # its snapshots

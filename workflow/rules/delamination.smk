@@ -7,10 +7,6 @@ wildcard_constraints:
     dedx="|".join(re.escape(dx) for dx in DE_DX),
 
 
-# the key of a run of the resolution study: one charge law, spacing and onset criterion
-DC_NAME = "{law}/dx{dedx}_{criterion}"
-
-
 rule delaminate:
     """Pool set {poolset} in the passive wall, {law} charge: seeded, swollen, grown by damage at sigma_cr = {sigma} kPa
     ({criterion})."""
@@ -18,17 +14,14 @@ rule delaminate:
         code=code_of("delaminate"),
         state=DE_STATE,
     output:
-        **de_run(DE_NAME),
-        provenance=f"results/provenance/delaminate_{flat(DE_NAME)}.json",
+        **de_run(JOBS.delaminate.key),
+        provenance=JOBS.delaminate.provenance,
     log:
-        f"logs/delaminate/{DE_NAME}.log",
+        JOBS.delaminate.log,
     benchmark:
-        f"results/benchmarks/delaminate_{flat(DE_NAME)}.tsv"
-    conda:
-        "../envs/sphgag.yaml"
+        JOBS.delaminate.benchmark
     threads: 1
     resources:
-        runtime=5,
         mem_mb=1500,
     params:
         state_slice=dict(PRESSURISED_SLICE, model="passive"),
@@ -41,26 +34,22 @@ rule delaminate:
 
 rule delaminate_fracture_energy:
     """Pool set {poolset} in the passive wall, {law} charge, grown by the damage law with a fracture energy G_c = {gc}
-    J/m^2 (onset at sigma_cr = {sigma} kPa, {criterion}); G_c = paper: the energy the paper's law dissipates."""
+    J/m^2 (onset at sigma_cr = {sigma} kPa, {criterion}); G_c = paper (MATCHED): the energy the paper's law
+    dissipates."""
     input:
         code=code_of("delaminate"),
         state=DE_STATE,
-        matched=lambda wildcards: de_run(DE_MATCHED)["summary"] if wildcards.gc == "paper" else [],
+        matched=lambda wildcards: de_run(DE_MATCHED)["summary"] if wildcards.gc == MATCHED else [],
     output:
-        **de_run(DE_FE_NAME),
-        provenance=f"results/provenance/delaminate_{flat(DE_FE_NAME)}.json",
+        **de_run(JOBS.delaminate_fracture_energy.key),
+        provenance=JOBS.delaminate_fracture_energy.provenance,
     log:
-        f"logs/delaminate/{DE_FE_NAME}.log",
+        JOBS.delaminate_fracture_energy.log,
     benchmark:
-        f"results/benchmarks/delaminate_{flat(DE_FE_NAME)}.tsv"
+        JOBS.delaminate_fracture_energy.benchmark
     wildcard_constraints:
         gc="|".join(re.escape(g) for g in DE_TOUGHNESS),
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
     params:
         state_slice=dict(PRESSURISED_SLICE, model="passive"),
         pools=lambda wildcards: DE["pool_sets"][wildcards.poolset],
@@ -80,8 +69,6 @@ rule delamination_growth:
         "logs/delamination_growth.log",
     benchmark:
         "results/benchmarks/delamination_growth.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     script:
         "../scripts/concat_tables.py"
 
@@ -101,8 +88,6 @@ rule delamination_summary:
         "logs/delamination_summary.log",
     benchmark:
         "results/benchmarks/delamination_summary.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     script:
         "../scripts/concat_tables.py"
 
@@ -117,8 +102,6 @@ rule fracture_energy_growth:
         "logs/fracture_energy_growth.log",
     benchmark:
         "results/benchmarks/fracture_energy_growth.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     script:
         "../scripts/concat_tables.py"
 
@@ -138,8 +121,6 @@ rule fracture_energy_summary:
         "logs/fracture_energy_summary.log",
     benchmark:
         "results/benchmarks/fracture_energy_summary.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     script:
         "../scripts/concat_tables.py"
 
@@ -150,14 +131,12 @@ rule delamination_convergence_dx:
     input:
         code=code_of("delamination_convergence"),
     output:
-        table=f"results/delamination/convergence/{DC_NAME}.csv",
-        provenance=f"results/provenance/delamination_convergence_{flat(DC_NAME)}.json",
+        table=JOBS.delamination_convergence_dx.output("delamination/convergence", ".csv"),
+        provenance=JOBS.delamination_convergence_dx.provenance,
     log:
-        f"logs/delamination_convergence/{DC_NAME}.log",
+        JOBS.delamination_convergence_dx.log,
     benchmark:
-        f"results/benchmarks/delamination_convergence_{flat(DC_NAME)}.tsv"
-    conda:
-        "../envs/sphgag.yaml"
+        JOBS.delamination_convergence_dx.benchmark
     threads: 1
     resources:
         runtime=25,
@@ -166,12 +145,11 @@ rule delamination_convergence_dx:
         bilayer=config["bilayer"],
         numerics=config["numerics"],
         homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
-        delamination=lambda wildcards: dict(
-            DE_SETTINGS,
+        delamination=lambda wildcards: DelaminationSettings.params(
+            DE,
+            *DE_AT_CONFIG,
             criteria=[wildcards.criterion],
             pool_sets={name: DE["pool_sets"][name] for name in DE["convergence"]["pool_sets"]},
-            critical_stress_kPa=DE["critical_stress_kPa"],
-            pressure_mmHg=DE["pressure_mmHg"],
         ),
         gag=lambda wildcards: GAG[wildcards.law],
     script:
@@ -193,8 +171,6 @@ rule delamination_convergence:
         "logs/delamination_convergence.log",
     benchmark:
         "results/benchmarks/delamination_convergence.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     script:
         "../scripts/concat_tables.py"
 
@@ -216,7 +192,5 @@ rule delamination_gci:
         "logs/delamination_gci.log",
     benchmark:
         "results/benchmarks/delamination_gci.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     script:
         "../scripts/delamination_gci.py"

@@ -10,7 +10,7 @@ SE_SCENARIO = dict(
     numerics=config["numerics"],
     homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
     swelling=SWELL_SETTINGS,
-    delamination=dict(DE_SETTINGS, critical_stress_kPa=DE["critical_stress_kPa"], pressure_mmHg=DE["pressure_mmHg"]),
+    delamination=DelaminationSettings.params(DE, *DE_AT_CONFIG),
     pool=DE["pool_sets"][FIG5_SET][0],
     pool_set=FIG5_SET,
     criterion=DE["criteria"][0],
@@ -35,15 +35,11 @@ SE_SETTINGS = {
     purpose: {m: {k: SE[m][k] for k in keys[m]} for m in ("morris", "sobol")}
     for purpose, keys in (("design", SE_DESIGN_KEYS), ("indices", SE_INDEX_KEYS))
 }
-# the key of a batch of samples: one design's, under one charge law
-SE_BATCH_NAME = "{method}/{law}/batch{batch}"
 # a method's design, indices and samples (the Sobol design reads the Morris indices, which are written after it)
 SE_DESIGN = "results/sensitivity/{method}/design.csv"
 SE_INDICES = "results/sensitivity/{method}/indices.csv"
 SE_SAMPLES = "results/sensitivity/{method}/samples.csv"
 SE_MAP = SE["map"]
-# the key of a point of the delamination map: one charge law, angular extent and sigma_cr
-SE_MAP_NAME = "{law}/{width}deg_{sigma}kPa"
 
 
 wildcard_constraints:
@@ -60,13 +56,11 @@ rule sensitivity_design:
     output:
         SE_DESIGN,
     log:
-        "logs/sensitivity/{method}_design.log",
+        JOBS.sensitivity_design.log,
     benchmark:
-        "results/benchmarks/sensitivity_{method}_design.tsv"
+        JOBS.sensitivity_design.benchmark
     wildcard_constraints:
         method="nominal|morris",
-    conda:
-        "../envs/sphgag.yaml"
     params:
         ranges=SE_RANGES,
         morris=lambda wildcards: SE_SETTINGS["design"]["morris"] if wildcards.method == "morris" else {},
@@ -86,11 +80,9 @@ rule sobol_design:
     output:
         SE_DESIGN.format(method="sobol"),
     log:
-        "logs/sensitivity/sobol_design.log",
+        JOBS.sobol_design.log,
     benchmark:
-        "results/benchmarks/sensitivity_sobol_design.tsv"
-    conda:
-        "../envs/sphgag.yaml"
+        JOBS.sobol_design.benchmark
     params:
         ranges=SE_RANGES,
         sobol=SE_SETTINGS["design"]["sobol"],
@@ -105,14 +97,12 @@ rule sensitivity_batch:
         code=code_of("sensitivity_batch"),
         design=SE_DESIGN,
     output:
-        table=f"results/sensitivity/{SE_BATCH_NAME}.csv",
-        provenance=f"results/provenance/sensitivity_{flat(SE_BATCH_NAME)}.json",
+        table=JOBS.sensitivity_batch.output("sensitivity", ".csv"),
+        provenance=JOBS.sensitivity_batch.provenance,
     log:
-        f"logs/sensitivity/{SE_BATCH_NAME}.log",
+        JOBS.sensitivity_batch.log,
     benchmark:
-        f"results/benchmarks/sensitivity_{flat(SE_BATCH_NAME)}.tsv"
-    conda:
-        "../envs/sphgag.yaml"
+        JOBS.sensitivity_batch.benchmark
     threads: 1
     resources:
         runtime=5 + 12 * SE["batch_size"],  # measured: up to 5.4 min per prescribed-law sample (benchmarks/resources.csv)
@@ -137,13 +127,11 @@ rule sensitivity_method:
         indices=SE_INDICES,
         samples=SE_SAMPLES,
     log:
-        "logs/sensitivity/{method}_indices.log",
+        JOBS.sensitivity_method.log,
     benchmark:
-        "results/benchmarks/sensitivity_{method}_indices.tsv"
+        JOBS.sensitivity_method.benchmark
     wildcard_constraints:
         method="morris|sobol",
-    conda:
-        "../envs/sphgag.yaml"
     params:
         ranges=SE_RANGES,
         settings=lambda wildcards: SE_SETTINGS["indices"][wildcards.method],
@@ -169,11 +157,9 @@ rule sensitivity_tables:
         samples="results/sensitivity/samples.csv",
         failures="results/sensitivity/failures.csv",
     log:
-        "logs/sensitivity/aggregate.log",
+        JOBS.sensitivity_tables.log,
     benchmark:
-        "results/benchmarks/sensitivity_aggregate.tsv"
-    conda:
-        "../envs/sphgag.yaml"
+        JOBS.sensitivity_tables.benchmark
     script:
         "../scripts/sensitivity_tables.py"
 
@@ -195,8 +181,6 @@ rule sensitivity_figure:
         "logs/sensitivity_figure.log",
     benchmark:
         "results/benchmarks/sensitivity_figure.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     script:
         "../scripts/sensitivity_figure.py"
 
@@ -208,18 +192,15 @@ rule delamination_map_point:
         code=code_of("delamination_map_point"),
         state=DE_STATE,
     output:
-        table=f"results/sensitivity/map/{SE_MAP_NAME}.csv",
-        provenance=f"results/provenance/delamination_map_{flat(SE_MAP_NAME)}.json",
+        table=JOBS.delamination_map_point.output("sensitivity/map", ".csv"),
+        provenance=JOBS.delamination_map_point.provenance,
     log:
-        f"logs/sensitivity/map/{SE_MAP_NAME}.log",
+        JOBS.delamination_map_point.log,
     benchmark:
-        f"results/benchmarks/delamination_map_{flat(SE_MAP_NAME)}.tsv"
-    conda:
-        "../envs/sphgag.yaml"
+        JOBS.delamination_map_point.benchmark
     threads: 1
     resources:
         runtime=15,
-        mem_mb=1000,
     params:
         state_slice=dict(PRESSURISED_SLICE, model="passive"),
         pool=lambda wildcards: dict(DE["pool_sets"][FIG5_SET][0], angular_extent_deg=float(wildcards.width)),
@@ -250,8 +231,6 @@ rule delamination_map:
         "logs/delamination_map.log",
     benchmark:
         "results/benchmarks/delamination_map.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     script:
         "../scripts/concat_tables.py"
 
@@ -275,8 +254,6 @@ rule delamination_map_figure:
         "logs/delamination_map_figure.log",
     benchmark:
         "results/benchmarks/delamination_map_figure.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     params:
         pressure=DE["pressure_mmHg"],
         cases={name: c["angular_extent_deg"] for name, c in SW["cases"].items()},

@@ -17,18 +17,15 @@ rule verify_pool_ratio:
     input:
         code=code_of("verify_pool"),
     output:
-        table="results/verification/runs/elliptic_pool_ab{ratio}.csv",
-        profiles="results/verification/runs/elliptic_pool_profiles_ab{ratio}.csv",
-        provenance="results/provenance/verify_pool_ab{ratio}.json",
+        table=JOBS.verify_pool_ratio.flat_output("verification/runs", "elliptic_pool", ".csv"),
+        profiles=JOBS.verify_pool_ratio.flat_output("verification/runs", "elliptic_pool_profiles", ".csv"),
+        provenance=JOBS.verify_pool_ratio.provenance,
     log:
-        "logs/verify_pool/ab{ratio}.log",
+        JOBS.verify_pool_ratio.log,
     benchmark:
-        "results/benchmarks/verify_pool_ab{ratio}.tsv"
-    conda:
-        "../envs/sphgag.yaml"
+        JOBS.verify_pool_ratio.benchmark
     threads: 1
     resources:
-        runtime=5,
         mem_mb=2000,
     params:
         pool={k: v for k, v in VP.items() if k != "aspect_ratios"},
@@ -54,8 +51,6 @@ rule verify_pool:
         "logs/verify_pool.log",
     benchmark:
         "results/benchmarks/verify_pool.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     script:
         "../scripts/concat_tables.py"
 
@@ -70,8 +65,6 @@ rule verify_pool_profiles:
         "logs/verify_pool_profiles.log",
     benchmark:
         "results/benchmarks/verify_pool_profiles.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     script:
         "../scripts/concat_tables.py"
 
@@ -94,12 +87,7 @@ rule verification_pool_figure:
         "logs/verification_pool_figure.log",
     benchmark:
         "results/benchmarks/verification_pool_figure.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
     script:
         "../scripts/verification_pool_figure.py"
 
@@ -114,16 +102,14 @@ rule verify_crack_length:
     input:
         code=code_of("verify_crack"),
     output:
-        table="results/verification/runs/pressurised_crack_a{length}.csv",
-        provenance="results/provenance/verify_crack_a{length}.json",
+        table=JOBS.verify_crack_length.flat_output("verification/runs", "pressurised_crack", ".csv"),
+        provenance=JOBS.verify_crack_length.provenance,
     log:
-        "logs/verify_crack/a{length}.log",
+        JOBS.verify_crack_length.log,
     benchmark:
-        "results/benchmarks/verify_crack_a{length}.tsv"
+        JOBS.verify_crack_length.benchmark
     wildcard_constraints:
         length="|".join(re.escape(a) for a in CRACK_LENGTHS),
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
     resources:
         runtime=45,
@@ -155,8 +141,6 @@ rule verify_crack:
         "logs/verify_crack.log",
     benchmark:
         "results/benchmarks/verify_crack.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     script:
         "../scripts/concat_tables.py"
 
@@ -179,12 +163,7 @@ rule verification_crack_figure:
         "logs/verification_crack_figure.log",
     benchmark:
         "results/benchmarks/verification_crack_figure.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
     script:
         "../scripts/verification_crack_figure.py"
 
@@ -198,16 +177,14 @@ rule verify_circular_pool_model:
     input:
         code=code_of("verify_circular_pool"),
     output:
-        table="results/verification/runs/circular_pool_{model}.csv",
-        provenance="results/provenance/verify_circular_pool_{model}.json",
+        table=JOBS.verify_circular_pool_model.flat_output("verification/runs", "circular_pool", ".csv"),
+        provenance=JOBS.verify_circular_pool_model.provenance,
     log:
-        "logs/verify_circular_pool/{model}.log",
+        JOBS.verify_circular_pool_model.log,
     benchmark:
-        "results/benchmarks/verify_circular_pool_{model}.tsv"
+        JOBS.verify_circular_pool_model.benchmark
     wildcard_constraints:
         model="|".join(VCP["pool_models"]),
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
     resources:
         runtime=30,
@@ -236,8 +213,6 @@ rule verify_circular_pool:
         "logs/verify_circular_pool.log",
     benchmark:
         "results/benchmarks/verify_circular_pool.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     script:
         "../scripts/concat_tables.py"
 
@@ -259,12 +234,7 @@ rule verification_circular_pool_figure:
         "logs/verification_circular_pool_figure.log",
     benchmark:
         "results/benchmarks/verification_circular_pool_figure.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
     script:
         "../scripts/verification_circular_pool_figure.py"
 
@@ -278,16 +248,14 @@ rule verify_annulus_model:
     input:
         code=code_of("verify_annulus"),
     output:
-        table="results/verification/runs/annulus_{model}.csv",
-        provenance="results/provenance/verify_annulus_{model}.json",
+        table=JOBS.verify_annulus_model.flat_output("verification/runs", "annulus", ".csv"),
+        provenance=JOBS.verify_annulus_model.provenance,
     log:
-        "logs/verify_annulus/{model}.log",
+        JOBS.verify_annulus_model.log,
     benchmark:
-        "results/benchmarks/verify_annulus_{model}.tsv"
+        JOBS.verify_annulus_model.benchmark
     wildcard_constraints:
         model="|".join(VAN["pool_models"]),
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
     resources:
         runtime=60,
@@ -319,12 +287,7 @@ rule verify_annulus:
         "logs/verify_annulus.log",
     benchmark:
         "results/benchmarks/verify_annulus.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
     params:
         radius=VAN["radius_um"],
         matrix=POOL_MATRIX,
@@ -353,11 +316,6 @@ rule verification_annulus_figure:
         "logs/verification_annulus_figure.log",
     benchmark:
         "results/benchmarks/verification_annulus_figure.tsv"
-    conda:
-        "../envs/sphgag.yaml"
     threads: 1
-    resources:
-        runtime=5,
-        mem_mb=1000,
     script:
         "../scripts/verification_annulus_figure.py"

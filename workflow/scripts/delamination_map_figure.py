@@ -2,19 +2,16 @@
 
 import pandas as pd
 
-from sphgag import threads
-from sphgag.records import runlog
+from sphgag import jobs
 from sphgag.views import sensitivity, style
 
-sm = snakemake  # noqa: F821
-threads.use(sm.threads)
-with runlog.run("delamination_map_figure", sm.log[0]):
-    table = pd.read_csv(sm.input.map)
+with jobs.run(snakemake, name="delamination_map_figure") as job:  # noqa: F821
+    table = pd.read_csv(job.input.map)
     fig = sensitivity.delamination_map(
         table,
-        pd.read_csv(sm.input.swelling),
-        sm.params.cases,
-        sm.params.pressure,
+        pd.read_csv(job.input.swelling),
+        job.params.cases,
+        job.params.pressure,
         list(dict.fromkeys(table.charge_law)),
     )
-    style.save(fig, [sm.output.pdf, sm.output.png], "Delamination map of figure 5's pool, sphgag")
+    style.save(fig, [job.output.pdf, job.output.png], "Delamination map of figure 5's pool, sphgag")

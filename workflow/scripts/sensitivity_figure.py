@@ -2,13 +2,10 @@
 
 import pandas as pd
 
-from sphgag import threads
-from sphgag.records import runlog
+from sphgag import jobs
 from sphgag.views import sensitivity, style
 
-sm = snakemake  # noqa: F821
-threads.use(sm.threads)
-with runlog.run("sensitivity_figure", sm.log[0]):
-    indices = pd.read_csv(sm.input.indices)
+with jobs.run(snakemake, name="sensitivity_figure") as job:  # noqa: F821
+    indices = pd.read_csv(job.input.indices)
     fig = sensitivity.sensitivity(indices, list(dict.fromkeys(indices.charge_law)))
-    style.save(fig, [sm.output.pdf, sm.output.png], "Sensitivity of the figure 4 and delamination results, sphgag")
+    style.save(fig, [job.output.pdf, job.output.png], "Sensitivity of the figure 4 and delamination results, sphgag")

@@ -2,13 +2,10 @@
 
 import pandas as pd
 
-from sphgag import threads
-from sphgag.records import runlog
+from sphgag import jobs
 from sphgag.views import style, verification
 
-sm = snakemake  # noqa: F821
-threads.use(sm.threads)
-with runlog.run("verification_annulus_figure", sm.log[0]):
-    table, orders, exact = (pd.read_csv(sm.input[k]) for k in ("table", "orders", "exact"))
+with jobs.run(snakemake, name="verification_annulus_figure") as job:  # noqa: F821
+    table, orders, exact = (pd.read_csv(job.input[k]) for k in ("table", "orders", "exact"))
     fig = verification.verification_annulus(table, orders, exact)
-    style.save(fig, [sm.output.pdf, sm.output.png], "Verification of the pressurised annulus and its limit, sphgag")
+    style.save(fig, [job.output.pdf, job.output.png], "Verification of the pressurised annulus and its limit, sphgag")

@@ -2,14 +2,11 @@
 
 import pandas as pd
 
-from sphgag import threads
-from sphgag.records import runlog
+from sphgag import jobs
 from sphgag.views import style, verification
 
-sm = snakemake  # noqa: F821
-threads.use(sm.threads)
-with runlog.run("verification_pool_figure", sm.log[0]):
-    table = pd.read_csv(sm.input.table)
+with jobs.run(snakemake, name="verification_pool_figure") as job:  # noqa: F821
+    table = pd.read_csv(job.input.table)
     style.finite_or_raise(table, ["tip_stress_kPa", "rel_error", "traction_jump_kPa"], "verification_pool")
-    fig = verification.verification_pool(table, pd.read_csv(sm.input.profiles))
-    style.save(fig, [sm.output.pdf, sm.output.png], "Verification of the pool stress field, sphgag")
+    fig = verification.verification_pool(table, pd.read_csv(job.input.profiles))
+    style.save(fig, [job.output.pdf, job.output.png], "Verification of the pool stress field, sphgag")

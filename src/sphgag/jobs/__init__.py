@@ -27,7 +27,16 @@ from ..records import provenance, runlog, state
 #: the types of the wildcards that carry numbers (every other wildcard is a name, kept as text); a key's text is the
 #: number's ``:g`` form, so that the text in a file name and the value a job reads are one quantity
 NUMBERS: Mapping[str, type] = MappingProxyType(
-    {"sigma": float, "dx": float, "dedx": float, "width": float, "factor": int, "batch": int}
+    {
+        "sigma": float,
+        "dx": float,
+        "dedx": float,
+        "width": float,
+        "factor": int,
+        "batch": int,
+        "ratio": float,
+        "length": float,
+    }
 )
 
 
@@ -75,6 +84,10 @@ class Kind:
     def name(self, wildcards: Mapping) -> str:
         """The name of the run with ``wildcards``: the prefix and the flat key ("swell_prescribed_particles_...")."""
         return f"{self.prefix or self.rule}_{flat(self.key.format(**wildcards))}"
+
+    def flat_output(self, folder: str, name: str, suffix: str) -> str:
+        """The path pattern of one output named by the flat key: ``results/<folder>/<name>_<flat key><suffix>``."""
+        return f"results/{folder}/{name}_{flat(self.key)}{suffix}"
 
 
 #: the kinds of job, by rule name (:func:`register`)

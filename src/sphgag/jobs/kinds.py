@@ -67,3 +67,53 @@ register(
 )
 
 register(swell, pool_stresses)
+
+
+def _named(rule: str, key: str, name: str, **paths) -> Kind:
+    """The kind of rule ``rule`` whose runs and files are named ``name`` (one computation run by two rules, or a
+    rule named after its study)."""
+    return Kind(rule, key, prefix=name, stem=name, **paths)
+
+
+# Delamination (figures 5-7): one run per (charge law, pool set, sigma_cr, onset criterion), and one per G_c of the
+# damage law with a fracture energy (the same computation: its runs, logs and records are named "delaminate")
+delaminate = Kind("delaminate", "{law}/{poolset}_{sigma}kPa_{criterion}")
+delaminate_fracture_energy = _named("delaminate_fracture_energy", delaminate.key + "_Gc{gc}", "delaminate")
+# the resolution study: one charge law, particle spacing and onset criterion
+delamination_convergence_dx = _named(
+    "delamination_convergence_dx", "{law}/dx{dedx}_{criterion}", "delamination_convergence"
+)
+
+# The sensitivity study: a design per method, a batch of its samples per charge law, its indices and tables; the
+# delamination map, one point per (charge law, angular extent, sigma_cr), logged with the study
+sensitivity_design = _named("sensitivity_design", "{method}_design", "sensitivity")
+sobol_design = _named("sobol_design", "sobol_design", "sensitivity")
+sensitivity_batch = _named("sensitivity_batch", "{method}/{law}/batch{batch}", "sensitivity")
+sensitivity_method = _named("sensitivity_method", "{method}_indices", "sensitivity")
+sensitivity_tables = _named("sensitivity_tables", "aggregate", "sensitivity")
+MAP_POINT = "{law}/{width}deg_{sigma}kPa"
+delamination_map_point = _named(
+    "delamination_map_point", MAP_POINT, "delamination_map", log_path=f"logs/sensitivity/map/{MAP_POINT}.log"
+)
+
+# The verification problems: a run per aspect ratio, crack half-length or pool model
+verify_pool_ratio = _named("verify_pool_ratio", "ab{ratio}", "verify_pool")
+verify_crack_length = _named("verify_crack_length", "a{length}", "verify_crack")
+verify_circular_pool_model = _named("verify_circular_pool_model", "{model}", "verify_circular_pool")
+verify_annulus_model = _named("verify_annulus_model", "{model}", "verify_annulus")
+
+register(
+    delaminate,
+    delaminate_fracture_energy,
+    delamination_convergence_dx,
+    sensitivity_design,
+    sobol_design,
+    sensitivity_batch,
+    sensitivity_method,
+    sensitivity_tables,
+    delamination_map_point,
+    verify_pool_ratio,
+    verify_crack_length,
+    verify_circular_pool_model,
+    verify_annulus_model,
+)

@@ -360,3 +360,14 @@ def sample_rows(design: pd.DataFrame, names, evaluate, failure=Exception, label:
             time.time() - started,
         )
     return pd.DataFrame(rows)
+
+
+def failures(samples: pd.DataFrame) -> pd.DataFrame:
+    """The samples of ``samples`` (rows of :func:`sample_rows`) without every output of :data:`OUTPUTS`: a failed run,
+    or an output undefined there (e.g. no equilibrium at the stated concentration), by their inputs, each naming the
+    outputs it misses (``missing_outputs``, beside its ``status``)."""
+    missing = samples[list(OUTPUTS)].isna()
+    table = samples[(samples.status != "ok") | missing.any(axis=1)].copy()
+    named = [" ".join(o for o in OUTPUTS if missing.loc[i, o]) for i in table.index]
+    table.insert(table.columns.get_loc("status") + 1, "missing_outputs", named)
+    return table

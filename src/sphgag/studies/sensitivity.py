@@ -170,3 +170,33 @@ def most_influential(indices: pd.DataFrame, count: int) -> list[str]:
     best, breadth = by_input.max().reindex(order).fillna(-1.0), by_input.mean().reindex(order).fillna(-1.0)
     ranked = sorted(order, key=lambda n: (-best[n], -breadth[n], order.index(n)))
     return ranked[:count]
+
+
+def indices_table(
+    method: str, design: pd.DataFrame, samples: pd.DataFrame, ranges: dict, outputs, settings: dict, log=None
+):
+    """The ``method`` (``morris`` or ``sobol``) indices of every output of ``outputs`` under every charge law, in one
+    tidy table (``method``, ``charge_law``, ``output``, ``input``, :data:`INDEX_COLUMNS`): ``samples`` are the rows
+    of the ``design`` with their outputs (a column ``charge_law``, and ``status``, ``ok`` where the run succeeded),
+    ``ranges`` the inputs' ranges (:meth:`Problem.from_ranges`) and ``settings`` the method's (``levels`` for Morris,
+    ``resamples``, ``confidence``, ``seed``). A missing output (a failed run) is NaN in its samples."""
+    names = [c for c in design.columns if c != "sample"]
+    problem, s, rows = Problem.from_ranges(ranges).subset(names), settings, []
+    for law, table in samples.groupby("charge_law", sort=False):
+        table = design[["sample"]].merge(table, on="sample", how="left")  # every sample of the design, in its order
+        failed = (table.status != "ok").to_numpy()
+        for output in outputs:
+            y = table[output].to_numpy(dtype=float) if output in table else np.full(len(table), np.nan)
+            if method == "morris":
+                found = morris_indices(
+                    problem, design, y, failed, s["levels"], s["resamples"], s["confidence"], s["seed"]
+                )
+            else:
+                found = sobol_indices(problem, y, failed, s["resamples"], s["confidence"], s["seed"])
+            rows += [dict(charge_law=law, output=output, **r) for r in found]
+            if log is not None:
+                log.info(
+                    "[sensitivity_%s] %s, %s: %d of %d samples used, %d failed",
+                    *(method, law, output, found[0]["samples_used"], len(table), found[0]["samples_failed"]),
+                )
+    return pd.DataFrame(rows)[["method", "charge_law", "output", "input"] + INDEX_COLUMNS]

@@ -10,7 +10,9 @@ One module per concept:
 * :mod:`.tables`: a run's records and the tables of them: rows, summary and its statistics, labels, the
   delamination map's classes, the pool as a pressurised crack (:func:`griffith`);
 * :mod:`.snapshots`: a run's snapshots on disk, from which it can restart;
-* :mod:`.convergence`: the resolution study.
+* :mod:`.convergence`: the resolution study;
+* :mod:`.runs`: the pipeline's runs: one pool set grown and labelled (:func:`delaminate`), one point of the
+  delamination map (:func:`map_point`).
 
 The names the pipeline, the tests and the benchmarks use are imported here.
 """
@@ -18,7 +20,8 @@ The names the pipeline, the tests and the benchmarks use are imported here.
 from .convergence import CONVERGED_QUANTITIES, GCI_COLUMNS, convergence_study, gci_table
 from .front import CONTACT_DX, Front, Islands
 from .growth import DamageUpdate, GrowthRun, LimitPoint, grow, intact_energy, onset_measure, seeded_only
-from .settings import Settings
+from .runs import crack_modulus, delaminate, fracture_energy, map_point
+from .settings import MATCHED, Settings
 from .snapshots import load_snapshot, save_snapshots
 from .tables import (
     GROWTH_COLUMNS,
@@ -43,6 +46,7 @@ from .tables import (
 __all__ = [
     "CONTACT_DX",
     "CONVERGED_QUANTITIES",
+    "MATCHED",
     "GCI_COLUMNS",
     "STOP_KINDS",
     "Critical",
@@ -60,6 +64,9 @@ __all__ = [
     "Result",
     "Settings",
     "convergence_study",
+    "crack_modulus",
+    "delaminate",
+    "fracture_energy",
     "first_level_growth",
     "griffith",
     "grow",
@@ -69,6 +76,7 @@ __all__ = [
     "labelled",
     "level_classes",
     "load_snapshot",
+    "map_point",
     "onset_measure",
     "outcome",
     "paper_law",

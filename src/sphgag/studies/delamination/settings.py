@@ -12,6 +12,10 @@ from ...physics import damage
 from ..candidates import RULES
 from ..onset import CRITERIA
 
+#: the G_c of a run of the damage law with a fracture energy (its wildcard ``gc``: J/m^2) that is no number but the
+#: energy the paper's damage law dissipated in its matched run (the same pool set at the same sigma_cr and criterion)
+MATCHED = "paper"
+
 
 @dataclass(frozen=True)
 class Settings:
@@ -47,6 +51,15 @@ class Settings:
         the onset criterion and the damage law are each run's own."""
         own = ("critical_stress_kPa", "criterion", "damage_law", "fracture_energy_J_m2")
         return tuple(f.name for f in fields(cls) if f.name not in own)
+
+    @classmethod
+    def params(cls, de: dict, *own: str, **extra) -> dict:
+        """A delamination job's settings (its rule's params ``delamination``), in one shape for every job: the keys of
+        the section ``de`` that every run reads (:meth:`config_keys`, in their order), then ``extra``, then the
+        section's keys ``own`` (a study that runs at the section's own sigma_cr, ``critical_stress_kPa``, a float as
+        configured). A run with sigma_cr and a criterion of its own has them as its job's typed wildcards
+        (:mod:`sphgag.jobs`), not here, so that adding a sigma_cr reruns no other run."""
+        return dict({k: de[k] for k in cls.config_keys()}, **extra, **{k: de[k] for k in own})
 
     @classmethod
     def from_config(
