@@ -6,8 +6,11 @@ import os
 import subprocess
 import sys
 from pathlib import Path
+from types import SimpleNamespace
 
 import pytest
+
+from sphgag import jobs
 
 from .conftest import ROOT
 
@@ -54,19 +57,24 @@ def test_use_limits_numba_and_every_blas_pool(where):
     assert found and set(found.values()) == {1}, found  # NumPy's and SciPy's OpenBLAS
 
 
-def test_every_workflow_script_sets_its_threads_first():
-    """Each script calls threads.use(sm.threads) at module level, before the work of the job."""
+def test_every_workflow_script_enters_its_job_before_any_work():
+    """Each script's first statement after its docstring and imports is ``with jobs.run(snakemake...)``, which sets the
+    rule's threads (:func:`sphgag.jobs.run`: :func:`sphgag.threads.use`) before the work of the job."""
     missing = []
     for path in sorted((ROOT / "workflow" / "scripts").glob("*.py")):
-        body = ast.parse(path.read_text()).body
-        calls = [
-            n
-            for n in body
-            if isinstance(n, ast.Expr)
-            and isinstance(n.value, ast.Call)
-            and ast.unparse(n.value) == "threads.use(sm.threads)"
-        ]
-        work = [n for n in body if isinstance(n, ast.With | ast.For | ast.If)]
-        if not calls or (work and calls[0].lineno > work[0].lineno):
+        body = [n for n in ast.parse(path.read_text()).body if not isinstance(n, ast.Import | ast.ImportFrom)]
+        body = body[1:] if body and isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant) else body
+        first = body[0] if body else None
+        enters = isinstance(first, ast.With) and ast.unparse(first.items[0].context_expr).startswith(
+            "jobs.run(snakemake"
+        )
+        if not enters:
             missing.append(Path(path).name)
     assert not missing, missing
+
+
+def test_a_job_uses_the_threads_its_rule_declares(tmp_path):
+    """:func:`sphgag.jobs.run` limits the job to its rule's threads before it yields."""
+    sm = SimpleNamespace(threads=1, rule="fig1", wildcards={}, log=[str(tmp_path / "fig1.log")])
+    with jobs.run(sm, name="fig1"):
+        assert os.environ["OMP_NUM_THREADS"] == "1"

@@ -87,6 +87,7 @@ rule transmural:
 rule bilayer_table:
     """Passive and active pressure-diameter in one table, and the outer-diameter reduction by activation."""
     input:
+        code=code_of("bilayer_table"),
         passive=rules.bilayer_pressure_diameter.output.table.format(model="passive"),
         active=rules.bilayer_pressure_diameter.output.table.format(model="active"),
     output:

@@ -9,7 +9,7 @@ with jobs.run(snakemake) as job:  # noqa: F821
     cfg, label = job.params.slice, job.w.model
     p, numerics, calibration = cfg["bilayer"], cfg["numerics"], cfg["bilayer_calibration"]
     model = artery.bilayer_model(p, numerics, name=job.name)
-    saved = job.state(job.input.homeostatic, job.params.homeostatic_slice)
+    saved = state.load(job.input.homeostatic, job.params.homeostatic_slice)
     homeostatic = solver.State(saved.load, saved.x, model.evaluate(saved.x, saved.load), None)
     tube = artery.bilayer_tube(p, active=job.params.active)
     res = protocols.bilayer_pressure_diameter(

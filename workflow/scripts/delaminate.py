@@ -4,12 +4,13 @@ and let damage grow it, by eq. (2.28) as printed (figures 5-7) or by the damage 
 
 from sphgag import jobs
 from sphgag.engine import solver
+from sphgag.records import state
 from sphgag.studies import artery, delamination
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p, cfg, w = job.params, job.params.state_slice, job.w
     model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=job.name)
-    saved = job.state()
+    saved = state.load(job.input.state, job.params.state_slice)
     matched = job.input.get("matched") or None
     gc, unmatched = delamination.fracture_energy(getattr(w, "gc", None), matched, job.log, job.name)
     settings = delamination.Settings.from_config(p.delamination, w.sigma, w.criterion, gc)

@@ -3,12 +3,13 @@ by eq. (2.28); what it does at each level (sphgag.studies.delamination.map_point
 
 from sphgag import jobs
 from sphgag.engine import solver
+from sphgag.records import state
 from sphgag.studies import artery, delamination
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p, cfg, w = job.params, job.params.state_slice, job.w
     model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=job.name)
-    saved = job.state()
+    saved = state.load(job.input.state, job.params.state_slice)
     settings = delamination.Settings.from_config(p.delamination, w.sigma, p.criterion)
     start, sector = solver.State(saved.load, saved.x, None, None), artery.pool_sector(p.pool)
     table, s = delamination.map_point(model, start, sector, settings, cfg["numerics"], p.gag, w.width, run=job.name)

@@ -2,11 +2,12 @@
 
 from sphgag import jobs
 from sphgag.engine import solver
+from sphgag.records import state
 from sphgag.studies import convergence, protocols
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p, wall, run = job.params, job.params.wall, job.name
-    saved = job.state(job.input.start, wall)
+    saved = state.load(job.input.start, wall)
     start = solver.State(saved.load, saved.x, None, None)
     states = {
         case: protocols.swell_pool(convergence.case_model(wall["dx"], wall["bilayer"], wall["numerics"], p.gag, entry,

@@ -10,7 +10,7 @@ with jobs.run(snakemake) as job:  # noqa: F821
     p, w, wall, run = job.params, job.w, job.params.wall, job.name
     entry = p.cases[w.case]
     model = convergence.case_model(wall["dx"], wall["bilayer"], wall["numerics"], p.gag, entry, run)
-    start = job.state(job.input.start, wall)
+    start = state.load(job.input.start, wall)
     t0 = time.perf_counter()
     timing = p.procedure["timing"]
     records = paper_procedure.swell(model, start.x, start.load, timing, p.procedure["swelling"], w.factor, run)

@@ -10,7 +10,7 @@ with jobs.run(snakemake) as job:  # noqa: F821
     p, cfg = job.params, job.params.state_slice
     pool = artery.pool_sector(p.pool)
     model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=job.name, pool=pool, gag=p.gag)
-    saved = job.state()
+    saved = state.load(job.input.state, job.params.state_slice)
     # every converged state up to the end of the path (each records how the path ended: protocols.PoolState)
     states = protocols.swell_pool(model, solver.State(saved.load, saved.x, None, None), cfg["numerics"], p.settings)
     end = states[-1].path_end + (f" ({states[-1].end_reason})" if states[-1].end_reason else "")

@@ -5,8 +5,13 @@ and the types of its wildcards. The rules take their paths from it (:meth:`Kind.
 :attr:`Kind.benchmark`, :attr:`Kind.provenance`), and the job's script enters it with :func:`run`, which gives a
 :class:`Job`: the job's name (the rule and the run key, as every log line and record names it), its wildcards as
 typed values (a critical stress is a float from the rule to the package, never text), its threads (the rule's,
-:func:`sphgag.threads.use`), its log (:func:`sphgag.records.runlog.run`), the start states it loads
-(:meth:`Job.state`) and its provenance record (:meth:`Job.record`). A script is then only what its job computes.
+:func:`sphgag.threads.use`), its log (:func:`sphgag.records.runlog.run`) and its provenance record
+(:meth:`Job.record`). A script is then only what its job computes.
+
+The job layer sets a job up and records it; it computes no number and reads no state, so it is no job's code input
+(``workflow/code_inputs.py``, ``BOOKKEEPING``): a script loads its start states itself
+(:func:`sphgag.records.state.load`, checked against the configuration slice its rule passes), and so depends on the
+code that reads them.
 
 The kinds are registered by rule name (:data:`KINDS`, :func:`kind`); a kind's rule that runs under several rules
 (one script, two rules) gives each rule its own kind.
@@ -22,7 +27,7 @@ from pathlib import PurePosixPath
 from types import MappingProxyType, SimpleNamespace
 
 from .. import threads
-from ..records import provenance, runlog, state
+from ..records import provenance, runlog
 
 #: the types of the wildcards that carry numbers (every other wildcard is a name, kept as text); a key's text is the
 #: number's ``:g`` form, so that the text in a file name and the value a job reads are one quantity
@@ -137,13 +142,6 @@ class Job:
     @property
     def output(self):
         return self.sm.output
-
-    def state(self, path=None, expected=None) -> state.SavedState:
-        """The saved state at ``path`` (the input ``state`` unless given), checked against the configuration slice
-        ``expected`` (the params ``state_slice`` unless given): :func:`sphgag.records.state.load`."""
-        path = self.sm.input.state if path is None else path
-        expected = self.sm.params.state_slice if expected is None else expected
-        return state.load(path, expected_params=expected)
 
     def record(self, params: dict, summary: dict | None = None, rule: str | None = None, outputs=None) -> dict:
         """The job's provenance record (the output ``provenance``): its rule, params, outputs (its rule's unless
