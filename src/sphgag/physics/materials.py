@@ -61,11 +61,10 @@ GAS_CONSTANT = 8.314462618  # J / (mol K)
 
 
 @dataclass(frozen=True)
-class Gag(Options):
-    """The GAG parameters of one run (:func:`law_gag`): ``shear_modulus_kPa`` mu_GAG (eq. 2.27),
-    ``lame_lambda_kPa`` the bulk term of GAG particles (not in eq. 2.27; docs/physics.md), ``temperature_K`` T and
-    ``bath_concentration_mEq_l`` c* of eqs. (2.25-2.26), ``hourglass_modulus_kPa`` E of eq. (2.14) for GAG particles,
-    and the run's Donnan law ``charge_law``, a name of the registry :data:`sphgag.physics.donnan.LAWS` (:attr:`law`)."""
+class GagParameters(Options):
+    """The GAG parameters every run shares: ``shear_modulus_kPa`` mu_GAG (eq. 2.27), ``lame_lambda_kPa`` the bulk term
+    of GAG particles (not in eq. 2.27; docs/physics.md), ``temperature_K`` T and ``bath_concentration_mEq_l`` c* of
+    eqs. (2.25-2.26), and ``hourglass_modulus_kPa`` E of eq. (2.14) for GAG particles."""
 
     SECTION = "gag"
 
@@ -74,6 +73,13 @@ class Gag(Options):
     temperature_K: float
     bath_concentration_mEq_l: float
     hourglass_modulus_kPa: float
+
+
+@dataclass(frozen=True)
+class Gag(GagParameters):
+    """The GAG parameters of one run (:func:`law_gag`): the shared :class:`GagParameters` and the run's Donnan law
+    ``charge_law``, a name of the registry :data:`sphgag.physics.donnan.LAWS` (:attr:`law`)."""
+
     charge_law: str
 
     def __post_init__(self):
@@ -89,18 +95,11 @@ class Gag(Options):
 
 
 @dataclass(frozen=True)
-class GagSection(Options):
-    """The ``gag`` configuration section: the parameters of :class:`Gag` shared by every run, and the Donnan laws
+class GagSection(GagParameters):
+    """The ``gag`` configuration section: the :class:`GagParameters` shared by every run, and the Donnan laws
     ``charge_laws`` the runs are made under (names of :data:`sphgag.physics.donnan.LAWS`), one run each
     (:func:`law_gag` gives the parameters of one)."""
 
-    SECTION = "gag"
-
-    shear_modulus_kPa: float
-    lame_lambda_kPa: float
-    temperature_K: float
-    bath_concentration_mEq_l: float
-    hourglass_modulus_kPa: float
     charge_laws: tuple
 
 

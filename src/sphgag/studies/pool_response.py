@@ -286,7 +286,7 @@ def respond(scenario: dict, name: str = "pool_response") -> Response:
     model = artery.bilayer_model(bl, numerics, name=f"{name}_swell", pool=pool, gag=gag)
     states = protocols.swell_pool(model, start, numerics, swelling_settings(s))
     swelling = protocols.pool_table(model, states, pool, s["probe_length_um"], gag)
-    settings = delamination.Settings.from_config(de, de["critical_stress_kPa"], s["criterion"])
+    settings = delamination.Settings.at_section(de, s["criterion"])
     model = artery.bilayer_model(bl, numerics, name=f"{name}_delaminate")
     result = delamination.grow(model, start, [pool], settings, numerics, gag, model.props, run=f"{name}_delaminate")
     growth, summary = delamination.labelled(result, s["pool_set"], settings, bl["dx_um"])

@@ -48,7 +48,7 @@ def run_variant(
     states = protocols.swell_pool(model, start, numerics, dict(settings, pool_model="particles"))
     table = protocols.pool_table(model, states, pool, swelling["probe_length_um"], gag)
     table.insert(0, "case", swelling["case"])
-    st = delamination.Settings.from_config(de, de["critical_stress_kPa"], de["criterion"])
+    st = delamination.Settings.at_section(de, de["criterion"])
     grower: Model = artery.bilayer_model(bilayer, numerics, name=f"{name}_grow")
     result = delamination.grow(
         grower, start, [artery.pool_sector(s) for s in de["pools"]], st, numerics, gag, grower.props, run=f"{name}_grow"

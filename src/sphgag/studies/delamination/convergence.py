@@ -46,7 +46,7 @@ def convergence_study(
     for case, pools in de["pool_sets"].items():
         sectors = [artery.pool_sector(s) for s in pools]
         for criterion in de["criteria"]:
-            settings = Settings.from_config(de, de["critical_stress_kPa"], criterion)
+            settings = Settings.at_section(de, criterion)
             model = artery.bilayer_model(p, numerics, name=f"{name}_{case}_{criterion}")
             result = grow(model, start, sectors, settings, numerics, gag, model.props)
             rows.append(labelled(result, case, settings, dx)[1].assign(particles=model.n))

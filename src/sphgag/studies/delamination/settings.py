@@ -33,7 +33,7 @@ class Settings:
     max_extent_deg: float
     conversion_steps: int
     bisection_tolerance_mEq_l: float = 0.5  # onset, runaway and merge concentrations are bisected to this bracket
-    damage_law: str = "paper"  # damage.LAWS: eq. (2.28) as printed, or with a fracture energy
+    damage_law: str = damage.LAWS.paper.name  # damage.LAWS: eq. (2.28) as printed, or with a fracture energy
     fracture_energy_J_m2: float = np.nan  # G_c of the fracture_energy law
     candidates: str = "contact"  # candidates.RULES: the particles touching the pool (the paper), or the window
 
@@ -68,12 +68,18 @@ class Settings:
         """The settings of one run from the ``delamination`` configuration section (its :meth:`config_keys`): eq.
         (2.28) as printed, or the fracture-energy law where ``fracture_energy_J_m2`` (G_c) is given."""
         keys = cls.config_keys()
-        law = dict(damage_law="paper")
+        law = dict(damage_law=damage.LAWS.paper.name)
         if fracture_energy_J_m2 is not None:
-            law = dict(damage_law="fracture_energy", fracture_energy_J_m2=float(fracture_energy_J_m2))
+            law = dict(damage_law=damage.FractureEnergyLaw.name, fracture_energy_J_m2=float(fracture_energy_J_m2))
         return cls(
             critical_stress_kPa=float(critical_stress_kPa), criterion=criterion, **law, **{k: de[k] for k in keys}
         )
+
+    @classmethod
+    def at_section(cls, de: dict, criterion: str) -> Settings:
+        """The settings of a run at the section's own sigma_cr (``critical_stress_kPa``): the studies that run at the
+        configured critical stress (the resolution study, the variants, the sensitivity study's samples)."""
+        return cls.from_config(de, de["critical_stress_kPa"], criterion)
 
     @property
     def law(self) -> damage.DamageLaw | damage.FractureEnergyLaw:
