@@ -3,7 +3,6 @@
 # defines only the names it alone uses.
 
 import hashlib
-from pathlib import PurePosixPath
 
 from sphgag.jobs import kinds as JOBS
 from sphgag.physics.donnan import PAPER_LAW
@@ -59,13 +58,6 @@ PRESSURISED_SLICE = dict(HOMEOSTATIC_SLICE, bilayer_calibration=config["bilayer_
 STATE_PRESSURES = [f"{p:g}" for p in config["bilayer_calibration"]["state_pressures_mmHg"]]
 # the pressurised walls' states (rule bilayer_pressure_diameter), from which swelling and delamination start
 STATE = "results/states/{model}_{pressure}mmHg.npz"
-
-
-# A run's key names its files: its results and log nest by the key's parts ("{law}/{pool}/..."), while its provenance
-# record and benchmark are single files named by the rule and the key with each / as _ (flat).
-def flat(key):
-    """The run key ``key`` ("{law}/{run}") as one file name ("{law}_{run}")."""
-    return "_".join(PurePosixPath(key).parts)
 
 
 # Swelling (figure 4)
@@ -161,10 +153,9 @@ def run_tables(names, table):
 # snapshots: the runs of the tables and that one, where it is not among them (a reduced configuration's sigma_cr)
 DE_MATCHED = JOBS.delaminate.key.format(law=PAPER_LAW, **DE_FE_RUN)
 DE_SNAPSHOT_NAMES = DE_RUN_NAMES + ([DE_MATCHED] if DE_MATCH and DE_MATCHED not in DE_RUN_NAMES else [])
-# any delamination run (rule delaminate or delaminate_fracture_energy) by its name "{law}/{run}" (law_and_run), and
-# its snapshots
-DE_ANY_NAME = "{law}/{run}"
-DE_SNAPSHOTS = de_run(DE_ANY_NAME)["snapshots"]
+# the snapshots of any delamination run (rule delaminate or delaminate_fracture_energy) by its name "{law}/{run}"
+# (law_and_run; the key of the views' kinds, JOBS.ANY_DELAMINATION)
+DE_SNAPSHOTS = de_run(JOBS.ANY_DELAMINATION)["snapshots"]
 
 
 def law_and_run(names):

@@ -52,22 +52,6 @@ animation = Kind("animation", ANY_DELAMINATION)
 # The numerical variants (target variants): one run per form of the hourglass control
 variant = Kind("variant", "hourglass_{form}", log_path="logs/variants/hourglass_{form}.log")
 
-register(
-    bilayer_pressure_diameter,
-    swelling_convergence_dx,
-    swelling_convergence_stresses,
-    procedure_start,
-    procedure_equilibrium,
-    procedure_explicit,
-    procedure_delaminate,
-    paraview_swelling,
-    paraview_delamination,
-    animation,
-    variant,
-)
-
-register(swell, pool_stresses)
-
 
 def _named(rule: str, key: str, name: str, **paths) -> Kind:
     """The kind of rule ``rule`` whose runs and files are named ``name`` (one computation run by two rules, or a
@@ -102,18 +86,5 @@ verify_crack_length = _named("verify_crack_length", "a{length}", "verify_crack")
 verify_circular_pool_model = _named("verify_circular_pool_model", "{model}", "verify_circular_pool")
 verify_annulus_model = _named("verify_annulus_model", "{model}", "verify_annulus")
 
-register(
-    delaminate,
-    delaminate_fracture_energy,
-    delamination_convergence_dx,
-    sensitivity_design,
-    sobol_design,
-    sensitivity_batch,
-    sensitivity_method,
-    sensitivity_tables,
-    delamination_map_point,
-    verify_pool_ratio,
-    verify_crack_length,
-    verify_circular_pool_model,
-    verify_annulus_model,
-)
+# every kind above, by its rule
+register(*(value for value in tuple(globals().values()) if isinstance(value, Kind)))
