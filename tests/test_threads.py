@@ -73,8 +73,9 @@ def test_every_workflow_script_enters_its_job_before_any_work():
     assert not missing, missing
 
 
-def test_a_job_uses_the_threads_its_rule_declares(tmp_path):
-    """:func:`sphgag.jobs.run` limits the job to its rule's threads before it yields."""
+def test_a_job_uses_the_threads_its_rule_declares(tmp_path, monkeypatch):
+    """:func:`sphgag.jobs.run` limits the job to its rule's threads before it yields (whatever the environment said)."""
+    monkeypatch.setenv("OMP_NUM_THREADS", "7")
     sm = SimpleNamespace(threads=1, rule="fig1", wildcards={}, log=[str(tmp_path / "fig1.log")])
     with jobs.run(sm, name="fig1"):
         assert os.environ["OMP_NUM_THREADS"] == "1"
