@@ -43,8 +43,10 @@ class Layout:
     ring_cell : (n_rings, 2) radial extent [r_lo, r_hi] of each ring's cells.
     interfaces : radii of the wall surfaces and layer interfaces, inner to outer.
     layer_names : name of each layer, inner to outer.
-    dx : requested particle spacing [um].
+    dx : requested particle spacing [um] (graded layouts: the coarsest).
     pool_layers : names of the layers whose particles GAG pools convert and damage delaminates (the paper's media).
+    spacing : (N,) the spacing each particle was laid out at [um] (``dx`` everywhere on a uniform layout); its kernel
+        support is a multiple of it.
     """
 
     X: np.ndarray
@@ -59,6 +61,7 @@ class Layout:
     layer_names: tuple
     dx: float
     pool_layers: tuple = ()
+    spacing: np.ndarray | None = None
     _ring_members: list = field(default_factory=list, repr=False, compare=False)
 
     @property
@@ -125,7 +128,15 @@ def _ring_radii(interfaces, dx):
     return np.array(radii), np.array(cells), np.array(layer_of_ring)
 
 
-def quarter_annulus(interfaces, dx, layer_names=("wall",), pool_layers=()) -> Layout:
+def _ring_cells(r, dx, lo, hi, at_least):
+    """Angular cells of the ring at radius ``r`` in the column ``lo < theta < hi`` (radians): ``round(arc / dx)``
+    equal cells (at least ``at_least``). Returns their centres and widths (radians)."""
+    n = max(int(round((hi - lo) * r / dx)), at_least)
+    w = (hi - lo) / n
+    return lo + (np.arange(n) + 0.5) * w, np.full(n, w)
+
+
+def quarter_annulus(interfaces, dx, layer_names=("wall",), pool_layers=(), columns=None) -> Layout:
     """Generate the particle layout of a (possibly layered) quarter annulus.
 
     Parameters
@@ -135,6 +146,9 @@ def quarter_annulus(interfaces, dx, layer_names=("wall",), pool_layers=()) -> La
     layer_names : one name per interval, inner to outer; repeating a name splits a layer
         into sub-layers (e.g. to align cell boundaries with the radial edges of a GAG pool).
     pool_layers : the names of the layers GAG pools may occupy (``Layout.pool_layers``).
+    columns : ``(edges, spacings)``: angular columns ``edges[k] < theta < edges[k + 1]`` (radians, from 0 to pi/2),
+        each laid out at its own spacing ``spacings[k]`` [um] (rings of that width, equal arc cells); the edges are
+        cell boundaries in every ring (e.g. the angular ends of GAG pools). Default: one column at ``dx``.
     """
     interfaces = tuple(float(r) for r in interfaces)
     if len(layer_names) != len(interfaces) - 1:
@@ -145,43 +159,54 @@ def quarter_annulus(interfaces, dx, layer_names=("wall",), pool_layers=()) -> La
         raise ValueError(f"interfaces must increase strictly, got {interfaces}")
     if dx <= 0:
         raise ValueError("dx must be positive")
-    radii, cells, layer_of_ring = _ring_radii(interfaces, dx)
-
-    X, vol, rad, th, ring, layer, members = [], [], [], [], [], [], []
-    start = 0
-    for k, (r, (lo, hi)) in enumerate(zip(radii, cells)):
-        n_theta = max(int(round(QUARTER * r / dx)), 2)
-        dth = QUARTER / n_theta
-        t = (np.arange(n_theta) + 0.5) * dth
-        X.append(np.column_stack([r * np.cos(t), r * np.sin(t)]))
-        vol.append(np.full(n_theta, 0.5 * (hi * hi - lo * lo) * dth))
-        rad.append(np.full(n_theta, r))
-        th.append(t)
-        ring.append(np.full(n_theta, k))
-        layer.append(np.full(n_theta, names.index(layer_names[layer_of_ring[k]])))
-        members.append(np.arange(start, start + n_theta))
-        start += n_theta
-
+    edges, spacings = ((0.0, QUARTER), (float(dx),)) if columns is None else columns
+    edges = np.asarray(edges, dtype=float)
+    if edges[0] != 0.0 or abs(edges[-1] - QUARTER) > 1e-12 or np.any(np.diff(edges) <= 0):
+        raise ValueError("column edges must rise strictly from 0 to pi/2")
+    at_least = 2 if len(spacings) == 1 else 1
+    X, vol, rad, th, ring_r, ring_lohi, layer, spacing = [], [], [], [], [], [], [], []
+    grids = {}
+    for lo, hi, s in zip(edges[:-1], edges[1:], spacings):
+        if s <= 0:
+            raise ValueError("column spacings must be positive")
+        if s not in grids:
+            grids[s] = _ring_radii(interfaces, s)
+        radii, cells, layer_of_ring = grids[s]
+        for r, (a, b), lr in zip(radii, cells, layer_of_ring):
+            t, dth = _ring_cells(r, s, lo, hi, at_least)
+            X.append(np.column_stack([r * np.cos(t), r * np.sin(t)]))
+            vol.append(0.5 * (b * b - a * a) * dth)
+            rad.append(np.full(t.size, r))
+            th.append(t)
+            ring_r.append(np.full(t.size, r))
+            ring_lohi.append(np.tile([a, b], (t.size, 1)))
+            layer.append(np.full(t.size, names.index(layer_names[lr])))
+            spacing.append(np.full(t.size, float(s)))
+    # rings: the distinct radii over all columns (the surfaces' rings are shared by every column)
+    ring_r = np.concatenate(ring_r)
+    ring_radius, first, ring = np.unique(ring_r, return_index=True, return_inverse=True)
+    ring_cell = np.concatenate(ring_lohi)[first]
     # number the particles by angle (then radius): neighbours get nearby indices, which keeps
     # the Jacobian banded for the sparse direct solver and the force loops cache friendly
     theta_all = np.concatenate(th)
-    order = np.lexsort((np.concatenate(ring), theta_all))
+    order = np.lexsort((ring, theta_all))
     rank = np.empty_like(order)
     rank[order] = np.arange(order.size)
-    members = [np.sort(rank[m]) for m in members]
+    members = [np.sort(rank[ring == k]) for k in range(ring_radius.size)]
     return Layout(
         X=np.ascontiguousarray(np.vstack(X)[order]),
         volume=np.concatenate(vol)[order],
         radius=np.concatenate(rad)[order],
         theta=theta_all[order],
-        ring=np.concatenate(ring).astype(np.int64)[order],
+        ring=ring.astype(np.int64)[order],
         layer=np.concatenate(layer).astype(np.int64)[order],
-        ring_radius=radii,
-        ring_cell=cells,
+        ring_radius=ring_radius,
+        ring_cell=ring_cell,
         interfaces=interfaces,
         layer_names=names,
         dx=float(dx),
         pool_layers=tuple(pool_layers),
+        spacing=np.concatenate(spacing)[order],
         _ring_members=members,
     )
 

@@ -45,44 +45,64 @@ def spiky_derivative(r, h):
 
 
 @njit(cache=True)
-def _count_neighbours(X, h, mirror_codes, counts):
+def _candidates(X, hp, mirror_codes, hmax, out_ptr, out_j, out_m, fill):
+    """Neighbour candidates of every particle within ``h_ij = (h_i + h_j)/2`` (``hp``: per-particle supports), over
+    the real particles and their mirror images (codes ``mirror_codes``), by a bucket grid of cell ``hmax``. With
+    ``fill`` false, counts them into ``out_ptr[i + 1]``; with ``fill``, writes ``(j, mirror code)`` from
+    ``out_ptr[i]`` in the order of increasing ``j``, then code (the order of an all-pairs search)."""
     n = X.shape[0]
-    h2 = h * h
+    x0, y0 = X[:, 0].min() - hmax, X[:, 1].min() - hmax
+    nx = int((X[:, 0].max() + hmax - x0) / hmax) + 1
+    ny = int((X[:, 1].max() + hmax - y0) / hmax) + 1
+    head = -np.ones(nx * ny, dtype=np.int64)
+    nxt = -np.ones(n, dtype=np.int64)
+    for j in range(n - 1, -1, -1):  # buckets list their particles by increasing index
+        b = int((X[j, 0] - x0) / hmax) * ny + int((X[j, 1] - y0) / hmax)
+        nxt[j] = head[b]
+        head[b] = j
+    found_j = np.empty(64, dtype=np.int64)
+    found_m = np.empty(64, dtype=np.int64)
     for i in range(n):
         c = 0
-        for j in range(n):
-            for m in mirror_codes:
-                sx, sy = MIRRORS[m, 0], MIRRORS[m, 1]
-                dx = sx * X[j, 0] - X[i, 0]
-                dy = sy * X[j, 1] - X[i, 1]
-                d2 = dx * dx + dy * dy
-                if d2 < h2 and d2 > 0.0:
-                    c += 1
-        counts[i] = c
+        for m in mirror_codes:
+            sx, sy = MIRRORS[m, 0], MIRRORS[m, 1]
+            # the ghosts of j near i are the real j near the mirror image of i
+            px, py = sx * X[i, 0], sy * X[i, 1]
+            bx, by = int((px - x0) // hmax), int((py - y0) // hmax)
+            for ix in range(bx - 1, bx + 2):
+                if ix < 0 or ix >= nx:
+                    continue
+                for iy in range(by - 1, by + 2):
+                    if iy < 0 or iy >= ny:
+                        continue
+                    j = head[ix * ny + iy]
+                    while j >= 0:
+                        dx = sx * X[j, 0] - X[i, 0]
+                        dy = sy * X[j, 1] - X[i, 1]
+                        d2 = dx * dx + dy * dy
+                        h = 0.5 * (hp[i] + hp[j])
+                        if d2 < h * h and d2 > 0.0:
+                            if c == found_j.shape[0]:
+                                found_j = np.concatenate((found_j, np.empty(c, dtype=np.int64)))
+                                found_m = np.concatenate((found_m, np.empty(c, dtype=np.int64)))
+                            found_j[c] = j
+                            found_m[c] = m
+                            c += 1
+                        j = nxt[j]
+        if not fill:
+            out_ptr[i + 1] = c
+            continue
+        order = np.argsort(found_j[:c] * 3 + found_m[:c])
+        e = out_ptr[i]
+        for k in range(c):
+            out_j[e + k] = found_j[order[k]]
+            out_m[e + k] = found_m[order[k]]
 
 
 @njit(cache=True)
-def _fill_neighbours(X, h, mirror_codes, ptr, nbr, mir):
-    n = X.shape[0]
-    h2 = h * h
-    for i in range(n):
-        e = ptr[i]
-        for j in range(n):
-            for m in mirror_codes:
-                sx, sy = MIRRORS[m, 0], MIRRORS[m, 1]
-                dx = sx * X[j, 0] - X[i, 0]
-                dy = sy * X[j, 1] - X[i, 1]
-                d2 = dx * dx + dy * dy
-                if d2 < h2 and d2 > 0.0:
-                    nbr[e] = j
-                    mir[e, 0] = sx
-                    mir[e, 1] = sy
-                    e += 1
-
-
-@njit(cache=True)
-def _corrected_gradients(X, V, h, ptr, nbr, mir, R, w, a, s, A_out):
-    """Per-entry reference separation R_ij, kernel value, and V_j A_i^-1 grad xi (eqs. 2.3, 2.7, 2.8)."""
+def _corrected_gradients(X, V, he, ptr, nbr, mir, R, w, a, s, A_out):
+    """Per-entry reference separation R_ij, kernel value, and V_j A_i^-1 grad xi (eqs. 2.3, 2.7, 2.8); ``he``: each
+    entry's support ``h_ij``."""
     n = X.shape[0]
     for i in range(n):
         for e in range(ptr[i], ptr[i + 1]):
@@ -91,22 +111,22 @@ def _corrected_gradients(X, V, h, ptr, nbr, mir, R, w, a, s, A_out):
             r1 = mir[e, 1] * X[j, 1] - X[i, 1]
             R[e, 0] = r0
             R[e, 1] = r1
-            w[e] = spiky(np.sqrt(r0 * r0 + r1 * r1), h)
-    _stencil_gradients(V, h, ptr, nbr, R, np.ones(nbr.shape[0]), a, s, A_out)
+            w[e] = spiky(np.sqrt(r0 * r0 + r1 * r1), he[e])
+    _stencil_gradients(V, he, ptr, nbr, R, np.ones(nbr.shape[0]), a, s, A_out)
 
 
 @njit(cache=True)
-def _stencil_gradients(V, h, ptr, nbr, R, beta, a, s, A_out):
+def _stencil_gradients(V, he, ptr, nbr, R, beta, a, s, A_out):
     """``a_ij = beta_ij V_j A_i^-1 grad xi_ij`` with ``A_i = sum_j beta_ij V_j grad xi_ij (x) R_ij`` (eqs. 2.7-2.8),
-    their sums ``s_i`` and ``A_i``; ``beta`` weights the stencil (1: the full stencil). A particle whose ``A_i`` is
-    singular gets zero gradients."""
+    their sums ``s_i`` and ``A_i``; ``he``: each entry's support ``h_ij``; ``beta`` weights the stencil (1: the full
+    stencil). A particle whose ``A_i`` is singular gets zero gradients."""
     n = ptr.shape[0] - 1
     for i in range(n):
         a00 = a01 = a10 = a11 = 0.0
         for e in range(ptr[i], ptr[i + 1]):
             r0, r1 = R[e, 0], R[e, 1]
             d = np.sqrt(r0 * r0 + r1 * r1)
-            g = spiky_derivative(d, h) / d
+            g = spiky_derivative(d, he[e]) / d
             wv = beta[e] * V[nbr[e]]
             # A_i = sum_j V_j grad xi (x) R_j  (eq. 2.8)
             a00 += wv * g * r0 * r0
@@ -125,7 +145,7 @@ def _stencil_gradients(V, h, ptr, nbr, R, beta, a, s, A_out):
         s0 = s1 = 0.0
         for e in range(ptr[i], ptr[i + 1]):
             d = np.sqrt(R[e, 0] ** 2 + R[e, 1] ** 2)
-            g = beta[e] * V[nbr[e]] * spiky_derivative(d, h) / d
+            g = beta[e] * V[nbr[e]] * spiky_derivative(d, he[e]) / d
             g0, g1 = g * R[e, 0], g * R[e, 1]
             a[e, 0] = i00 * g0 + i01 * g1
             a[e, 1] = i10 * g0 + i11 * g1
@@ -160,7 +180,7 @@ def hourglass_gradients(nb: Neighbours, V, tissue):
     if np.all(beta == 1.0):
         return beta, nb.a, nb.s
     ah, sh, A = np.empty_like(nb.a), np.empty_like(nb.s), np.empty_like(nb.A)
-    _stencil_gradients(V, nb.h, nb.ptr, nb.nbr, nb.R, beta, ah, sh, A)
+    _stencil_gradients(V, nb.he, nb.ptr, nb.nbr, nb.R, beta, ah, sh, A)
     # a (nearly) rank-deficient own-material stencil (an isolated GAG particle) keeps the full stencil
     det = A[:, 0, 0] * A[:, 1, 1] - A[:, 0, 1] * A[:, 1, 0]
     tr = A[:, 0, 0] + A[:, 1, 1]
@@ -183,7 +203,9 @@ class Neighbours:
     a : (E, 2) ``V_j A_i^-1 grad xi(R_j)``: volume-weighted corrected gradient (eq. 2.8).
     s : (N, 2) ``sum_j a_ij``.
     A : (N, 2, 2) correction matrices (eq. 2.8).
-    h : kernel support.
+    h : the largest kernel support (a uniform layout's support).
+    hp : (N,) kernel support of each particle; a pair's is ``h_ij = (h_i + h_j) / 2`` (graded spacing).
+    he : (E,) each entry's support ``h_ij``.
     ext : (E,) uint32 index of each entry's neighbour in the *extended* particle
         array (real particles ``0..N-1`` followed by the ghosts), used by the
         force kernel so that its inner loop needs no mirror logic.
@@ -205,6 +227,8 @@ class Neighbours:
     s: np.ndarray
     A: np.ndarray
     h: float
+    hp: np.ndarray
+    he: np.ndarray
     ext: np.ndarray
     ghost_owner: np.ndarray
     ghost_mirror: np.ndarray
@@ -223,37 +247,40 @@ class Neighbours:
 
 
 def build_neighbours(X, volume, h, mirrors=(1, 2)) -> Neighbours:
-    """Neighbour lists within support ``h`` in the reference configuration.
+    """Neighbour lists in the reference configuration: the pairs within ``h_ij = (h_i + h_j) / 2``.
 
-    ``mirrors`` lists the symmetry planes whose ghosts join the stencils
-    (1: y = 0, 2: x = 0); pass ``()`` for a free body.
+    ``h``: the kernel support, one value or one per particle (graded spacing). ``mirrors`` lists the symmetry planes
+    whose ghosts join the stencils (1: y = 0, 2: x = 0); pass ``()`` for a free body.
     """
     X = np.ascontiguousarray(X, dtype=float)
     V = np.ascontiguousarray(volume, dtype=float)
     codes = np.array((0,) + tuple(mirrors), dtype=np.int64)
     n = X.shape[0]
-    counts = np.zeros(n, dtype=np.int64)
-    _count_neighbours(X, float(h), codes, counts)
+    hp = np.ascontiguousarray(np.broadcast_to(np.asarray(h, dtype=float), (n,)))
     ptr = np.zeros(n + 1, dtype=np.int64)
-    np.cumsum(counts, out=ptr[1:])
+    _candidates(X, hp, codes, float(hp.max()), ptr, np.empty(0, np.int64), np.empty(0, np.int64), False)
+    np.cumsum(ptr[1:], out=ptr[1:])
     E = int(ptr[-1])
     nbr = np.empty(E, dtype=np.int64)
-    mir = np.empty((E, 2))
-    _fill_neighbours(X, float(h), codes, ptr, nbr, mir)
+    code = np.empty(E, dtype=np.int64)
+    _candidates(X, hp, codes, float(hp.max()), ptr, nbr, code, True)
+    mir = MIRRORS[code]
+    counts = np.diff(ptr)
+    owner = np.repeat(np.arange(n), counts)
+    he = 0.5 * (hp[owner] + hp[nbr])
     R = np.empty((E, 2))
     w = np.empty(E)
     a = np.empty((E, 2))
     s = np.empty((n, 2))
     A = np.empty((n, 2, 2))
-    _corrected_gradients(X, V, float(h), ptr, nbr, mir, R, w, a, s, A)
+    _corrected_gradients(X, V, he, ptr, nbr, mir, R, w, a, s, A)
     cond = np.linalg.cond(A)
     if not np.all(np.isfinite(cond)) or cond.max() > 1e8:
         raise ValueError(
             f"singular SPH correction matrix (max condition number {cond.max():.3g}); "
-            f"increase the kernel support h = {h}"
+            f"increase the kernel support h = {hp.min():g}-{hp.max():g}"
         )
     # ghosts: one per distinct (particle, mirror) pair among the mirrored entries
-    code = np.where(mir[:, 0] < 0, 2, np.where(mir[:, 1] < 0, 1, 0))
     ghost_key = np.unique(nbr[code > 0] * 3 + code[code > 0])
     ghost_owner = ghost_key // 3
     ghost_mirror = MIRRORS[ghost_key % 3]
@@ -261,7 +288,6 @@ def build_neighbours(X, volume, h, mirrors=(1, 2)) -> Neighbours:
     ghost = code > 0
     ext[ghost] = n + np.searchsorted(ghost_key, nbr[ghost] * 3 + code[ghost])
     # half list of real pairs, and the ghost ("solo") entries
-    owner = np.repeat(np.arange(n), counts)
     upper = ~ghost & (owner < nbr)
     lower = ~ghost & (owner > nbr)
     pair_entry = np.flatnonzero(upper)  # sorted by owner, then j
@@ -280,7 +306,9 @@ def build_neighbours(X, volume, h, mirrors=(1, 2)) -> Neighbours:
         a=a,
         s=s,
         A=A,
-        h=float(h),
+        h=float(hp.max()),
+        hp=hp,
+        he=he,
         ext=ext.astype(np.uint32),
         ghost_owner=ghost_owner.astype(np.int64),
         ghost_mirror=np.ascontiguousarray(ghost_mirror),
@@ -299,5 +327,5 @@ def _offsets(sorted_owner, n):
 
 
 def for_layout(layout: Layout, support_factor: float) -> Neighbours:
-    """Neighbours of a quarter-annulus layout with ``h = support_factor * dx`` and both mirror planes."""
-    return build_neighbours(layout.X, layout.volume, support_factor * layout.dx, mirrors=(1, 2))
+    """Neighbours of a quarter-annulus layout with ``h_i = support_factor * spacing_i`` and both mirror planes."""
+    return build_neighbours(layout.X, layout.volume, support_factor * layout.spacing, mirrors=(1, 2))
