@@ -22,6 +22,7 @@ import jsonschema
 import yaml
 
 from .engine import hourglass
+from .engine.grading import Grading
 from .engine.numerics import Numerics
 from .options import key_text
 from .physics import donnan
@@ -261,6 +262,7 @@ def _variants(config: dict) -> list[str]:
 #: the rest of the configuration (:meth:`sphgag.options.Options.problems`)
 SECTIONS = (
     Numerics,
+    Grading,
     Mean,
     Calibration,
     Bilayer,

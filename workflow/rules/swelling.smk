@@ -28,6 +28,7 @@ rule swell:
         pool=lambda wildcards: SW["cases"][wildcards.case],
         settings=swell_settings,
         gag=lambda wildcards: GAG[wildcards.law],
+        grading=config["grading"],
     script:
         "../scripts/swell.py"
 
@@ -51,6 +52,7 @@ rule pool_stresses:
         pool=lambda wildcards: SW["cases"][wildcards.case],
         settings=swell_settings,
         gag=lambda wildcards: GAG[wildcards.law],
+        grading=config["grading"],
         probe_length=SW["probe_length_um"],
     script:
         "../scripts/pool_stresses.py"
@@ -86,6 +88,7 @@ SC_SIMULATION = dict(
     homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
     settings=swell_settings,
     cases={c: SW["cases"][c] for c in SC["cases"]},
+    grading=config["grading"],
     pressure=SC["pressure_mmHg"],
     calibration={k: config["bilayer_calibration"][k] for k in ("activation_pressure_mmHg", "activation_steps")},
     volume_ratios=SC["volume_ratios"],

@@ -9,12 +9,13 @@ from sphgag.studies import artery, protocols
 with jobs.run(snakemake) as job:  # noqa: F821
     p, cfg = job.params, job.params.state_slice
     pool = artery.pool_sector(p.pool)
-    model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=job.name, pool=pool, gag=p.gag)
+    model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], job.name, pool, p.gag, p.grading)
     saved = state.load(job.input.state, job.params.state_slice)
+    start = solver.State(saved.load, artery.carried(cfg["bilayer"], saved.x, model.layout), None, None)
     # every converged state up to the end of the path (each records how the path ended: protocols.PoolState)
-    states = protocols.swell_pool(model, solver.State(saved.load, saved.x, None, None), cfg["numerics"], p.settings)
+    states = protocols.swell_pool(model, start, cfg["numerics"], p.settings)
     end = states[-1].path_end + (f" ({states[-1].end_reason})" if states[-1].end_reason else "")
-    params = dict(state=cfg, pool=p.pool, settings=p.settings, gag=p.gag)
+    params = dict(state=cfg, pool=p.pool, settings=p.settings, gag=p.gag, grading=p.grading)
     state.save_series(job.output.states, [(s.x, s.load, s.info(), None) for s in states], params)
     max_residual = max(s.residual for s in states)
     job.log.info(

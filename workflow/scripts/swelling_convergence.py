@@ -9,7 +9,7 @@ with jobs.run(snakemake) as job:  # noqa: F821
     # each case's converged states up to the end of its path (each records how the path ended)
     states = convergence.swell_cases(
         job.w.dx, p.bilayer, p.numerics, p.homeostasis, p.settings, p.gag, p.cases, p.pressure, p.calibration,
-        p.active, name=job.name, volume_ratios=p.volume_ratios,
+        p.active, job.name, p.volume_ratios, p.grading,
     )  # fmt: skip
     state.save_series(job.output.states, convergence.series(states, job.name), dict(p))
     max_residual = max(s.residual for ss in states.values() for s in ss)

@@ -64,6 +64,10 @@ class Layout:
     spacing: np.ndarray | None = None
     _ring_members: list = field(default_factory=list, repr=False, compare=False)
 
+    def __post_init__(self):
+        if self.spacing is None:
+            object.__setattr__(self, "spacing", np.full(self.X.shape[0], self.dx))
+
     @property
     def n(self) -> int:
         return self.X.shape[0]
@@ -101,22 +105,50 @@ class Layout:
 
 
 def _ring_radii(interfaces, dx):
-    """Ring radii and cell bounds such that surfaces carry rings and interfaces are cell bounds.
+    """Ring radii, cell bounds, layer and radial width of every ring, such that surfaces carry rings and interfaces are
+    cell bounds; ``dx`` is the spacing, a number or a function of the radius (a graded column,
+    :mod:`sphgag.engine.grading`).
 
     With ``L`` layers and ``n_l`` rings in layer ``l`` (radial widths ``d_l``):
     a single layer spans ``(n - 1) d`` (half cells at both surfaces); with several
     layers the first spans ``(n_1 - 1/2) d_1``, inner ones ``n_l d_l`` and the last
-    ``(n_L - 1/2) d_L``.
+    ``(n_L - 1/2) d_L``. A graded spacing places the rings at equal steps of ``int dr / dx(r)`` (scaled to the same
+    count of cells), so their widths follow ``dx(r)``.
     """
     interfaces = np.asarray(interfaces, dtype=float)
     n_layers = len(interfaces) - 1
-    radii, cells, layer_of_ring = [], [], []
+    radii, cells, layer_of_ring, widths = [], [], [], []
     for l in range(n_layers):
         a, b = interfaces[l], interfaces[l + 1]
         first, last = l == 0, l == n_layers - 1
         half_cells = int(first) + int(last)  # surfaces own half cells
-        n = max(int(round((b - a) / dx + 0.5 * half_cells)), 1 + int(first and last))
-        d = (b - a) / (n - 0.5 * half_cells)
+        if callable(dx):  # u(r): cells from a, scaled to end at the layer's count
+            r_s = np.linspace(a, b, 2001)
+            rho = 1.0 / dx(r_s)
+            u_s = np.concatenate([[0.0], np.cumsum(0.5 * (rho[1:] + rho[:-1]) * np.diff(r_s))])
+            cells_in = u_s[-1]
+        else:
+            cells_in = (b - a) / dx
+        n = max(int(round(cells_in + 0.5 * half_cells)), 1 + int(first and last))
+        top = n - 0.5 * half_cells
+        if callable(dx):
+            u_s *= top / u_s[-1]
+            at = np.arange(n) + (0.0 if first else 0.5)
+            r_k = np.interp(at, u_s, r_s)
+            lo_k = np.interp(np.maximum(at - 0.5, 0.0), u_s, r_s)
+            hi_k = np.interp(np.minimum(at + 0.5, top), u_s, r_s)
+            full = hi_k - lo_k
+            if first:  # a surface's half cell: twice its width
+                full[0] *= 2.0
+            if last:
+                full[-1] *= 2.0
+            for r, lo, hi, w in zip(r_k, lo_k, hi_k, full):
+                radii.append(r)
+                cells.append((lo, hi))
+                layer_of_ring.append(l)
+                widths.append(w)
+            continue
+        d = (b - a) / top
         start = a if first else a + 0.5 * d
         for k in range(n):
             r = start + k * d
@@ -125,7 +157,8 @@ def _ring_radii(interfaces, dx):
             radii.append(r)
             cells.append((lo, hi))
             layer_of_ring.append(l)
-    return np.array(radii), np.array(cells), np.array(layer_of_ring)
+            widths.append(d)
+    return np.array(radii), np.array(cells), np.array(layer_of_ring), np.array(widths)
 
 
 def _ring_cells(r, dx, lo, hi, at_least):
@@ -147,8 +180,9 @@ def quarter_annulus(interfaces, dx, layer_names=("wall",), pool_layers=(), colum
         into sub-layers (e.g. to align cell boundaries with the radial edges of a GAG pool).
     pool_layers : the names of the layers GAG pools may occupy (``Layout.pool_layers``).
     columns : ``(edges, spacings)``: angular columns ``edges[k] < theta < edges[k + 1]`` (radians, from 0 to pi/2),
-        each laid out at its own spacing ``spacings[k]`` [um] (rings of that width, equal arc cells); the edges are
-        cell boundaries in every ring (e.g. the angular ends of GAG pools). Default: one column at ``dx``.
+        each laid out at its own spacing ``spacings[k]`` [um], a number or a function of the radius (rings of that
+        width, each cut into equal arc cells of about its width: :mod:`sphgag.engine.grading`); the edges are cell
+        boundaries in every ring (e.g. the angular ends of GAG pools). Default: one column at ``dx``.
     """
     interfaces = tuple(float(r) for r in interfaces)
     if len(layer_names) != len(interfaces) - 1:
@@ -167,13 +201,16 @@ def quarter_annulus(interfaces, dx, layer_names=("wall",), pool_layers=(), colum
     X, vol, rad, th, ring_r, ring_lohi, layer, spacing = [], [], [], [], [], [], [], []
     grids = {}
     for lo, hi, s in zip(edges[:-1], edges[1:], spacings):
-        if s <= 0:
-            raise ValueError("column spacings must be positive")
-        if s not in grids:
-            grids[s] = _ring_radii(interfaces, s)
-        radii, cells, layer_of_ring = grids[s]
-        for r, (a, b), lr in zip(radii, cells, layer_of_ring):
-            t, dth = _ring_cells(r, s, lo, hi, at_least)
+        if callable(s):
+            grid = _ring_radii(interfaces, s)
+        else:
+            if s <= 0:
+                raise ValueError("column spacings must be positive")
+            grid = grids[s] = grids[s] if s in grids else _ring_radii(interfaces, s)
+        radii, cells, layer_of_ring, widths = grid
+        for r, (a, b), lr, w in zip(radii, cells, layer_of_ring, widths):
+            w = w if callable(s) else s  # a uniform column's particles are laid out at its spacing
+            t, dth = _ring_cells(r, w, lo, hi, at_least)
             X.append(np.column_stack([r * np.cos(t), r * np.sin(t)]))
             vol.append(0.5 * (b * b - a * a) * dth)
             rad.append(np.full(t.size, r))
@@ -181,7 +218,7 @@ def quarter_annulus(interfaces, dx, layer_names=("wall",), pool_layers=(), colum
             ring_r.append(np.full(t.size, r))
             ring_lohi.append(np.tile([a, b], (t.size, 1)))
             layer.append(np.full(t.size, names.index(layer_names[lr])))
-            spacing.append(np.full(t.size, float(s)))
+            spacing.append(np.full(t.size, float(w)))
     # rings: the distinct radii over all columns (the surfaces' rings are shared by every column)
     ring_r = np.concatenate(ring_r)
     ring_radius, first, ring = np.unique(ring_r, return_index=True, return_inverse=True)
@@ -249,3 +286,14 @@ class Sector:
         if layer is not None:
             mask &= layout.layer_mask(layer)
         return np.flatnonzero(mask)
+
+
+def axisymmetric_positions(source: Layout, x: np.ndarray, target: Layout) -> np.ndarray:
+    """Positions of ``target``'s particles in the axisymmetric state ``x`` of ``source`` (the same wall laid out
+    differently, e.g. graded around a pool: :mod:`sphgag.engine.grading`): each particle keeps its angle and takes the
+    current radius ``r(R)`` of its reference radius, interpolated between ``source``'s ring means. A guess for the
+    equilibrium on ``target``, which its solver then converges."""
+    radius = np.hypot(x[:, 0], x[:, 1])
+    current = np.array([radius[source.ring_members(k)].mean() for k in range(len(source.ring_radius))])
+    r = np.interp(target.radius, source.ring_radius, current)
+    return np.column_stack([r * np.cos(target.theta), r * np.sin(target.theta)])

@@ -10,8 +10,8 @@ volume grows with refinement (docs/physics.md, "What fails near the artery's poo
 Here, as finite-element codes model fluid-filled cavities, the pool is a hole in the tissue whose boundary carries
 the Donnan pressure as a follower load:
 
-* the **lining** is the closed polygon through the tissue particles within 1.5 dx (reference) of the pool's
-  particles, ordered by angle about the pool's centroid (star-shaped pools: sectors, ellipses); a pool centred on
+* the **lining** is the closed polygon through the tissue particles within 1.5 of their spacing (reference) of the
+  pool's particles, ordered by angle about the pool's centroid (star-shaped pools: sectors, ellipses); a pool centred on
   the corner of a quarter layout's mirror planes (the verification's circle and ellipse) is closed as the lumen is,
   on the mirror planes (:func:`sphgag.engine.loading.lumen_area_gradient`);
 * the pressure does the work ``Pi lz A`` of the polygon's area ``A`` (``lz``: plane strain per reference length, as
@@ -43,7 +43,7 @@ from scipy.spatial import cKDTree
 
 from .loading import add_pressure_stiffness, lumen_area_gradient, pressure_stiffness_blocks
 
-CONTACT = 1.5  # lining: tissue particles within this many dx of a pool particle (reference)
+CONTACT = 1.5  # lining: tissue particles within this many of their spacings of a pool particle (reference)
 
 
 @dataclass(frozen=True)
@@ -69,8 +69,8 @@ class Cavity:
             raise ValueError("a cavity needs at least one pool particle")
         tissue = np.ones(layout.n, dtype=bool)
         tissue[members] = False
-        dist = cKDTree(X[members]).query(X, distance_upper_bound=CONTACT * layout.dx)[0]
-        lining = np.flatnonzero(np.isfinite(dist) & tissue)
+        dist = cKDTree(X[members]).query(X)[0]
+        lining = np.flatnonzero((dist <= CONTACT * layout.spacing) & tissue)
         centre = np.zeros(2) if mirrored else X[members].mean(axis=0)
         loop = lining[np.argsort(np.arctan2(X[lining, 1] - centre[1], X[lining, 0] - centre[0]))]
         cav = cls(members, loop, float(layout.volume[members].sum()), 0.0, x[members].copy(), mirrored)

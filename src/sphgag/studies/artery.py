@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..engine import geometry, history, kernel
+from ..engine import geometry, grading, history, kernel
 from ..engine.loading import Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
@@ -486,16 +486,21 @@ def pool_sector(case: dict) -> geometry.Sector:
     )
 
 
-def bilayer_layout(p: Bilayer | dict) -> geometry.Layout:
+def bilayer_layout(p: Bilayer | dict, pools=(), graded: grading.Grading | dict | None = None) -> geometry.Layout:
     """Particles of the layered wall: one band per entry of ``layers``, each split at the ``aligned_radii_um`` inside
-    it (cell boundaries: the radial edges of GAG pools)."""
+    it (cell boundaries: the radial edges of GAG pools). With ``pools`` (:class:`geometry.Sector`), their angular ends
+    are cell boundaries too, and with ``graded`` (:class:`sphgag.engine.grading.Grading`) the spacing is graded
+    around them (finest at their corners)."""
     p = Bilayer.of(p)
     radii, names = [p.inner_radius_um], []
     for name, a, b in p.bands():
         inside = sorted(r for r in p.aligned_radii_um if a < r < b)
         radii += [*inside, b]
         names += [name] * (len(inside) + 1)
-    return geometry.quarter_annulus(radii, p.dx_um, layer_names=names, pool_layers=p.pool_layers)
+    columns = None
+    if pools:
+        columns = grading.columns(grading.Field(tuple(pools), p.dx_um, grading.Grading.of(graded or {})))
+    return geometry.quarter_annulus(radii, p.dx_um, layer_names=names, pool_layers=p.pool_layers, columns=columns)
 
 
 def bilayer_model(
@@ -504,6 +509,7 @@ def bilayer_model(
     name: str = "bilayer",
     pool=None,
     gag: materials.Gag | dict | None = None,
+    graded: grading.Grading | dict | None = None,
 ) -> Model:
     """Bi-layered model (section 2.4.2, Table 2) in its in vivo reference configuration.
 
@@ -514,14 +520,16 @@ def bilayer_model(
     With ``pool`` (a :class:`geometry.Sector`, or a list of them) and the ``gag``
     parameters, the material is a :class:`history.HistoryMaterial` on the path from
     the intact wall to the wall with those medial sectors seeded as GAG pools: the
-    load's ``transition`` converts them and its ``concentration`` swells them.
+    load's ``transition`` converts them and its ``concentration`` swells them. The pools' angular ends are cell
+    boundaries of the layout, graded around them by ``graded`` (:mod:`sphgag.engine.grading`; uniform without).
     """
     numerics = Numerics.of(numerics)
-    layout = bilayer_layout(p)
+    pools = [] if pool is None else [pool] if isinstance(pool, geometry.Sector) else list(pool)
+    layout = bilayer_layout(p, pools, graded)
     nb = kernel.for_layout(layout, numerics.kernel_support_factor)
     material = BilayerMaterial(p, layout)
-    if pool is not None:
-        material = seeding(material, layout, [pool] if isinstance(pool, geometry.Sector) else list(pool), gag)
+    if pools:
+        material = seeding(material, layout, pools, gag)
     return Model(name, layout, nb, material, **numerics.hourglass_control())
 
 
@@ -538,3 +546,14 @@ def seeding(base, layout: geometry.Layout, sectors, gag: dict) -> history.Histor
             )
     intact = history.ParticleHistory.intact(layout.n)
     return history.HistoryMaterial(base, intact, gag, after=intact.seed(members))
+
+
+def carried(p: Bilayer | dict, x: np.ndarray, layout: geometry.Layout) -> np.ndarray:
+    """The positions ``x`` of the wall ``p``'s own (uniform) layout, a state without pools, on ``layout`` (the same wall
+    with its pools' ends as cell boundaries, graded around them): unchanged where the layouts are one, else the
+    axisymmetric map of :func:`sphgag.engine.geometry.axisymmetric_positions`, a guess the first solve on ``layout``
+    converges."""
+    source = bilayer_layout(p)
+    if source.n == layout.n and np.array_equal(source.X, layout.X):
+        return x
+    return geometry.axisymmetric_positions(source, x, layout)

@@ -17,6 +17,7 @@ import logging
 
 import pandas as pd
 
+from ..engine import solver
 from ..engine.numerics import Numerics
 from . import artery, gci, protocols, volume_states
 
@@ -49,17 +50,22 @@ def swell_cases(
     active: bool = False,
     name: str = "convergence",
     volume_ratios=(),
+    graded: dict | None = None,
 ) -> dict[str, list[protocols.PoolState]]:
     """The converged states of every study pool at particle spacing ``dx`` [um]: the passive or ``active`` wall at
     this spacing at ``pressure_mmHg`` by the path of the pressure-diameter sweep (:func:`sphgag.studies.protocols.
     wall_at`; ``calibration``: the ``bilayer_calibration`` section, its activation pressure and steps), then each
     pool converted and swollen (:func:`sphgag.studies.protocols.swell_pool`), followed by the states at which it
-    holds each of ``volume_ratios`` (:func:`sphgag.studies.volume_states.at_volume_ratios`, stage ``at volume``)."""
+    holds each of ``volume_ratios`` (:func:`sphgag.studies.volume_states.at_volume_ratios`, stage ``at volume``).
+    Each pool's wall is laid out around it (its ends cell boundaries, graded by ``graded``), the pressurised wall's
+    state carried onto it (:func:`sphgag.studies.artery.carried`)."""
     start = pressurised_wall(dx, bilayer, numerics, homeostasis, calibration, active, pressure_mmHg, name)
+    wall = dict(bilayer, dx_um=float(dx))
     out = {}
     for case, entry in cases.items():
-        model = case_model(dx, bilayer, numerics, gag, entry, f"{name}_{case}")
-        path = protocols.swell_pool(model, start, numerics, swelling)
+        model = case_model(dx, bilayer, numerics, gag, entry, f"{name}_{case}", graded)
+        carried = solver.State(start.load, artery.carried(wall, start.x, model.layout), None, None)
+        path = protocols.swell_pool(model, carried, numerics, swelling)
         out[case] = path + list(volume_states.at_volume_ratios(model, path, volume_ratios, numerics).values())
     return out
 
@@ -99,11 +105,10 @@ def pressurised_wall(
     return protocols.wall_at(wall, h.state, numerics, calibration, active, pressure_mmHg, path_solver)
 
 
-def case_model(dx: float, bilayer: dict, numerics: dict, gag: dict, entry: dict, name: str):
-    """The bi-layered wall at spacing ``dx`` with the pool ``entry`` (a ``swelling.cases`` entry) seeded."""
-    return artery.bilayer_model(
-        dict(bilayer, dx_um=float(dx)), numerics, name=name, pool=artery.pool_sector(entry), gag=gag
-    )
+def case_model(dx: float, bilayer: dict, numerics: dict, gag: dict, entry: dict, name: str, graded=None):
+    """The bi-layered wall at spacing ``dx`` with the pool ``entry`` (a ``swelling.cases`` entry) seeded, laid out
+    around it (graded by ``graded``, :mod:`sphgag.engine.grading`)."""
+    return artery.bilayer_model(dict(bilayer, dx_um=float(dx)), numerics, name, artery.pool_sector(entry), gag, graded)
 
 
 def measure(
@@ -116,13 +121,14 @@ def measure(
     probe_length: float,
     wall: str = "passive",
     name: str = "convergence",
+    graded: dict | None = None,
 ) -> pd.DataFrame:
     """Rows of ``results/swelling/convergence.csv`` for one particle spacing and ``wall`` (column ``model``:
     passive or active): the pool stresses (:func:`sphgag.studies.protocols.pool_table`) of the states of
     :func:`swell_cases`, the intact wall, the converted pools on their path and the pools at their volume ratios."""
     tables = []
     for case, entry in cases.items():
-        model = case_model(dx, bilayer, numerics, gag, entry, f"{name}_{case}")
+        model = case_model(dx, bilayer, numerics, gag, entry, f"{name}_{case}", graded)
         table = protocols.pool_table(model, states[case], artery.pool_sector(entry), probe_length, gag)
         kept = table[table.stage.isin(["intact", "converted", volume_states.STAGE])]
         tables.append(kept.assign(dx_um=float(dx), particles=model.n, model=wall, case=case))
@@ -131,13 +137,22 @@ def measure(
 
 
 def measure_saved(
-    saved, dx: float, bilayer: dict, numerics: dict, gag: dict, cases: dict, probe_length: float, wall: str, name: str
+    saved,
+    dx: float,
+    bilayer: dict,
+    numerics: dict,
+    gag: dict,
+    cases: dict,
+    probe_length: float,
+    wall: str,
+    name: str,
+    graded: dict | None = None,
 ) -> pd.DataFrame:
     """The rows of one run of the study (rule ``swelling_convergence_stresses``) from its saved states ``saved`` (the
     series of :func:`series`): :func:`measure`, first the run's charge law and pool model; each case's last state
     logged."""
     states = {case: [protocols.PoolState.from_saved(s) for s in saved if s.info["case"] == case] for case in cases}
-    table = measure(dx, bilayer, numerics, gag, cases, states, probe_length, wall, name=name)
+    table = measure(dx, bilayer, numerics, gag, cases, states, probe_length, wall, name, graded)
     table.insert(0, "charge_law", gag["charge_law"])
     table.insert(1, "pool_model", table.pop("pool_model"))
     for case, g in table.groupby("case", sort=False):

@@ -100,6 +100,11 @@ class SlitLayout:
         return self.X.shape[0]
 
     @property
+    def spacing(self) -> np.ndarray:
+        """Every particle's spacing: ``dx`` (square cells, as :attr:`sphgag.engine.geometry.Layout.spacing`)."""
+        return np.full(self.n, self.dx)
+
+    @property
     def inner_surface(self) -> np.ndarray:  # no lumen
         return np.empty(0, dtype=np.int64)
 

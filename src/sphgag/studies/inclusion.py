@@ -90,6 +90,11 @@ class EllipseLayout:
     def n(self) -> int:
         return self.X.shape[0]
 
+    @property
+    def spacing(self) -> np.ndarray:
+        """Every particle's spacing: ``dx`` (a uniform layout, as :attr:`sphgag.engine.geometry.Layout.spacing`)."""
+        return np.full(self.n, self.dx)
+
     def ring_members(self, k: int) -> np.ndarray:
         """Particles of ring ``k`` ordered by ``t`` (from the major axis)."""
         return self._members[k]

@@ -35,7 +35,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from ..engine import geometry, kernel, measure, solver
+from ..engine import geometry, grading, kernel, measure, pool_cavity, solver
 from ..engine.model import Model
 from ..engine.numerics import Numerics
 from ..options import Options
@@ -228,10 +228,13 @@ def circle_study(
     return pd.DataFrame(rows)
 
 
-def sector_model(walls, pool: geometry.Sector, dx: float, mat: inclusion.Materials, numerics: Numerics, pool_model):
+def sector_model(
+    walls, pool: geometry.Sector, dx: float, mat: inclusion.Materials, numerics: Numerics, pool_model, graded=None
+):
     """The paper's sector pool (figure 4) in a quarter annulus of the matrix law alone: ``walls`` = (inner radius,
-    media/adventitia border, outer radius) [um], the pool's radial edges cell boundaries, mirror planes at 0 and 90
-    deg, inner and outer surfaces free; ``pool_model`` as :func:`circle_model`."""
+    media/adventitia border, outer radius) [um], the pool's edges cell boundaries (the layout graded around it by
+    ``graded``, :mod:`sphgag.engine.grading`), mirror planes at 0 and 90 deg, inner and outer surfaces free;
+    ``pool_model`` as :func:`circle_model`."""
     r_in, r_media, r_out = (float(r) for r in walls)
     edges = (pool.centre_radius - 0.5 * pool.radial_extent, pool.centre_radius + 0.5 * pool.radial_extent)
     lay = geometry.quarter_annulus(
@@ -239,6 +242,7 @@ def sector_model(walls, pool: geometry.Sector, dx: float, mat: inclusion.Materia
         dx,
         layer_names=("media", "media", "media", "adventitia"),
         pool_layers=("media",),
+        columns=grading.columns(grading.Field((pool,), dx, grading.Grading.of(graded or {}))),
     )
     members = pool.members(lay, layer=lay.pool_layers)
     numerics = Numerics.of(numerics)
@@ -248,18 +252,22 @@ def sector_model(walls, pool: geometry.Sector, dx: float, mat: inclusion.Materia
     return protocols.POOL_MODELS.lookup(pool_model).around(model, members), members
 
 
-def sector_study(vs: dict, matrix: dict, gag: dict, numerics: Numerics, pool_model: str, log=None) -> pd.DataFrame:
+def sector_study(
+    vs: dict, matrix: dict, gag: dict, numerics: Numerics, pool_model: str, log=None, graded=None
+) -> pd.DataFrame:
     """The sector pool in the matrix at every spacing of ``vs['dx_um']`` and pressure of ``vs['pressures_kPa']``
-    (``vs``: ``walls_um``, ``pool`` (a figure-4 case), ``probe_length_um``, ``steps``): figure 4's measures
-    (:func:`sphgag.studies.protocols.pool_measurements`) and the pool's volume ratio, to compare with
-    :func:`sphgag.studies.fe_swelling.sector_pool` on the same geometry and laws."""
+    (``vs``: ``walls_um``, ``pool`` (a figure-4 case), ``probe_length_um``, ``steps``), the layout graded by
+    ``graded``: figure 4's measures (:func:`sphgag.studies.protocols.pool_measurements`), the pool's volume ratio and
+    the area its lining encloses (``lining_volume_ratio``, :class:`sphgag.engine.pool_cavity.Cavity`), to compare
+    with :func:`sphgag.studies.fe_swelling.sector_pool` on the same geometry and laws."""
     numerics = Numerics.of(numerics)
     mat = inclusion.Materials.of(matrix, gag, bulk=True)
     pool = artery.pool_sector(vs["pool"])
     pressures = sorted(float(p) for p in vs["pressures_kPa"])
     rows = []
     for dx in vs["dx_um"]:
-        model, members = sector_model(vs["walls_um"], pool, float(dx), mat, numerics, pool_model)
+        model, members = sector_model(vs["walls_um"], pool, float(dx), mat, numerics, pool_model, graded)
+        lining = pool_cavity.Cavity.around(model.layout, members, model.layout.X)
         at, end = swell_from_rest(model, pressures, vs["steps"], numerics)
         if end != "complete" and log is not None:
             log.warning("[%s] the path ends before the last pressure: %s", model.name, end)
@@ -267,7 +275,11 @@ def sector_study(vs: dict, matrix: dict, gag: dict, numerics: Numerics, pool_mod
             ev = at[p].evaluation
             row = dict(pool_model=pool_model, dx_um=float(dx), pressure_kPa=p, particles=model.n)
             row.update(protocols.pool_measurements(model, ev, pool, members, float(vs["probe_length_um"])))
-            row.update(pool_volume_ratio=volume_ratio_of(model, ev, members), residual=at[p].convergence.residual)
+            row.update(
+                pool_volume_ratio=volume_ratio_of(model, ev, members),
+                lining_volume_ratio=lining.volume_ratio(ev.x),
+                residual=at[p].convergence.residual,
+            )
             rows.append(row)
             if log is not None:
                 log.info(

@@ -124,7 +124,8 @@ def saved_series(path) -> list[Frame]:
     p = state_io.load_from_series(path, 0).params
     if {"state", "pool", "gag"} <= set(p):  # rule swell: the wall with its pool
         cfg = p["state"]
-        wall = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], pool=artery.pool_sector(p["pool"]), gag=p["gag"])
+        pool = artery.pool_sector(p["pool"])
+        wall = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], pool=pool, gag=p["gag"], graded=p["grading"])
         return swelling_frames(wall, path)
     if {"bilayer", "numerics", "delamination", "gag"} <= set(p):
         return delamination_frames(artery.bilayer_model(p["bilayer"], p["numerics"]), path, p["gag"])
