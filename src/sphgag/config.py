@@ -24,7 +24,7 @@ import yaml
 from .engine import hourglass
 from .engine.numerics import Numerics
 from .options import key_text
-from .physics import donnan
+from .physics import donnan, volumetric
 from .physics.materials import GagSection
 from .studies import annulus, artery, candidates, onset, protocols
 from .studies.artery import Bilayer, Mean
@@ -185,6 +185,7 @@ def _registries() -> dict:
     return {
         ("numerics", "hourglass"): hourglass.FORMS,
         ("gag", "charge_laws"): donnan.LAWS,
+        ("gag", "volumetric"): volumetric.FORMS,
         ("swelling", "pool_models"): protocols.POOL_MODELS,
         ("swelling", "variant_pool_models"): protocols.POOL_MODELS,
         ("delamination", "criteria"): onset.CRITERIA,

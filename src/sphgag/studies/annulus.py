@@ -100,8 +100,16 @@ def materials(pool_model: str, matrix: dict, gag: dict) -> inclusion.Materials:
 
 
 def limit(A: float, B: float, mat: inclusion.Materials) -> cavity.LimitPressure:
-    """The largest pressure the exact solution of these laws holds (:func:`sphgag.physics.cavity.limit_pressure`)."""
-    return cavity.limit_pressure(A, B, *swollen_pool.solids(mat))
+    """The largest pressure the exact solution of these laws holds (:func:`sphgag.physics.cavity.limit_pressure`);
+    ValueError where there is none (contents whose volumetric form's stress grows without bound hold any pressure:
+    no limit of existence to verify)."""
+    top = cavity.limit_pressure(A, B, *swollen_pool.solids(mat))
+    if not np.isfinite(top.pressure_kPa):
+        raise ValueError(
+            f"the pool with the volumetric form {mat.volumetric!r} holds any pressure (its contents' stress grows "
+            "without bound): the annulus verification has no limit of existence to check (gag.volumetric)"
+        )
+    return top
 
 
 def swell_by_volume(path_solver: solver.Solver, pressures, max_ratio: float) -> tuple[dict, str]:

@@ -102,7 +102,7 @@ def swell_from_rest(model, pressures, steps: int, numerics: Numerics) -> tuple[d
 def solids(mat: inclusion.Materials) -> tuple[cavity.Solid, cavity.Solid]:
     """The matrix and the pool's contents of ``mat`` as the exact solution's solids
     (:class:`sphgag.physics.cavity.Solid`)."""
-    return cavity.Solid(mat.mu, mat.lam), cavity.Solid(mat.mu_gag, mat.lam_gag)
+    return cavity.Solid(mat.mu, mat.lam), cavity.Solid(mat.mu_gag, mat.lam_gag, volumetric=mat.volumetric)
 
 
 def circle_model(A: float, B: float, dx: float, mat: inclusion.Materials, numerics: Numerics, pool_model: str):
