@@ -123,3 +123,11 @@ def test_orders_of_three_spacings_with_known_errors():
     assert o.loc["lining_hoop_kPa", "order_fine"] == pytest.approx(1.0)
     assert o.loc["volume_ratio", "extrapolated"] == pytest.approx(3.0)
     assert o.loc["lining_hoop_kPa", "extrapolated"] == pytest.approx(50.0)
+
+
+def test_contents_that_hold_any_pressure_have_no_limit_to_verify(ci_config, matrix):
+    """The hartmann_neff contents' stress grows without bound: the exact pool has no largest pressure, and the
+    verification says so rather than loading the annulus to a fraction of an infinite pressure."""
+    mat = annulus.materials("particles", matrix, dict(ci_config["gag"], volumetric="hartmann_neff"))
+    with pytest.raises(ValueError, match="holds any pressure"):
+        annulus.limit(15.0, 30.0, mat)
