@@ -25,8 +25,8 @@ particle type. A row describes a constrained mixture:
   (eq. 2.26 at the current concentration; :func:`donnan`);
 * the **contents' volumetric term** of a GAG particle (``gag.volumetric``; not in eq. 2.27, docs/physics.md):
   ``W += KAPPA u(J)``, ``u`` the form of code ``VOLUMETRIC`` (:mod:`sphgag.physics.volumetric`: none,
-  ``(ln J)^2/2``, ``J - 1 - ln J``, ``(J^2 + J^-2 - 2)/8``), ``KAPPA = u''(1)``-scaled bulk modulus; the tissue's
-  ``LAM`` term and this one are blended by :func:`convert_to_gag`;
+  ``(ln J)^2/2``, ``J - 1 - ln J``, ``(J^2 + J^-2 - 2)/8``, each with ``u''(1) = 1``), so ``KAPPA`` is its
+  small-strain bulk modulus; the tissue's ``LAM`` term and this one are blended by :func:`convert_to_gag`;
 * ``TISSUE``: how much of the particle is tissue (1) rather than GAG (0). It
   does not enter the stress; it decides which neighbours a particle's
   hourglass penalty measures against (:func:`sphgag.engine.kernel.hourglass_gradients`).
