@@ -38,7 +38,7 @@ def main():
     cfg = config.load_yaml(args.config)
     bl, gag = cfg["bilayer"], cfg["gag"]
     matrix = dict(shear_modulus_kPa=bl["elastin_shear_modulus_kPa"], lame_lambda_kPa=bl["lame_lambda_kPa"])
-    gag = {k: gag[k] for k in ("shear_modulus_kPa", "lame_lambda_kPa")}
+    gag = {k: gag[k] for k in ("shear_modulus_kPa", "lame_lambda_kPa", "volumetric")}
     r_in, border, r_out = artery.bilayer_interfaces(bl)
     case = cfg["swelling"]["cases"]["I"]
     pool = tuple(case[k] for k in ("centre_radius_um", "centre_angle_deg", "radial_extent_um", "angular_extent_deg"))

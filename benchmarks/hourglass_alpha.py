@@ -43,6 +43,7 @@ def main():
         0.0,
         bil["hourglass_modulus_kPa"],
         cfg["gag"]["hourglass_modulus_kPa"],
+        "none",  # eq. 2.27 as printed: no volumetric term
     )
     b, Pi = vp["semi_axis_b_um"], vp["swelling_pressure_kPa"]
     a = args.ratio * b

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from sphgag.physics import cavity, donnan, materials
+from sphgag.physics import cavity, donnan, materials, volumetric
 
 A = 1.0
 
@@ -32,9 +32,11 @@ def test_large_pool_in_a_wide_nearly_incompressible_matrix_is_the_infinite_cavit
     np.testing.assert_allclose(pool.stretch, stretch, rtol=1e-10)
 
 
-def test_small_strain_is_the_lame_thick_cylinder_around_a_compliant_pool():
+@pytest.mark.parametrize("form", [f for f in volumetric.FORMS if f != "none"])
+def test_small_strain_is_the_lame_thick_cylinder_around_a_compliant_pool(form):
+    """Every volumetric form of the contents has the small-strain bulk modulus lamg (its U''(1))."""
     mu, lam, mug, lamg, B, pi = 1.0, 2.0, 0.05, 0.3, 3.0 * A, 1e-4
-    pool = cavity.circular_pool(A, B, cavity.Solid(mu, lam), cavity.Solid(mug, lamg), pi)
+    pool = cavity.circular_pool(A, B, cavity.Solid(mu, lam), cavity.Solid(mug, lamg, volumetric=form), pi)
     # annulus u = a R + b/R, sigma_rr = 2 (lam + mu) a - 2 mu b / R^2, sigma_rr(B) = 0: interface traction
     # -K u_A/A with K = 2 mu (lam + mu)(B^2 - A^2) / (mu A^2 + (lam + mu) B^2); the pool: 2 (lamg + mug) eps - Pi
     K = 2.0 * mu * (lam + mu) * (B * B - A * A) / (mu * A * A + (lam + mu) * B * B)
@@ -54,10 +56,12 @@ CASES = [  # matrix, gag, B, pressure, law
     (cavity.Solid(89.71, 10000.0), cavity.Solid(0.1, 10.0), 4.0, 91.0, "prescribed"),  # the engine's, Pi(150 mEq/l)
     (cavity.Solid(89.71, 10000.0), cavity.Solid(0.1, 10.0), 4.0, 91.0, "conserved"),
     (cavity.Solid(1.0, 1.0), cavity.Solid(0.1, 0.0), 10.0, 1.5, "prescribed"),  # compressible matrix
+    (cavity.Solid(89.71, 10000.0), cavity.Solid(0.1, 10.0, volumetric="convex"), 4.0, 91.0, "prescribed"),
+    (cavity.Solid(89.71, 10000.0), cavity.Solid(0.1, 10.0, volumetric="hartmann_neff"), 4.0, 91.0, "conserved"),
 ]
 
 
-@pytest.mark.parametrize("case", CASES, ids=lambda c: f"lam{c[0].lam / c[0].mu:g}-{c[4]}")
+@pytest.mark.parametrize("case", CASES, ids=lambda c: f"lam{c[0].lam / c[0].mu:g}-{c[1].volumetric}-{c[4]}")
 def test_field_is_in_equilibrium_with_free_outer_surface_and_continuous_traction(case):
     m, g, B, pi, law = case
     pool = cavity.circular_pool(A, B, m, g, pi, law=law)
@@ -112,6 +116,20 @@ def test_limit_pressure_of_a_hole_is_the_saturation_and_of_a_pool_a_maximum(rati
         cavity.circular_pool(A, B, m, g, (1.0 + 1e-6) * pool.pressure_kPa)
 
 
+@pytest.mark.parametrize("ratio", [2.0, 4.0])
+def test_limit_pressure_of_each_volumetric_form(ratio):
+    """The contents' stress U'(J) decides the kind of limit: ``convex``'s saturates at kappa, so the pool saturates
+    at the hole's mu ln(B/A) plus mu_g + kappa; ``none`` at mu ln(B/A) + mu_g; ``hartmann_neff``'s grows without
+    bound, so the pool holds any pressure."""
+    m, B = cavity.Solid(1.0, 100.0), ratio * A
+    for form, contents in (("convex", 0.05 + 0.2), ("none", 0.05)):
+        top = cavity.limit_pressure(A, B, m, cavity.Solid(0.05, 0.2, volumetric=form))
+        assert top.kind == "saturation"
+        assert top.pressure_kPa == pytest.approx(np.log(ratio) + contents, rel=1e-6)
+    top = cavity.limit_pressure(A, B, m, cavity.Solid(0.05, 0.2, volumetric="hartmann_neff"))
+    assert top.kind == "unbounded" and top.pressure_kPa == np.inf
+
+
 @pytest.mark.parametrize("law", donnan.CHARGE_LAWS)
 @pytest.mark.parametrize("J", [4.0, 25.0, 100.0])
 @pytest.mark.parametrize("ratio", [10.0, 1000.0])
@@ -135,12 +153,14 @@ def test_thick_annulus_has_a_limit_pressure_and_two_pools_below_it():
     np.testing.assert_allclose(cavity.pressure_for_volume_ratio(stable.volume_ratio, A, B, m, g), p[2], rtol=1e-9)
 
 
+@pytest.mark.parametrize("form", volumetric.FORMS)
 @pytest.mark.parametrize("law", donnan.CHARGE_LAWS)
-def test_cauchy_stress_is_the_engines(law):
+def test_cauchy_stress_is_the_engines(law, form):
+    """The exact solution's stresses of the GAG contents (each volumetric form) are the engine's kernels'."""
     rng = np.random.default_rng(7)
-    g = cavity.Solid(3.0, 40.0, bath_mEq_l=250.0, temperature_K=300.0)
+    g = cavity.Solid(3.0, 40.0, bath_mEq_l=250.0, temperature_K=300.0, volumetric=form)
     props = materials.empty_props(1)
-    props[0, materials.MU], props[0, materials.LAM], props[0, materials.PI] = g.mu, g.lam, 5.0
+    materials.convert_to_gag(props, [0], 1.0, g.mu, 0.0, 5.0, kappa=g.lam, volumetric=form)
     c0 = 120.0 if law == "conserved" else 0.0
     props[0, materials.FCD], props[0, materials.CBATH], props[0, materials.RT] = c0, g.bath_mEq_l, g.rt
     for lr, lt in rng.uniform(0.3, 6.0, size=(20, 2)):

@@ -19,6 +19,7 @@ SCHEMA = ROOT / "config" / "schema.yaml"
 GAG = dict(
     shear_modulus_kPa=0.1,
     lame_lambda_kPa=10.0,
+    volumetric="log_squared",
     temperature_K=310.0,
     bath_concentration_mEq_l=300.0,
     hourglass_modulus_kPa=89.71,

@@ -16,7 +16,13 @@ NUMERICS = dict(
     reuse_factorisation=True,
 )
 MAT = inclusion.Materials(
-    mu=89.71, lam=10000.0, mu_gag=0.1, lam_gag=0.0, hourglass_modulus=89.71, gag_hourglass_modulus=89.71
+    mu=89.71,
+    lam=10000.0,
+    mu_gag=0.1,
+    lam_gag=0.0,
+    hourglass_modulus=89.71,
+    gag_hourglass_modulus=89.71,
+    volumetric="none",
 )
 GAG = dict(
     charge_law="prescribed",
@@ -25,6 +31,7 @@ GAG = dict(
     shear_modulus_kPa=0.1,
     hourglass_modulus_kPa=89.71,
     lame_lambda_kPa=0.0,
+    volumetric="none",
 )
 
 

@@ -416,8 +416,9 @@ def test_a_pool_that_grows_into_a_symmetry_edge_stops_there(ci_config, wall):
 
 def test_a_pool_past_the_limit_point_of_its_frozen_state_ends_at_that_limit_point(ci_config):
     """A long pool (12 deg) in a wall 90 times softer than the artery's (elastin alone, mu = 1 kPa, no pre-stretch,
-    0.05 mmHg in the lumen), no damage: the pool's contents are what holds it, and eq. (2.27) under a prescribed
-    Donnan pressure has a largest pressure, where ``mu_g (1 - 1/J) + lam_g ln J / J`` peaks (ln J = 1 + mu_g/lam_g).
+    0.05 mmHg in the lumen), no damage: the pool's contents are what holds it, and eq. (2.27) with the volumetric
+    term ``log_squared`` under a prescribed Donnan pressure has a largest pressure, where
+    ``mu_g (1 - 1/J) + lam_g ln J / J`` peaks (ln J = 1 + mu_g/lam_g).
     Raising the concentration past it, volume control finds the maximum concentration the pool holds, and the run
     ends at that ``limit point``: between the contents' own limit (the closed form) and 2 mEq/l above it (what the
     soft wall adds), between the last level reached and the first that was not."""
@@ -427,7 +428,7 @@ def test_a_pool_past_the_limit_point_of_its_frozen_state_ends_at_that_limit_poin
         "media": {"elastin": 1.0, "smc": 0.0, "collagen": 0.0},
         "adventitia": {"elastin": 1.0, "collagen": 0.0},
     }
-    gag = dict(law_gag(ci_config, "prescribed"), hourglass_modulus_kPa=1.0)
+    gag = dict(law_gag(ci_config, "prescribed"), hourglass_modulus_kPa=1.0, volumetric="log_squared")
     numerics = ci_config["numerics"]
     model = artery.bilayer_model(bl, numerics, name="test-limit-point")
     home = protocols.homeostasis(model, numerics, ci_config["homeostasis"])

@@ -18,9 +18,10 @@ rng = np.random.default_rng(77)
 def with_gag(model, rows, partial=(), fixed_charge=None):
     """The model's table with ``rows`` converted to GAG (and ``partial`` rows 30 % of the way)."""
     p = np.array(model.props, dtype=float)
-    materials.convert_to_gag(p, rows, 1.0, 0.1, 18.53, lame=1.0, fixed_charge=fixed_charge)
+    bulk = dict(kappa=1.0, volumetric="log_squared")
+    materials.convert_to_gag(p, rows, 1.0, 0.1, 18.53, fixed_charge=fixed_charge, **bulk)
     if len(partial):
-        materials.convert_to_gag(p, partial, 0.3, 0.1, 18.53, lame=1.0, fixed_charge=fixed_charge)
+        materials.convert_to_gag(p, partial, 0.3, 0.1, 18.53, fixed_charge=fixed_charge, **bulk)
     return p
 
 
@@ -164,7 +165,7 @@ def test_without_the_interface_treatment_the_interface_rings(ci_config):
     """The same inclusion with the hourglass measured across the interface (TISSUE = 1 everywhere, the landed
     scheme) violates traction continuity by more than Pi: the check above can fail."""
     vp = ci_config["verification"]["pool"]
-    mat = inclusion.Materials(89.71, 10000.0, 0.1, 0.0, 89.71, 89.71)
+    mat = inclusion.Materials(89.71, 10000.0, 0.1, 0.0, 89.71, 89.71, "none")
     model = inclusion.inclusion_model(
         15.0, 15.0, 15.0 / 8, 45.0, mat, dict(ci_config["numerics"], hourglass_alpha=50.0)
     )

@@ -4,6 +4,7 @@ import numpy as np
 import pytest
 
 from sphgag.physics import materials as mt
+from sphgag.physics import volumetric
 
 rng = np.random.default_rng(7)
 THETA = 0.6  # reference angle of the test particle (local frame is rotated)
@@ -40,11 +41,21 @@ def diluting_gag_props():
     """GAG whose fixed charge is conserved: Donnan pressure at the current concentration c0 / J (eq. 2.26)."""
     p = mt.empty_props(1)
     p[:, mt.MU], p[:, mt.LAM] = 0.1, 10.0
-    mt.convert_to_gag(p, [0], 1.0, 0.1, 89.71, lame=10.0, fixed_charge=(150.0, 300.0, 310.0))
+    mt.convert_to_gag(p, [0], 1.0, 0.1, 89.71, kappa=10.0, volumetric="log_squared", fixed_charge=(150.0, 300.0, 310.0))
+    return p
+
+
+def contents_props(form, fraction=1.0):
+    """GAG with the contents' volumetric term ``form`` (kappa = 10 kPa, prescribed Pi = 91 kPa), converted from the
+    mixture by ``fraction`` (below 1: the homotopy, the tissue's LAM (ln J)^2 and the contents' term both present)."""
+    p = mixture_props()
+    mt.convert_to_gag(p, [0], fraction, 0.1, 89.71, swelling_pressure=91.0, kappa=10.0, volumetric=form)
     return p
 
 
 MATERIALS = {"mean": mean_props, "mixture": mixture_props, "gag": gag_props, "diluting_gag": diluting_gag_props}
+MATERIALS.update({f"gag_{f}": lambda f=f: contents_props(f) for f in volumetric.FORMS})
+MATERIALS.update({f"converting_{f}": lambda f=f: contents_props(f, 0.6) for f in volumetric.FORMS})
 
 
 def energy(F, lz, p):
@@ -153,7 +164,7 @@ def test_diluting_gag_pressure_is_eq_2_26_at_the_current_concentration():
     """sigma = -PI(c0 / J) I (+ the small neo-Hookean and bulk terms, removed here):
     J = 1 gives PI(c0), J = 2 PI(c0/2)."""
     p = diluting_gag_props()
-    p[:, mt.MU] = p[:, mt.LAM] = 0.0
+    p[:, mt.MU] = p[:, mt.LAM] = p[:, mt.KAPPA] = 0.0
     for J, c in ((1.0, 150.0), (2.0, 75.0), (0.8, 187.5)):
         F = np.sqrt(J) * np.eye(2)
         P = piola(F, 1.0, p).reshape(2, 2)
@@ -191,3 +202,25 @@ def test_a_converted_particle_stretched_many_fold_has_a_finite_tangent():
     g = gag_props()
     g[0, mt.PI] = 91.0
     assert np.allclose(piola(F, 1.0, p), piola(F, 1.0, g), rtol=1e-12)
+
+
+@pytest.mark.parametrize("form", volumetric.FORMS)
+def test_swollen_contents_stress_and_tangent_are_the_derivatives(form):
+    """The GAG contents of each volumetric form at swollen states (J of 4 to 50, where log_squared is no longer
+    elliptic): P = dW/dF and A = dP/dF by central differences."""
+    p = contents_props(form)
+    C, A = np.empty((3, 3)), np.empty((4, 4))
+    for scale in (2.0, 4.0, 7.0):
+        F = scale * (np.eye(2) + 0.1 * rng.standard_normal((2, 2)))
+        h = 1e-6 * scale
+        P = piola(F, 1.0, p)
+        mt.tangent_modulus(F[0, 0], F[0, 1], F[1, 0], F[1, 1], 1.0, np.cos(THETA), np.sin(THETA), p, 0, C, A)
+        dW, dP = np.zeros(4), np.zeros((4, 4))
+        for k in range(4):
+            Fp, Fm = F.copy().ravel(), F.copy().ravel()
+            Fp[k] += h
+            Fm[k] -= h
+            dW[k] = (energy(Fp.reshape(2, 2), 1.0, p) - energy(Fm.reshape(2, 2), 1.0, p)) / (2 * h)
+            dP[:, k] = (piola(Fp.reshape(2, 2), 1.0, p) - piola(Fm.reshape(2, 2), 1.0, p)) / (2 * h)
+        assert np.allclose(P, dW, rtol=1e-6, atol=1e-6 * np.abs(P).max())
+        assert np.allclose(A, dP, rtol=1e-5, atol=1e-6 * np.abs(A).max())

@@ -15,19 +15,32 @@ from sphgag.studies import swollen_pool
 rng = np.random.default_rng(11)
 
 
-@pytest.fixture
-def band_cavity(coarse_mean_model):
-    """The coarse mean model with a medial band of GAG (prescribed Pi = 30 kPa) as a cavity."""
-    m = coarse_mean_model
+# the contents' stiffness w''(J) per reference area of each volumetric form (kappa, lz), in closed form
+CONTENTS_STIFFNESS = {
+    "none": lambda J, mu, kappa, lz: mu / J**2,
+    "log_squared": lambda J, mu, kappa, lz: (mu + kappa * (1.0 - np.log(J * lz))) / J**2,
+    "convex": lambda J, mu, kappa, lz: (mu + kappa) / J**2,
+    "hartmann_neff": lambda J, mu, kappa, lz: mu / J**2 + kappa * lz**2 * (1.0 + 3.0 / (J * lz) ** 4) / 4.0,
+}
+
+
+def band(m, form="log_squared"):
+    """The coarse mean model ``m`` with a medial band of GAG (prescribed Pi = 30 kPa, the contents' volumetric term
+    ``form`` with kappa = 1 kPa) as a cavity."""
     r = np.linalg.norm(m.layout.X, axis=1)
     th = m.layout.theta
-    band = np.flatnonzero((r > 375) & (r < 400) & (th > 0.5) & (th < 0.8))
+    members = np.flatnonzero((r > 375) & (r < 400) & (th > 0.5) & (th < 0.8))
     p = np.array(m.props, dtype=float)
-    materials.convert_to_gag(p, band, 1.0, 0.1, 18.53, lame=1.0)
-    p[band, materials.PI] = 30.0
-    cav = pool_cavity.Cavity.around(m.layout, band, m.layout.X)
-    model = dataclasses.replace(m, props=p, cavities=(cav,))
-    return model, cav
+    materials.convert_to_gag(p, members, 1.0, 0.1, 18.53, kappa=1.0, volumetric=form)
+    p[members, materials.PI] = 30.0
+    cav = pool_cavity.Cavity.around(m.layout, members, m.layout.X)
+    return dataclasses.replace(m, props=p, cavities=(cav,)), cav
+
+
+@pytest.fixture
+def band_cavity(coarse_mean_model):
+    """:func:`band` of the coarse mean model."""
+    return band(coarse_mean_model)
 
 
 def test_the_lining_is_a_simple_loop_around_the_pool(band_cavity):
@@ -53,10 +66,12 @@ def test_area_gradient_matches_differences(band_cavity):
             assert g[k, c] == pytest.approx((cav.area(xp) - cav.area(xm)) / (2 * eps), rel=1e-6)
 
 
-def test_jacobian_with_the_contents_rank_one_term_is_exact(band_cavity):
+@pytest.mark.parametrize("form", list(CONTENTS_STIFFNESS))
+def test_jacobian_with_the_contents_rank_one_term_is_exact(coarse_mean_model, form):
     """Central differences of the residual equal the model's sparse Jacobian plus its rank-one terms
-    (``-w''(J)/V_pool dA/dx dA/dx^T``), and the solver's factorisation solves that full matrix (Sherman-Morrison)."""
-    model, cav = band_cavity
+    (``-w''(J)/V_pool dA/dx dA/dx^T``, in closed form for each volumetric form of the contents), and the solver's
+    factorisation solves that full matrix (Sherman-Morrison)."""
+    model, cav = band(coarse_mean_model, form)
     load = Load(1.3, 40 * loading.MMHG_TO_KPA)
     x = model.layout.X * 1.05 + 0.1 * rng.standard_normal(model.layout.X.shape)
     x[cav.loop] *= 1.02  # a swollen pool
@@ -65,8 +80,8 @@ def test_jacobian_with_the_contents_rank_one_term_is_exact(band_cavity):
     Jm = model.block_matrix(data).toarray()
     ((c, g),) = model.rank_one_terms(ev)
     J = cav.volume_ratio(x)
-    mu, lam, lz = 0.1, 1.0, load.axial_stretch
-    assert c == pytest.approx(-(mu / J**2 + lam * (1.0 - np.log(J * lz)) / J**2) / cav.pool_area, rel=1e-12)
+    stiffness = CONTENTS_STIFFNESS[form](J, 0.1, 1.0, load.axial_stretch)
+    assert c == pytest.approx(-stiffness / cav.pool_area, rel=1e-12)
     Jm += c * np.outer(g, g)
     eps = 1e-6
     cols = np.concatenate([2 * cav.loop[:3], 2 * cav.loop[3:6] + 1, rng.choice(2 * model.n, 4, replace=False)])

@@ -25,7 +25,7 @@ from .engine import hourglass
 from .engine.grading import Grading
 from .engine.numerics import Numerics
 from .options import key_text
-from .physics import donnan
+from .physics import donnan, volumetric
 from .physics.materials import GagSection
 from .studies import annulus, artery, candidates, onset, protocols
 from .studies.artery import Bilayer, Mean
@@ -186,6 +186,7 @@ def _registries() -> dict:
     return {
         ("numerics", "hourglass"): hourglass.FORMS,
         ("gag", "charge_laws"): donnan.LAWS,
+        ("gag", "volumetric"): volumetric.FORMS,
         ("swelling", "pool_models"): protocols.POOL_MODELS,
         ("swelling", "variant_pool_models"): protocols.POOL_MODELS,
         ("delamination", "criteria"): onset.CRITERIA,

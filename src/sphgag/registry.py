@@ -1,5 +1,5 @@
-"""One protocol for the variants of the model: charge laws, damage laws, onset criteria, candidate rules, pool models
-and hourglass forms.
+"""One protocol for the variants of the model: charge laws, volumetric forms of the GAG contents, damage laws, onset
+criteria, candidate rules, pool models and hourglass forms.
 
 A variant is a small strategy object (:class:`Variant`) that holds its name (in the configuration, the pipeline's
 wildcards and the tables' columns), its title (as the figures and the schema's descriptions name it), whether it is

@@ -6,6 +6,10 @@ POOL_MATRIX = {
     "lame_lambda_kPa": config["bilayer"]["lame_lambda_kPa"],
     "hourglass_modulus_kPa": config["bilayer"]["hourglass_modulus_kPa"],
 }
+# the GAG of the large-strain verifications: the study's, with its volumetric term (gag.volumetric)
+POOL_GAG = {
+    k: config["gag"][k] for k in ("shear_modulus_kPa", "lame_lambda_kPa", "volumetric", "hourglass_modulus_kPa")
+}
 
 
 wildcard_constraints:
@@ -192,7 +196,7 @@ rule verify_circular_pool_model:
     params:
         pool={k: v for k, v in VCP.items() if k != "pool_models"},
         matrix=POOL_MATRIX,
-        gag={k: config["gag"][k] for k in ("shear_modulus_kPa", "lame_lambda_kPa", "hourglass_modulus_kPa")},
+        gag=POOL_GAG,
         numerics=config["numerics"],
     script:
         "../scripts/verify_circular_pool.py"
@@ -263,7 +267,7 @@ rule verify_annulus_model:
     params:
         annulus={k: v for k, v in VAN.items() if k != "pool_models"},
         matrix=POOL_MATRIX,
-        gag={k: config["gag"][k] for k in ("shear_modulus_kPa", "lame_lambda_kPa", "hourglass_modulus_kPa")},
+        gag=POOL_GAG,
         numerics=config["numerics"],
     script:
         "../scripts/verify_annulus.py"
@@ -291,7 +295,7 @@ rule verify_annulus:
     params:
         radius=VAN["radius_um"],
         matrix=POOL_MATRIX,
-        gag={k: config["gag"][k] for k in ("shear_modulus_kPa", "lame_lambda_kPa", "hourglass_modulus_kPa")},
+        gag=POOL_GAG,
     script:
         "../scripts/verify_annulus_orders.py"
 

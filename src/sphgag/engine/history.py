@@ -192,6 +192,14 @@ class HistoryMaterial:
                 pi = float(materials.swelling_pressure(charge, g.bath_concentration_mEq_l, g.temperature_K))
                 fixed = None
             materials.convert_to_gag(
-                out, rows, fraction, g.shear_modulus_kPa, g.hourglass_modulus_kPa, pi, g.lame_lambda_kPa, fixed
+                out,
+                rows,
+                fraction,
+                g.shear_modulus_kPa,
+                g.hourglass_modulus_kPa,
+                pi,
+                kappa=g.lame_lambda_kPa,
+                volumetric=g.volumetric,
+                fixed_charge=fixed,
             )
         return out

@@ -139,6 +139,7 @@ class Model:
                 for c in self.cavities:
                     props[c.members, materials.PI] = 0.0
                     props[c.members, materials.MU] = props[c.members, materials.LAM] = 0.0
+                    props[c.members, materials.KAPPA] = 0.0
                     props[c.members, materials.HG_E] = 0.0
             self._cache.update(key=key, props=props, cavity_pressures=pressures)
             self._stencil(props)
@@ -146,13 +147,16 @@ class Model:
 
     def _cavity_pressures(self, props) -> list[tuple]:
         """The prescribed swelling pressure (eqs. 2.25-2.27) of each cavity's particles, its lining's load, and
-        their shear modulus and bulk term (``(Pi, (mu_g, lam_g))``)."""
+        their shear modulus and volumetric term (``(Pi, (mu_g, kappa, form code))``, :mod:`sphgag.physics.volumetric`;
+        a cavity's contents are GAG, no tissue's ``LAM`` left)."""
         out = []
         for c in self.cavities:
             rows = props[c.members]
             if np.any(rows[:, materials.FCD] > 0.0) or np.ptp(rows[:, materials.PI]) > 0.0:
                 raise ValueError(f"{self.name}: a cavity carries one prescribed pressure (the law 'prescribed')")
-            out.append((float(rows[0, materials.PI]), (float(rows[0, materials.MU]), float(rows[0, materials.LAM]))))
+            row = rows[0]
+            contents = (float(row[materials.MU]), float(row[materials.KAPPA]), int(row[materials.VOLUMETRIC]))
+            out.append((float(row[materials.PI]), contents))
         return out
 
     #: what :meth:`_stencil` caches (a function of the hourglass form, alpha and the stencil's columns alone)

@@ -18,11 +18,13 @@ the Donnan pressure as a follower load:
   the lumen pressure, :mod:`sphgag.engine.loading`), so its nodal forces are the exact gradient ``Pi lz dA/dx`` and
   its stiffness ``Pi lz d2A/dx2`` is symmetric; ``Pi`` is the prescribed Pi(c) of eqs. (2.25-2.26) that the pool's
   particles would carry;
-* the pool's contents keep their own law (eq. 2.27 with the GAG's bulk term) as a uniform swelling of the whole
-  pool: ``w(J) = mu_g/2 (2 J + lz^2 - 3) - mu_g ln(J lz) + lam_g/2 ln(J lz)^2`` per reference area, ``J`` the pool's
-  volume ratio (:func:`pool_pressure`; the contents' state is uniform, as the pool's particles cannot resolve it: the
-  GAG law with the Donnan pressure loses ellipticity at ``J`` of about 2.8, ``mu_g (J + 1) + lam_g < lam_g ln J``, so
-  a non-uniform state of the contents is not unique). Its stiffness, ``w''/V_pool`` times the outer product of
+* the pool's contents keep their own law (eq. 2.27 with the GAG's volumetric term ``U = kappa u``,
+  :mod:`sphgag.physics.volumetric`) as a uniform swelling of the whole pool:
+  ``w(J) = mu_g/2 (2 J + lz^2 - 3) - mu_g ln(J lz) + U(J lz)`` per reference area, ``J`` the pool's volume ratio
+  (:func:`pool_pressure`; the contents' state is uniform, as the pool's particles cannot resolve it where the law
+  is not elliptic: with ``U = kappa/2 (ln J)^2`` and the Donnan pressure it loses ellipticity at ``J`` of about 2.8,
+  ``mu_g (J + 1) + kappa < kappa ln J``, and a non-uniform state of the contents is not unique). Its stiffness,
+  ``w''/V_pool`` times the outer product of
   ``dA/dx`` with itself, couples the whole lining: it stays out of the sparse Jacobian and enters the solves as a
   rank-one update (:meth:`Cavity.rank_one`, Sherman-Morrison in :func:`sphgag.engine.solver.factorise`);
 * the pool's volume ratio is ``1 + (A - A_0) / V_pool`` (``V_pool``: the pool's reference area, the sum of its
@@ -41,6 +43,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 from scipy.spatial import cKDTree
 
+from ..physics.volumetric import NONE, unit_terms
 from .loading import add_pressure_stiffness, lumen_area_gradient, pressure_stiffness_blocks
 
 CONTACT = 1.5  # lining: tissue particles within this many of their spacings of a pool particle (reference)
@@ -96,12 +99,13 @@ class Cavity:
         nxt, prv = np.roll(q, -1, axis=0), np.roll(q, 1, axis=0)
         return 0.5 * np.column_stack([nxt[:, 1] - prv[:, 1], prv[:, 0] - nxt[:, 0]])
 
-    def add_forces(self, f: np.ndarray, x: np.ndarray, pressure_kPa: float, lz: float, contents=(0.0, 0.0)) -> None:
-        """Add the nodal forces ``(Pi lz - w'(J)) dA/dx`` to ``f`` (``contents``: ``(mu_g, lam_g)``)."""
+    def add_forces(self, f: np.ndarray, x: np.ndarray, pressure_kPa: float, lz: float, contents=(0.0,)) -> None:
+        """Add the nodal forces ``(Pi lz - w'(J)) dA/dx`` to ``f`` (``contents``: ``(mu_g, kappa, form code)``, the
+        arguments of :func:`pool_pressure` after ``lz``)."""
         p = pool_pressure(self.volume_ratio(x), pressure_kPa, lz, *contents)
         f[self.loop] += p * self.area_gradient(x)
 
-    def rank_one(self, x: np.ndarray, lz: float, contents=(0.0, 0.0)) -> tuple[float, np.ndarray]:
+    def rank_one(self, x: np.ndarray, lz: float, contents=(0.0,)) -> tuple[float, np.ndarray]:
         """The part of the Jacobian the blocks leave out: ``(c, g)`` with ``d(f)/dx += c g g^T``, ``g = dA/dx`` on
         the lining (a flat vector over all particles) and ``c = p'(J) / V_pool``, ``p'(J) = -w''(J)`` the contents'
         stiffness (:func:`pool_pressure`; the prescribed Pi does not depend on J): it couples every lining particle to
@@ -143,15 +147,18 @@ def hollow(model, members: np.ndarray, x: np.ndarray):
     return replace(model, cavities=(Cavity.around(model.layout, members, x),))
 
 
-def pool_pressure(J: float, pressure_kPa: float, lz: float, mu: float, lam: float) -> float:
-    """``Pi lz - w'(J)``: the net pressure on the lining per unit reference length (module docstring)."""
-    return pressure_kPa * lz - (mu * (1.0 - 1.0 / J) + lam * np.log(J * lz) / J)
+def pool_pressure(J: float, pressure_kPa: float, lz: float, mu: float, kappa: float = 0.0, form: int = NONE) -> float:
+    """``Pi lz - w'(J)``: the net pressure on the lining per unit reference length (module docstring), with
+    ``w'(J) = mu (1 - 1/J) + lz U'(J lz)``, ``U = kappa u`` the volumetric form of code ``form``
+    (:func:`sphgag.physics.volumetric.unit_terms`)."""
+    return pressure_kPa * lz - (mu * (1.0 - 1.0 / J) + kappa * lz * unit_terms(int(form), J * lz)[1])
 
 
-def contents_stiffness(J: float, lz: float, mu: float, lam: float) -> float:
-    """``w''(J) = (mu + lam (1 - ln(J lz))) / J^2``: the contents' stiffness per reference area (negative beyond
-    ``J = e / lz`` with ``mu = 0``: the loss of ellipticity of the module docstring)."""
-    return (mu + lam * (1.0 - np.log(J * lz))) / (J * J)
+def contents_stiffness(J: float, lz: float, mu: float, kappa: float = 0.0, form: int = NONE) -> float:
+    """``w''(J) = mu / J^2 + lz^2 U''(J lz)``: the contents' stiffness per reference area (for
+    ``U = kappa/2 (ln J)^2``: ``(mu + kappa (1 - ln(J lz))) / J^2``, negative beyond ``J = e / lz`` with ``mu = 0``:
+    the loss of ellipticity of the module docstring)."""
+    return mu / (J * J) + kappa * lz * lz * unit_terms(int(form), J * lz)[2]
 
 
 def polygon_area(q: np.ndarray) -> float:

@@ -1,17 +1,19 @@
 """The exact large-strain field of a circular swelling pool bonded in a matrix annulus (a verification reference).
 
-Plane strain (``lz = 1``), radial symmetry: a disc of reference radius ``A`` of the GAG law (eq. 2.27 with the bulk
-term of :func:`sphgag.physics.materials.convert_to_gag`) is bonded to an annulus ``A < R < B`` of the elastin-like
-matrix law (eqs. 2.18/2.21 without deposition stretch or fibres), and ``R = B`` is traction free. Both are the
-engine's laws (:mod:`sphgag.physics.materials`, with its documented correction of eq. 2.18),
+Plane strain (``lz = 1``), radial symmetry: a disc of reference radius ``A`` of the GAG law (eq. 2.27 with the
+contents' volumetric term of :func:`sphgag.physics.materials.convert_to_gag`) is bonded to an annulus ``A < R < B``
+of the elastin-like matrix law (eqs. 2.18/2.21 without deposition stretch or fibres), and ``R = B`` is traction free.
+Both are the engine's laws (:mod:`sphgag.physics.materials`, with its documented correction of eq. 2.18),
 
-    ``W = mu/2 (lr^2 + lt^2 + 1 - 3) - mu ln J + lam/2 (ln J)^2  [- Pi (J - 1) in the pool]``,  ``J = lr lt``,
+    ``W = mu/2 (lr^2 + lt^2 + 1 - 3) - mu ln J + U(J)  [- Pi (J - 1) in the pool]``,  ``J = lr lt``,
 
-whose principal Cauchy stresses are ``sigma_rr = (mu (lr^2 - 1) + lam ln J)/J - Pi`` and likewise ``sigma_tt`` with
-``lt`` (:func:`cauchy`). Swelling (eqs. 2.25-2.26), by the charge law (:mod:`sphgag.physics.donnan`): a law that
-does not conserve the fixed charge (``prescribed``) keeps ``Pi`` fixed; one that does (``conserved``) keeps the fixed
-charge ``c0`` per reference volume, ``Pi = RT (sqrt((c0/J)^2 + c*^2) - c*)`` (:func:`donnan_pressure`), ``c0`` being
-the concentration whose ``Pi`` at ``J = 1`` is the given pressure (the engine's laws at one load).
+with ``U = lam/2 (ln J)^2`` for the matrix (eq. 2.21) and ``U = lam u(J)`` of the GAG's volumetric form
+(:mod:`sphgag.physics.volumetric`, :attr:`Solid.volumetric`) in the pool, whose principal Cauchy stresses are
+``sigma_rr = (mu (lr^2 - 1) + J U'(J))/J - Pi`` and likewise ``sigma_tt`` with ``lt`` (:func:`cauchy`). Swelling
+(eqs. 2.25-2.26), by the charge law (:mod:`sphgag.physics.donnan`): a law that does not conserve the fixed charge
+(``prescribed``) keeps ``Pi`` fixed; one that does (``conserved``) keeps the fixed charge ``c0`` per reference volume,
+``Pi = RT (sqrt((c0/J)^2 + c*^2) - c*)`` (:func:`donnan_pressure`), ``c0`` being the concentration whose ``Pi`` at
+``J = 1`` is the given pressure (the engine's laws at one load).
 
 The pool deforms homogeneously, ``r = lp R``: its uniform hydrostatic stress satisfies equilibrium exactly and is
 known in closed form. In the matrix, radial equilibrium ``dP_r/dR + (P_r - P_t)/R = 0`` (``P_r = dW/dlr``,
@@ -19,12 +21,13 @@ known in closed form. In the matrix, radial equilibrium ``dP_r/dR + (P_r - P_t)/
 with ``s = ln R`` and the state ``(ln lt, ln lr)``,
 
     ``d ln lt/ds = lr/lt - 1``,
-    ``d ln lr/ds = -lr (lr - lt) [mu (J + 1) + lam (1 - ln J)] / (J [mu (lr^2 + 1) + lam (1 - ln J)])``,
+    ``d ln lr/ds = -lr (lr - lt) [mu (J + 1) + J^2 U''(J)] / (J [mu (lr^2 + 1) + J^2 U''(J)])``
 
-scale free and regular as ``lam/mu -> oo`` (it tends to the incompressible kinematics ``lr lt = 1``). It starts at
-``R = A`` from ``lt = lp`` and the ``lr`` that makes ``sigma_rr`` continuous with the pool's stress, and ``lp`` is
-the root of ``sigma_rr(B) = 0``. Exact: the reduction to this ODE and its two boundary conditions; the numbers carry
-the ODE solver's error (DOP853, rtol 1e-11) and root-finding to round-off.
+(``J^2 U'' = lam (1 - ln J)`` for the matrix's ``lam/2 (ln J)^2``), scale free and regular as ``lam/mu -> oo`` (it
+tends to the incompressible kinematics ``lr lt = 1``). It starts at ``R = A`` from ``lt = lp`` and the ``lr`` that
+makes ``sigma_rr`` continuous with the pool's stress, and ``lp`` is the root of ``sigma_rr(B) = 0``. Exact: the
+reduction to this ODE and its two boundary conditions; the numbers carry the ODE solver's error (DOP853, rtol 1e-11)
+and root-finding to round-off.
 """
 
 from __future__ import annotations
@@ -37,19 +40,37 @@ from scipy.optimize import brentq, minimize_scalar
 
 from .donnan import PAPER_LAW, charge_law
 from .materials import GAS_CONSTANT
+from .volumetric import FORMS, VolumetricForm
 
 RTOL, ATOL = 1e-11, 1e-12
 
 
 @dataclass(frozen=True)
 class Solid:
-    """A neo-Hookean solid of eqs. (2.18)/(2.21): shear modulus ``mu`` and Lame parameter ``lam`` [kPa]; for a pool
-    also the bath's mobile-ion concentration c* [mEq/l] and the temperature of eqs. (2.25-2.26)."""
+    """A neo-Hookean solid of eqs. (2.18)/(2.21): shear modulus ``mu``, and the volumetric term ``lam u(J)`` of the
+    form ``volumetric`` (:data:`sphgag.physics.volumetric.FORMS`; ``lam`` [kPa] its small-strain bulk modulus
+    U''(1): the Lame parameter of the elastin's ``lam/2 (ln J)^2``, ``log_squared``; for a pool the GAG contents'
+    form); for a pool also the bath's mobile-ion concentration c* [mEq/l] and the temperature of eqs. (2.25-2.26)."""
 
     mu: float
     lam: float = 0.0
     bath_mEq_l: float = 300.0
     temperature_K: float = 310.0
+    volumetric: str = "log_squared"
+
+    def __post_init__(self):
+        FORMS.lookup(self.volumetric)
+
+    @property
+    def form(self) -> VolumetricForm:
+        """Its volumetric form (:mod:`sphgag.physics.volumetric`)."""
+        return FORMS[self.volumetric]
+
+    def bulk(self, J):
+        """``(J U'(J), J^2 U''(J))`` of its volumetric term ``U = lam u(J)``: the Cauchy stress times J, and the
+        stiffness of the radial equation (module docstring)."""
+        _, du, d2u = self.form.terms(J, self.lam)
+        return J * du, J * J * d2u
 
     @property
     def rt(self) -> float:
@@ -59,7 +80,8 @@ class Solid:
     @classmethod
     def of(cls, m) -> Solid:
         """A :class:`Solid` from itself, a dict of its fields, or a configuration section (``shear_modulus_kPa``,
-        ``lame_lambda_kPa``, ``bath_concentration_mEq_l``, ``temperature_K``; other keys ignored)."""
+        ``lame_lambda_kPa``, ``bath_concentration_mEq_l``, ``temperature_K``, ``volumetric``: the ``gag`` section's
+        form, or the elastin's ``log_squared`` for a section without one; other keys ignored)."""
         if isinstance(m, cls):
             return m
         if "mu" in m:
@@ -69,14 +91,16 @@ class Solid:
             m.get("lame_lambda_kPa", 0.0),
             m.get("bath_concentration_mEq_l", 300.0),
             m.get("temperature_K", 310.0),
+            m.get("volumetric", "log_squared"),
         )
 
 
 def cauchy(lr, lt, solid: Solid, swelling=0.0):
     """Principal Cauchy stresses ``(sigma_rr, sigma_tt)`` of eqs. (2.21)/(2.27) at stretches ``lr, lt`` (``lz = 1``)
-    under the swelling pressure ``swelling`` [kPa]: ``(mu (l^2 - 1) + lam ln J)/J - Pi``."""
+    under the swelling pressure ``swelling`` [kPa]: ``(mu (l^2 - 1) + J U'(J))/J - Pi`` (``J U' = lam ln J`` for
+    ``lam/2 (ln J)^2``)."""
     J = lr * lt
-    bulk = solid.lam * np.log(J)
+    bulk = solid.bulk(J)[0]
     return (solid.mu * (lr * lr - 1.0) + bulk) / J - swelling, (solid.mu * (lt * lt - 1.0) + bulk) / J - swelling
 
 
@@ -109,10 +133,10 @@ def infinite_cavity_pressure(stretch, mu):
     return mu * (np.log(l) + 0.5 * (1.0 - l**-2))
 
 
-def _rhs(s, y, mu, lam):
+def _rhs(s, y, solid: Solid):
     lt, lr = np.exp(y)
-    lnJ = y[0] + y[1]
-    J, k = np.exp(lnJ), lam * (1.0 - lnJ)
+    mu, J = solid.mu, np.exp(y[0] + y[1])
+    k = float(solid.bulk(J)[1])  # J^2 U''(J)
     return [lr / lt - 1.0, -lr * (lr - lt) * (mu * (J + 1.0) + k) / (J * (mu * (lr * lr + 1.0) + k))]
 
 
@@ -166,10 +190,10 @@ def _shoot(m: Solid, A, B, lp, traction, dense=False):
     """Integrate the matrix from ``R = A`` (``lt = lp``, ``sigma_rr = traction``) to ``B``: ``(sigma_rr(B), ode)``."""
     ln_lp = np.log(lp)  # sigma_rr(lr, lp) = traction, in x = ln lr (increasing in x where it matters):
     x = _increasing_root(
-        lambda x: m.mu * np.expm1(2.0 * x) + m.lam * (x + ln_lp) - traction * lp * np.exp(x), -ln_lp, 0.5
+        lambda x: m.mu * np.expm1(2.0 * x) + float(m.bulk(lp * np.exp(x))[0]) - traction * lp * np.exp(x), -ln_lp, 0.5
     )
     ode = solve_ivp(
-        _rhs, (np.log(A), np.log(B)), [ln_lp, x], "DOP853", rtol=RTOL, atol=ATOL, dense_output=dense, args=(m.mu, m.lam)
+        _rhs, (np.log(A), np.log(B)), [ln_lp, x], "DOP853", rtol=RTOL, atol=ATOL, dense_output=dense, args=(m,)
     )
     if ode.status != 0 or not np.all(np.isfinite(ode.y[:, -1])):
         return np.nan, ode
@@ -198,7 +222,7 @@ class CircularPool:
 
     @property
     def pool_stress_kPa(self) -> float:
-        """The pool's uniform Cauchy stress sigma_rr = sigma_tt (eq. 2.27 with the bulk term)."""
+        """The pool's uniform Cauchy stress sigma_rr = sigma_tt (eq. 2.27 with the contents' volumetric term)."""
         return float(cauchy(self.stretch, self.stretch, self.gag, self.swelling_kPa)[0])
 
     def field(self, R) -> dict:
@@ -249,9 +273,11 @@ def circular_pool(A, B, matrix, gag, pressure_kPa, law=PAPER_LAW) -> CircularPoo
 class LimitPressure:
     """The largest pressure a pool of reference radius ``A`` in the annulus ``A < R < B`` holds in equilibrium:
     ``pressure_kPa`` at the pool volume ratio ``volume_ratio``; ``kind``: ``limit point`` (the pressure-volume curve
-    has a maximum: beyond it the stable branch ends) or ``saturation`` (the curve rises to an asymptote it never
+    has a maximum: beyond it the stable branch ends), ``saturation`` (the curve rises to an asymptote it never
     reaches, as the incompressible annulus to ``mu ln(B/A)``: then ``pressure_kPa`` is its value at
-    ``volume_ratio`` = :data:`SATURATION_VOLUME_RATIO`, within a relative 1e-6 of the asymptote for these laws)."""
+    ``volume_ratio`` = :data:`SATURATION_VOLUME_RATIO`, within a relative 1e-6 of the asymptote for these laws) or
+    ``unbounded`` (the contents' own stress grows without bound, as the volumetric form ``hartmann_neff``'s: an
+    equilibrium at every pressure, ``pressure_kPa`` and ``volume_ratio`` infinite)."""
 
     pressure_kPa: float
     volume_ratio: float
@@ -274,8 +300,10 @@ def limit_pressure(A, B, matrix, gag) -> LimitPressure:
     s = np.arange(0.0, top + 0.125, 0.25)
     p = np.array([pressure(x) for x in s])
     k = int(np.argmax(p))
-    if p[-1] >= p[k] * (1.0 - 1e-9):  # still rising at the top, to round-off: an asymptote
-        return LimitPressure(float(p[-1]), SATURATION_VOLUME_RATIO, "saturation")
+    if p[-1] >= p[k] * (1.0 - 1e-9):  # still rising at the top, to round-off
+        if p[-1] - p[-2] > 1e-6 * abs(p[-1]):  # and not levelling off: no largest pressure
+            return LimitPressure(np.inf, np.inf, "unbounded")
+        return LimitPressure(float(p[-1]), SATURATION_VOLUME_RATIO, "saturation")  # an asymptote
     peak = minimize_scalar(
         lambda x: -pressure(x), bounds=(s[max(k - 1, 0)], s[k + 1]), method="bounded", options=dict(xatol=1e-10)
     )

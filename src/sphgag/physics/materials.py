@@ -23,6 +23,10 @@ particle type. A row describes a constrained mixture:
   density per *reference* volume, the current one is ``FCD / J``, and
   ``sigma -= PI_D(J) I`` with ``PI_D = RT (sqrt((FCD/J)^2 + CBATH^2) - CBATH)``
   (eq. 2.26 at the current concentration; :func:`donnan`);
+* the **contents' volumetric term** of a GAG particle (``gag.volumetric``; not in eq. 2.27, docs/physics.md):
+  ``W += KAPPA u(J)``, ``u`` the form of code ``VOLUMETRIC`` (:mod:`sphgag.physics.volumetric`: none,
+  ``(ln J)^2/2``, ``J - 1 - ln J``, ``(J^2 + J^-2 - 2)/8``, each with ``u''(1) = 1``), so ``KAPPA`` is its
+  small-strain bulk modulus; the tissue's ``LAM`` term and this one are blended by :func:`convert_to_gag`;
 * ``TISSUE``: how much of the particle is tissue (1) rather than GAG (0). It
   does not enter the stress; it decides which neighbours a particle's
   hourglass penalty measures against (:func:`sphgag.engine.kernel.hourglass_gradients`).
@@ -46,6 +50,8 @@ from numba import njit
 
 from ..options import Options
 from .donnan import ChargeLaw, charge_law
+from .volumetric import FORMS as VOLUMETRIC_FORMS
+from .volumetric import VolumetricForm, kernel_terms
 
 # Column layout of the property table.
 MU, LAM, GR, GT, GZ, PI, TACT, LMAX, LMIN, HG_E, NFAM = range(11)
@@ -56,23 +62,38 @@ PHI, SIN2, C1P, C2P, C1M, C2M, GF = range(FAM_STRIDE)
 FAM_END = FAM0 + MAX_FAMILIES * FAM_STRIDE
 TISSUE = FAM_END
 FCD, CBATH, RT = FAM_END + 1, FAM_END + 2, FAM_END + 3
-NPROP = RT + 1
+KAPPA, VOLUMETRIC = RT + 1, RT + 2  # the GAG contents' volumetric term: modulus and form code (physics.volumetric)
+NPROP = VOLUMETRIC + 1
 GAS_CONSTANT = 8.314462618  # J / (mol K)
 
 
 @dataclass(frozen=True)
 class GagParameters(Options):
-    """The GAG parameters every run shares: ``shear_modulus_kPa`` mu_GAG (eq. 2.27), ``lame_lambda_kPa`` the bulk term
-    of GAG particles (not in eq. 2.27; docs/physics.md), ``temperature_K`` T and ``bath_concentration_mEq_l`` c* of
-    eqs. (2.25-2.26), and ``hourglass_modulus_kPa`` E of eq. (2.14) for GAG particles."""
+    """The GAG parameters every run shares: ``shear_modulus_kPa`` mu_GAG (eq. 2.27), ``volumetric`` the form of the
+    contents' volumetric term (a name of :data:`sphgag.physics.volumetric.FORMS`; ``none`` is eq. 2.27 as printed) and
+    ``lame_lambda_kPa`` its modulus kappa = U''(1) (not in eq. 2.27; docs/physics.md), ``temperature_K`` T and
+    ``bath_concentration_mEq_l`` c* of eqs. (2.25-2.26), and ``hourglass_modulus_kPa`` E of eq. (2.14) for GAG
+    particles."""
 
     SECTION = "gag"
 
     shear_modulus_kPa: float
     lame_lambda_kPa: float
+    volumetric: str
     temperature_K: float
     bath_concentration_mEq_l: float
     hourglass_modulus_kPa: float
+
+    def __post_init__(self):
+        try:
+            VOLUMETRIC_FORMS.lookup(self.volumetric)
+        except ValueError as exc:
+            raise ValueError(f"gag volumetric: {exc}") from None
+
+    @property
+    def bulk(self) -> VolumetricForm:
+        """The contents' volumetric form (:mod:`sphgag.physics.volumetric`)."""
+        return VOLUMETRIC_FORMS[self.volumetric]
 
 
 @dataclass(frozen=True)
@@ -83,6 +104,7 @@ class Gag(GagParameters):
     charge_law: str
 
     def __post_init__(self):
+        super().__post_init__()
         try:
             charge_law(self.charge_law)
         except ValueError as exc:
@@ -252,10 +274,27 @@ def donnan(J, c0, cb, rt):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
+def _volumetric(props, i, J, lnJ):
+    """``(U, h, k)`` of the volumetric terms: the tissue's ``LAM/2 (ln J)^2`` (eqs. 2.18, 2.21) plus the GAG contents'
+    ``KAPPA u(J)`` of the form ``VOLUMETRIC`` (:mod:`sphgag.physics.volumetric`), with ``h = J U'(J)`` (their
+    stress is ``h C^-1``) and ``k = J dh/dJ = J (U' + J U'')``."""
+    lam = props[i, LAM]
+    U, h, k = 0.5 * lam * lnJ * lnJ, lam * lnJ, lam
+    kappa = props[i, KAPPA]
+    if kappa != 0.0:
+        u, du, d2u = kernel_terms(int(props[i, VOLUMETRIC]), J)
+        U += kappa * u
+        h += kappa * J * du
+        k += kappa * J * (du + J * d2u)
+    return U, h, k
+
+
+@njit(cache=True, error_model="numpy", inline="always")
 def pk2(c_rr, c_tt, c_rt, lz, props, i):
     """Second Piola-Kirchhoff stress ``(S_rr, S_tt, S_rt)`` of particle ``i``.
 
-    Elastin (2.18/2.21): ``MU (G^2 - C^-1) + LAM ln J C^-1``; swelling (2.27):
+    Elastin (2.18/2.21): ``MU (G^2 - C^-1) + LAM ln J C^-1``; the GAG contents' volumetric term: ``J U'(J) C^-1``
+    (:func:`_volumetric`); swelling (2.27):
     ``-(PI + PI_D(J)) J C^-1``; fibres (2.20/2.22): ``2 phi W'(I4) G^2 sin^2 a e_t e_t``;
     active tone (2.24): ``J T(l) / l^2 e_t e_t`` with ``l^2 = C_tt``.
     """
@@ -263,7 +302,8 @@ def pk2(c_rr, c_tt, c_rt, lz, props, i):
     J = lz * np.sqrt(det2)
     mu = props[i, MU]
     pi = props[i, PI] + donnan(J, props[i, FCD], props[i, CBATH], props[i, RT])[0]
-    beta = (mu - props[i, LAM] * np.log(J) + pi * J) / det2  # coefficient of -C^-1 det C
+    h = _volumetric(props, i, J, np.log(J))[1]
+    beta = (mu - h + pi * J) / det2  # coefficient of -C^-1 det C
     s_rr = mu * props[i, GR] ** 2 - beta * c_tt
     s_tt = mu * props[i, GT] ** 2 - beta * c_rr
     s_rt = beta * c_rt
@@ -287,8 +327,9 @@ def material_tangent(c_rr, c_tt, c_rt, lz, props, i, C):
 
     The derivative of the stress of :func:`pk2` (eqs. 2.20-2.24, 2.27).
 
-    Elastin + swelling: ``(LAM - PI J - PI_D' J^2) C^-1 (x) C^-1 + 2 beta I_{C^-1}`` with
-    ``beta = MU - LAM ln J + PI J`` (``PI`` including the Donnan ``PI_D(J)``) and ``I_{C^-1}`` the symmetrised
+    Elastin + volumetric terms + swelling: ``(k - PI J - PI_D' J^2) C^-1 (x) C^-1 + 2 beta I_{C^-1}`` with
+    ``beta = MU - h + PI J`` (``PI`` including the Donnan ``PI_D(J)``; ``h = J U'``, ``k = J (U' + J U'')`` of
+    :func:`_volumetric`, ``h = LAM ln J`` and ``k = LAM`` for the elastin alone) and ``I_{C^-1}`` the symmetrised
     identity on C^-1;
     fibres: ``4 phi W''(I4) G^4 sin^4 a`` on (tt, tt); active tone (no major
     symmetry): ``S_tt^act C^-1`` on row tt plus ``J (T'/l^2 - 2 T/l^3)/l`` on (tt, tt).
@@ -298,8 +339,9 @@ def material_tangent(c_rr, c_tt, c_rt, lz, props, i, C):
     i_rr, i_tt, i_rt = c_tt / det2, c_rr / det2, -c_rt / det2
     pd, dpd, _ = donnan(J, props[i, FCD], props[i, CBATH], props[i, RT])
     pi = props[i, PI] + pd
-    beta = props[i, MU] - props[i, LAM] * np.log(J) + pi * J
-    a = props[i, LAM] - pi * J - dpd * J * J
+    _, h, k = _volumetric(props, i, J, np.log(J))
+    beta = props[i, MU] - h + pi * J
+    a = k - pi * J - dpd * J * J
     b = 2.0 * beta
     C[0, 0] = (a + b) * i_rr * i_rr
     C[1, 1] = (a + b) * i_tt * i_tt
@@ -328,13 +370,13 @@ def material_tangent(c_rr, c_tt, c_rt, lz, props, i, C):
 def strain_energy(c_rr, c_tt, c_rt, lz, props, i):
     """Strain energy density W of particle ``i`` (eqs. 2.18, 2.21-2.23, 2.27; active tone has none).
 
-    ``MU/2 (tr(G C G) - 3) - MU ln J + LAM/2 (ln J)^2 - PI (J - 1) + W_D(J) + sum_k phi_k W_k(I4_k)``.
+    ``MU/2 (tr(G C G) - 3) - MU ln J + LAM/2 (ln J)^2 + KAPPA u(J) - PI (J - 1) + W_D(J) + sum_k phi_k W_k(I4_k)``.
     """
     J = lz * np.sqrt(c_rr * c_tt - c_rt * c_rt)
     lnJ = np.log(J)
     mu = props[i, MU]
     I1 = props[i, GR] ** 2 * c_rr + props[i, GT] ** 2 * c_tt + props[i, GZ] ** 2 * lz * lz
-    W = 0.5 * mu * (I1 - 3.0) - mu * lnJ + 0.5 * props[i, LAM] * lnJ * lnJ - props[i, PI] * (J - 1.0)
+    W = 0.5 * mu * (I1 - 3.0) - mu * lnJ + _volumetric(props, i, J, lnJ)[0] - props[i, PI] * (J - 1.0)
     W += donnan(J, props[i, FCD], props[i, CBATH], props[i, RT])[2]
     for k in range(int(props[i, NFAM])):
         base = FAM0 + k * FAM_STRIDE
@@ -419,28 +461,42 @@ def tangent_modulus(f00, f01, f10, f11, lz, cth, sth, props, i, C, A):
 
 
 def convert_to_gag(
-    props, rows, fraction, shear_modulus, hourglass_modulus, swelling_pressure=0.0, lame=0.0, fixed_charge=None
+    props,
+    rows,
+    fraction,
+    shear_modulus,
+    hourglass_modulus,
+    swelling_pressure=0.0,
+    kappa=0.0,
+    volumetric="none",
+    fixed_charge=None,
 ):
     """Turn ``rows`` of a property table a ``fraction`` of the way into GAG (eq. 2.27), in place.
 
     A GAG particle is the modified neo-Hookean solid ``mu_GAG`` (no deposition
     stretch, no fibres, no active tone) plus the Gibbs-Donnan swelling pressure
-    ``Pi``: Cauchy stress ``mu_GAG (B - I)/J - Pi I`` (eq. 2.27), plus the bulk
-    term ``lame ln J / J`` if ``lame > 0`` (not in eq. 2.27; docs/physics.md).
+    ``Pi``: Cauchy stress ``mu_GAG (B - I)/J - Pi I`` (eq. 2.27), plus the
+    contents' volumetric term ``kappa u(J)`` of the form ``volumetric`` (a name of
+    :data:`sphgag.physics.volumetric.FORMS`; stress ``kappa u'(J) I``; not in
+    eq. 2.27, docs/physics.md; ``none``: eq. 2.27 as printed).
     Conversion is a change of the particle's row, nothing else. For
     ``0 < fraction < 1`` the row is a homotopy that the quasi-static solver can
     follow in steps: the original constituents keep a weight ``g`` that falls
     from 1 to 0 log-uniformly (``g = (1 - s) 10^(-4 s)``: the stiffness drops by
     four decades before it vanishes, so the state changes evenly along the path
-    instead of all at its end), moduli are blended with it and the deposition
-    stretches go as ``G^g`` (det G stays 1); ``fraction = 1`` is exactly the GAG
-    material.
+    instead of all at its end), moduli are blended with it (the tissue's
+    ``LAM (ln J)^2`` fades with ``g``, the contents' ``KAPPA`` rises with
+    ``1 - g``) and the deposition stretches go as ``G^g`` (det G stays 1);
+    ``fraction = 1`` is exactly the GAG material.
     """
+    form = VOLUMETRIC_FORMS.lookup(volumetric)
     s = float(fraction)
     g = (1.0 - s) * 10.0 ** (-4.0 * s)
     p = props[rows]
     p[:, MU] = g * p[:, MU] + (1.0 - g) * shear_modulus
-    p[:, LAM] = g * p[:, LAM] + (1.0 - g) * lame
+    p[:, LAM] *= g
+    p[:, KAPPA] = g * p[:, KAPPA] + (1.0 - g) * kappa
+    p[:, VOLUMETRIC] = form.code
     for col in (GR, GT, GZ):
         p[:, col] = p[:, col] ** g
     for k in range(MAX_FAMILIES):

@@ -5,17 +5,21 @@ swells. A hole of reference radius ``A`` in a plane-strain neo-Hookean annulus `
 surface then has an equilibrium only below the largest pressure the annulus holds: for the incompressible law the
 pressure rises monotonically to the saturation pressure ``mu ln(B/A)`` and never reaches it
 (:func:`sphgag.physics.cavity.annulus_pressure_incompressible`); for the engine's compressible law (eq. 2.21
-without pre-stretch or fibres) and a pool with contents of its own (eq. 2.27 with the bulk term) the curve is
+without pre-stretch or fibres) and a pool with contents of its own (eq. 2.27 with the volumetric term of
+``gag.volumetric``, :mod:`sphgag.physics.volumetric`, the same in the exact solution) the curve is
 :func:`sphgag.physics.cavity.pressure_for_volume_ratio`, and its largest pressure
-:func:`sphgag.physics.cavity.limit_pressure` (a saturation for the hole, a limit point for the pool of particles,
-whose contents' bulk term adds a little pressure that falls again as they swell).
+:func:`sphgag.physics.cavity.limit_pressure` (a saturation for the hole and for a pool of particles whose contents'
+stress saturates, ``convex``, at ``mu ln(B/A) + mu_GAG + kappa``; a limit point for ``log_squared`` contents, whose
+bulk term adds a little pressure that falls again as they swell; none for ``hartmann_neff``'s, which hold any
+pressure: the study refuses them).
 
 **Cases** (``verification.annulus``): two pool models (:data:`POOL_MODELS`, each a pool model of the engine's
 registry :data:`sphgag.studies.protocols.POOL_MODELS` with its contents),
 
 * ``hole``: an empty hole, its lining loaded by the pressure (the cavity of :mod:`sphgag.engine.pool_cavity` with
   contents of zero stiffness);
-* ``particles``: the paper's pool of GAG particles carrying Pi as their own stress (eq. 2.27 with the bulk term),
+* ``particles``: the paper's pool of GAG particles carrying Pi as their own stress (eq. 2.27 with the volumetric
+  term),
 
 each in annuli of ``outer_ratios`` B/A, at every spacing of ``dx_um``, swollen from rest with the pool's volume as
 the control (:func:`swell_by_volume`) through ``fractions`` (below 1) of the largest pressure, every state measured
@@ -53,7 +57,7 @@ class AnnulusPool(Variant):
     paper: bool = False
 
     def materials(self, matrix: dict, gag: dict) -> inclusion.Materials:
-        """The annulus' matrix around the pool and its contents (those of ``gag``, with its bulk term, as in the
+        """The annulus' matrix around the pool and its contents (those of ``gag``, with its volumetric term, as in the
         artery; none for an empty pool)."""
         if self.empty:
             gag = dict(gag, shear_modulus_kPa=0.0, lame_lambda_kPa=0.0)
@@ -95,13 +99,22 @@ class AnnulusVerification(Options):
 
 def materials(pool_model: str, matrix: dict, gag: dict) -> inclusion.Materials:
     """The annulus' matrix around the pool ``pool_model`` (:data:`POOL_MODELS`): the GAG contents of ``gag`` (with its
-    bulk term, as in the artery) or, for the ``hole``, contents of zero stiffness (:meth:`AnnulusPool.materials`)."""
+    volumetric term, as in the artery) or, for the ``hole``, contents of zero stiffness
+    (:meth:`AnnulusPool.materials`)."""
     return POOL_MODELS.lookup(pool_model).materials(matrix, gag)
 
 
 def limit(A: float, B: float, mat: inclusion.Materials) -> cavity.LimitPressure:
-    """The largest pressure the exact solution of these laws holds (:func:`sphgag.physics.cavity.limit_pressure`)."""
-    return cavity.limit_pressure(A, B, *swollen_pool.solids(mat))
+    """The largest pressure the exact solution of these laws holds (:func:`sphgag.physics.cavity.limit_pressure`);
+    ValueError where there is none (contents whose volumetric form's stress grows without bound hold any pressure:
+    no limit of existence to verify)."""
+    top = cavity.limit_pressure(A, B, *swollen_pool.solids(mat))
+    if not np.isfinite(top.pressure_kPa):
+        raise ValueError(
+            f"the pool with the volumetric form {mat.volumetric!r} holds any pressure (its contents' stress grows "
+            "without bound): the annulus verification has no limit of existence to check (gag.volumetric)"
+        )
+    return top
 
 
 def swell_by_volume(path_solver: solver.Solver, pressures, max_ratio: float) -> tuple[dict, str]:

@@ -333,6 +333,7 @@ def study(half_length: float, vc: dict, matrix: dict, gag: dict, numerics: Numer
         shear_modulus_kPa=gag["shear_modulus_kPa"],
         hourglass_modulus_kPa=gag["hourglass_modulus_kPa"],
         lame_lambda_kPa=0.0,
+        volumetric=mat.volumetric,  # eq. 2.27 as printed: no volumetric term
     )
     rows = []
     for dx in vc["dx_um"]:

@@ -3,10 +3,13 @@
 The SPH studies' boundary value problems on isoparametric quadratic triangles (scikit-fem: ``MeshTri2`` with its
 vertices and edge midpoints on the exact geometry), total Lagrangian, plane strain at ``lz = 1``, with the laws of
 :mod:`sphgag.physics.materials` (``pk2``): matrix ``W = mu/2 (I1 - 3) - mu ln J + lam/2 (ln J)^2`` (the elastin law,
-eq. 2.21, without pre-stretch or fibres), ``I1 = tr C_2D + 1``, ``J = det F``; pool (GAG, eq. 2.27) the same form with
-``(mu_g, lam_g)`` plus the prescribed Donnan term ``- Pi (J - 1)``. First Piola stress ``P = mu F + g F^-T``,
-``g = lam ln J - mu - Pi J``; consistent tangent ``dP/dF = mu I (x) I + (lam - Pi J) F^-T (x) F^-T - g F^-T_iL
-F^-T_kJ``. Newton, ``Pi`` applied in steps (linear predictor from the last two states, step halved on failure).
+eq. 2.21, without pre-stretch or fibres), ``I1 = tr C_2D + 1``, ``J = det F``; pool (GAG, eq. 2.27)
+``mu_g/2 (I1 - 3) - mu_g ln J + U(J)``, ``U = lam_g u(J)`` the contents' volumetric form
+(:mod:`sphgag.physics.volumetric`, the GAG's ``volumetric``), plus the prescribed Donnan term ``- Pi (J - 1)``.
+First Piola stress ``P = mu F + g F^-T``, ``g = h - mu - Pi J`` with ``h = J U'(J)`` (``lam ln J`` for the matrix);
+consistent tangent ``dP/dF = mu I (x) I + (k - Pi J) F^-T (x) F^-T - g F^-T_iL F^-T_kJ``, ``k = J dh/dJ``
+(``lam`` for the matrix). Newton, ``Pi`` applied in steps (linear predictor from the last two states, step halved on
+failure).
 The discretisation (:class:`_Model`): P2 displacement; in the matrix a P1 pressure ``p = lam ln J`` (Taylor-Hood,
 free of the locking of the nearly incompressible matrix, ``lam / mu = 111``).
 
@@ -18,7 +21,8 @@ offset ellipses ``((a + s) cos t, (b + s) sin t)`` outside, graded into the tip.
 annulus with an annular-sector pool (figure 4) on a polar grid graded into the pool's four corners, whose lines
 include every edge of the SPH probe regions (:func:`sphgag.engine.measure.pool_probes`), so their averages are
 integrals over whole elements. Mirror planes on the axes (``u_x = 0`` on ``x = 0``, ``u_y = 0`` on ``y = 0``),
-traction-free outer (and inner) boundaries. Materials are dicts with ``shear_modulus_kPa`` and ``lame_lambda_kPa``.
+traction-free outer (and inner) boundaries. Materials are dicts with ``shear_modulus_kPa`` and ``lame_lambda_kPa``,
+and for the GAG its ``volumetric`` form.
 """
 
 from __future__ import annotations
@@ -31,6 +35,7 @@ from skfem import Basis, BilinearForm, ElementTriP1, ElementTriP2, ElementVector
 
 from ..engine.geometry import Sector
 from ..engine.measure import pool_probes
+from ..physics import volumetric
 
 # Relative Newton residual (free dofs, against the pool pressure's forces) of an accepted state, and the bound under
 # which a state is also accepted once Newton stops converging (round-off: lam eps / Pi ~ 1e-10 at Pi = 0.05 kPa)
@@ -98,21 +103,25 @@ def _mapped_mesh(q, t, phi, inside):
     return _curved(vx, vpar, tri, fan, phi), _curved(vx[:, k], vpar[:, k], tri_p, fan[k], phi), pool, centre
 
 
-def _kinematics(grad_u, mu, lam, p, pi, tangent):
-    """``(F, J, ln J, P, A)`` at the quadrature points: first Piola stress ``P = mu F + g F^-T`` with ``g = p + lam ln J
-    - mu - Pi J`` (``p``: the mixed form's pressure, ``lam``: a displacement-only bulk term) and, if ``tangent``,
-    ``A = dP/dF`` at fixed ``p``."""
+def _kinematics(grad_u, mu, p, pi, tangent, bulk=None):
+    """``(F, J, ln J, P, A)`` at the quadrature points: first Piola stress ``P = mu F + g F^-T`` with ``g = p + h - mu
+    - Pi J`` (``p``: the mixed form's pressure; ``bulk = (kappa, form)``: a displacement-only volumetric term
+    ``kappa u(J)`` of a :class:`sphgag.physics.volumetric.VolumetricForm`, ``h = J U'``, none if None) and, if
+    ``tangent``, ``A = dP/dF`` at fixed ``p``."""
     F = grad_u + np.eye(2)[:, :, None, None]
     dJ = _jacobian_change(grad_u)
-    with np.errstate(invalid="ignore"):  # an inverted trial state (J <= 0) is rejected by the caller
+    with np.errstate(invalid="ignore", divide="ignore"):  # an inverted trial state (J <= 0) is rejected by the caller
         J, lnJ = 1.0 + dJ, np.log1p(dJ)
+        _, du, d2u = (0.0, 0.0, 0.0) if bulk is None else bulk[1].terms(J, 1.0)
+    kappa = 0.0 if bulk is None else bulk[0]
+    h, k = kappa * J * du, kappa * J * (du + J * d2u)  # J U' and J d(J U')/dJ
     FiT = _cofactor(F, J)
-    g = p + lam * lnJ - mu - pi * J
+    g = p + h - mu - pi * J
     P = mu * F + g * FiT
     if not tangent:
         return F, J, lnJ, P, None
     eye = np.eye(2)[:, None, :, None, None, None] * np.eye(2)[None, :, None, :, None, None]
-    A = mu * eye + (lam - pi * J) * np.einsum("ij...,kl...->ijkl...", FiT, FiT)
+    A = mu * eye + (k - pi * J) * np.einsum("ij...,kl...->ijkl...", FiT, FiT)
     return F, J, lnJ, P, A - g * np.einsum("il...,kj...->ijkl...", FiT, FiT)
 
 
@@ -153,11 +162,12 @@ def _mass(dp, q, w):  # int c dp q
 class _Model:
     """Displacement (P2) and, in the matrix, pressure (P1) of one problem. Matrix: the stationary points of
     ``int mu/2 (I1 - 3) - mu ln J + p ln J - p^2 / (2 lam)`` (eliminating ``p = lam ln J`` gives back ``W``). Pool
-    (``pool``: its elements): displacement only (a mixed form is unstable where ``p`` exceeds ~2 mu_g). The GAG law
-    loses ellipticity where ``mu_g (J + 1) + lam_g < lam_g ln J`` (equi-biaxial; J > 2.82 for the configuration's
-    GAG): with ``uniform_bulk`` its ``lam_g/2 (ln J)^2`` is taken at the pool's mean dilatation ``Jm`` (current /
-    reference area), exact for a homogeneous pool and the one well-posed continuation beyond: forces of a uniform
-    pressure ``-U'(Jm)``, tangent plus the rank one ``U''(Jm) / A f f^T`` (Sherman-Morrison)."""
+    (``pool``: its elements): displacement only (a mixed form is unstable where ``p`` exceeds ~2 mu_g). With
+    ``U = lam_g/2 (ln J)^2`` the GAG law loses ellipticity where ``mu_g (J + 1) + lam_g < lam_g ln J`` (equi-biaxial;
+    J > 2.82 for the configuration's GAG): with ``uniform_bulk`` its volumetric term ``U`` (any form) is taken at the
+    pool's mean dilatation ``Jm`` (current / reference area), exact for a homogeneous pool and the one well-posed
+    continuation beyond: forces of a uniform pressure ``-U'(Jm)``, tangent plus the rank one ``U''(Jm) / A f f^T``
+    (Sherman-Morrison)."""
 
     def __init__(self, mesh, mesh_p, pool, matrix, gag, uniform_bulk):
         self.mesh, self.mesh_p, self.pool, self.uniform = mesh, mesh_p, pool, uniform_bulk
@@ -165,8 +175,9 @@ class _Model:
         self.pbasis = Basis(mesh_p, ElementTriP1(), quadrature=self.basis.quadrature)
         self.n = self.basis.N
         self.mu = np.where(pool, gag["shear_modulus_kPa"], matrix["shear_modulus_kPa"])[:, None]
-        self.lam_g = gag["lame_lambda_kPa"]
-        self.lam = np.where(pool & ~uniform_bulk, self.lam_g, 0.0)[:, None]  # displacement-only bulk term
+        self.lam_g, self.form = gag["lame_lambda_kPa"], volumetric.FORMS.lookup(gag["volumetric"])
+        # the displacement-only volumetric term of the pool's elements (none in the matrix, nor with uniform_bulk)
+        self.contents = (np.where(pool & ~uniform_bulk, self.lam_g, 0.0)[:, None], self.form)
         self.mixed = (~pool).astype(float)[:, None]  # the pressure field's share (1 in the matrix)
         # the pressure equation int q (ln J - p / lam) in the matrix, int q (-p) (p = 0) on the pool's side
         self.inv_lam = np.where(pool, 1.0, 1.0 / matrix["lame_lambda_kPa"])[:, None]
@@ -181,17 +192,18 @@ class _Model:
         return self.n + self.pbasis.N
 
     def bulk(self, grad_u):
-        """``(Jm, U'(Jm), U''(Jm))`` of the pool's uniform bulk term ``U = lam_g/2 (ln J)^2`` (zeros without it)."""
+        """``(Jm, U'(Jm), U''(Jm))`` of the pool's uniform volumetric term ``U = lam_g u(J)`` (zeros without it)."""
         J = 1.0 + _jacobian_change(grad_u[:, :, self.pool])
         Jm = float(np.sum(J * self.basis.dx[self.pool]) / self.area)
         if not self.uniform or Jm <= 0:
             return Jm, 0.0, 0.0
-        return Jm, self.lam_g * np.log(Jm) / Jm, self.lam_g * (1.0 - np.log(Jm)) / Jm**2
+        _, dU, d2U = self.form.terms(Jm, self.lam_g)
+        return Jm, float(dU), float(d2U)
 
     def fields(self, x, pi, tangent=False):
         grad_u, p = self.basis.interpolate(x[: self.n]).grad, np.asarray(self.pbasis.interpolate(x[self.n :]))
         pool_pressure = np.where(self.pool, pi - self.bulk(grad_u)[1], 0.0)[:, None]
-        return _kinematics(grad_u, self.mu, self.lam, self.mixed * p, pool_pressure, tangent)
+        return _kinematics(grad_u, self.mu, self.mixed * p, pool_pressure, tangent, self.contents)
 
     def volume_gradient(self, F, J):
         """``f = int_pool J F^-T : grad v``: the gradient of the pool's current area (all dofs)."""
@@ -281,7 +293,7 @@ def _vertex_stress(model, x, point):
         ref = np.array([[0.0, 1.0, 0.0][k], [0.0, 0.0, 1.0][k]])[:, None]
         b = Basis(m, model.basis.elem, elements=np.array([e]), quadrature=(ref, np.ones(1)))
         p = x[model.n + model.mesh_p.t[k, e]]  # the pressure (P1) at the vertex
-        F, J, _, P, _ = _kinematics(b.interpolate(x[: model.n]).grad, model.mu[e], 0.0, p, 0.0, False)
+        F, J, _, P, _ = _kinematics(b.interpolate(x[: model.n]).grad, model.mu[e], p, 0.0, False)
         sig.append(np.einsum("ab...,cb...->ac...", P, F)[..., 0, 0] / J[0, 0])
     return np.mean(sig, axis=0)
 

@@ -47,7 +47,7 @@ from ..engine.loading import Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
 from ..options import Options
-from ..physics import inglis, materials
+from ..physics import inglis, materials, volumetric
 
 
 @dataclass(frozen=True)
@@ -174,7 +174,9 @@ def quarter_ellipse_area(a, b, extent):
 
 @dataclass(frozen=True)
 class Materials:
-    """Matrix (neo-Hookean, eq. 2.21 without pre-stretch) and GAG inclusion (eq. 2.27) constants [kPa]."""
+    """Matrix (neo-Hookean, eq. 2.21 without pre-stretch) and GAG inclusion (eq. 2.27) constants [kPa]; ``lam_gag``
+    the modulus of the GAG contents' volumetric term of the form ``volumetric``
+    (:data:`sphgag.physics.volumetric.FORMS`)."""
 
     mu: float
     lam: float
@@ -182,12 +184,13 @@ class Materials:
     lam_gag: float
     hourglass_modulus: float
     gag_hourglass_modulus: float
+    volumetric: str
 
     @classmethod
     def of(cls, matrix: dict, gag: dict, bulk: bool = False) -> Materials:
         """The elastin matrix (``matrix``: shear modulus, Lame parameter, hourglass modulus) around GAG of ``gag``'s
-        shear and hourglass moduli, without the bulk term (eq. 2.27 as printed) or, with ``bulk``, with ``gag``'s
-        (as in the artery's pools)."""
+        shear and hourglass moduli, without a volumetric term (eq. 2.27 as printed) or, with ``bulk``, with ``gag``'s
+        (``volumetric``, ``lame_lambda_kPa``: as in the artery's pools)."""
         return cls(
             mu=matrix["shear_modulus_kPa"],
             lam=matrix["lame_lambda_kPa"],
@@ -195,6 +198,7 @@ class Materials:
             lam_gag=gag["lame_lambda_kPa"] if bulk else 0.0,
             hourglass_modulus=matrix["hourglass_modulus_kPa"],
             gag_hourglass_modulus=gag["hourglass_modulus_kPa"],
+            volumetric=gag["volumetric"] if bulk else volumetric.FORMS.paper.name,
         )
 
     @property
@@ -212,10 +216,15 @@ class InclusionMaterial:
         self.gag = np.flatnonzero(layout.inclusion) if members is None else np.asarray(members, dtype=np.int64)
         self.table[:, materials.MU], self.table[:, materials.LAM] = mat.mu, mat.lam
         self.table[:, materials.HG_E] = mat.hourglass_modulus
-        g = self.gag
-        self.table[g, materials.MU], self.table[g, materials.LAM] = mat.mu_gag, mat.lam_gag
-        self.table[g, materials.HG_E] = mat.gag_hourglass_modulus
-        self.table[g, materials.TISSUE] = 0.0
+        materials.convert_to_gag(
+            self.table,
+            self.gag,
+            1.0,
+            mat.mu_gag,
+            mat.gag_hourglass_modulus,
+            kappa=mat.lam_gag,
+            volumetric=mat.volumetric,
+        )
 
     def __call__(self, load: Load) -> np.ndarray:
         out = self.table.copy()

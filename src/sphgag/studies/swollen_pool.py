@@ -25,6 +25,9 @@ particle. **Measures** (each at a converged state with its residual):
   surface carries the truncated stencil's error), against the exact ``sigma_tt(A+)``;
 * ``ring_crossing_um``: how far the pool's particles reach outside the lining (:func:`ring_crossing`; the paper's
   particles only);
+* ``pool_jacobian_spread``: the largest over the smallest volume ratio ``J_i`` of the pool's particles (the paper's
+  particles only; the exact pool's is 1, uniform): how far the contents are from the uniform state (a law that
+  loses ellipticity, docs/physics.md "GAG bulk term (a deviation)", lets them take a non-uniform one);
 * ``outer_radius_um``: the mean current radius of the outer ring against the exact ``r`` there.
 """
 
@@ -102,7 +105,7 @@ def swell_from_rest(model, pressures, steps: int, numerics: Numerics) -> tuple[d
 def solids(mat: inclusion.Materials) -> tuple[cavity.Solid, cavity.Solid]:
     """The matrix and the pool's contents of ``mat`` as the exact solution's solids
     (:class:`sphgag.physics.cavity.Solid`)."""
-    return cavity.Solid(mat.mu, mat.lam), cavity.Solid(mat.mu_gag, mat.lam_gag)
+    return cavity.Solid(mat.mu, mat.lam), cavity.Solid(mat.mu_gag, mat.lam_gag, volumetric=mat.volumetric)
 
 
 def circle_model(A: float, B: float, dx: float, mat: inclusion.Materials, numerics: Numerics, pool_model: str):
@@ -135,7 +138,7 @@ def measure_circle(model, state: solver.State, exact: cavity.CircularPool, h: fl
     lining = lay.ring_members(lay.first_matrix_ring)
     lining_exact = float(exact.field(np.array([R0[lining].mean()]))["r"][0])
     far = ~pool & (R0 >= lay.a + h)
-    _, s_tt, _, _ = measure.cauchy_polar(ev)
+    _, s_tt, _, J = measure.cauchy_polar(ev)
     ref = exact.field(R0[far])["sigma_tt"]
     edge = lay.ring_members(lay.ring_offset.size - 1)
     rings = range(lay.first_matrix_ring, lay.first_matrix_ring + inclusion.TIP_PARTICLES)
@@ -155,6 +158,7 @@ def measure_circle(model, state: solver.State, exact: cavity.CircularPool, h: fl
         lining_hoop_exact_kPa=exact.interface_hoop_kPa,
         lining_hoop_error=lining_hoop / exact.interface_hoop_kPa - 1.0,
         ring_crossing_um=np.nan if model.cavities else ring_crossing(state.x, np.flatnonzero(pool), lining),
+        pool_jacobian_spread=np.nan if model.cavities else float(J[pool].max() / J[pool].min()),
         outer_radius_um=float(r[edge].mean()),
         outer_radius_exact_um=float(exact.field(np.array([R0[edge].mean()]))["r"][0]),
         residual=state.convergence.residual,
@@ -179,7 +183,8 @@ def circle_study(
 
     ``vc``: ``radius_um`` (A), ``outer_radius_um`` (B), ``dx_um``, ``volume_ratios``, ``steps`` (pressure
     increments from rest to the largest); ``matrix``, ``gag``: as the pool verification's
-    (:meth:`sphgag.studies.inclusion.Materials.of`; the GAG's bulk term of ``gag`` is kept, as in the artery).
+    (:meth:`sphgag.studies.inclusion.Materials.of`; the GAG's volumetric term of ``gag`` is kept, as in the
+    artery).
     One row per (spacing, volume ratio): the prescribed pressure that gives that exact volume ratio, the engine's
     measures and the exact ones, and ``path_end`` (``complete``, or why the spacing's path ended: its rows beyond
     the last equilibrium carry no measures).
