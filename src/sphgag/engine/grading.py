@@ -42,8 +42,8 @@ class Grading(Options):
     """The graded spacing around GAG pools (the ``grading`` section): ``pool`` and ``corners`` are the spacings over the
     pools and at their corners as fractions of the coarse ``dx``; ``reach_um`` the distance [um] at the coarse
     spacing over which the spacing grows by ``dx`` (growth ``dx / reach_um`` per um, scaled with ``dx``);
-    ``column_cells``: the width of a graded column in its finest cells. ``pool = corners = 1`` is the uniform layout
-    (the pools' ends still cell boundaries)."""
+    ``column_cells``: the width of a graded column in its finest cells. ``pool = corners = 1`` (the default) is no
+    grading: the wall's own uniform layout (:func:`sphgag.studies.artery.bilayer_layout`)."""
 
     SECTION = "grading"
 

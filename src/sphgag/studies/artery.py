@@ -489,8 +489,9 @@ def pool_sector(case: dict) -> geometry.Sector:
 def bilayer_layout(p: Bilayer | dict, pools=(), graded: grading.Grading | dict | None = None) -> geometry.Layout:
     """Particles of the layered wall: one band per entry of ``layers``, each split at the ``aligned_radii_um`` inside
     it (cell boundaries: the radial edges of GAG pools). With ``pools`` (:class:`geometry.Sector`), their angular ends
-    are cell boundaries too, and with ``graded`` (:class:`sphgag.engine.grading.Grading`) the spacing is graded
-    around them (finest at their corners)."""
+    are cell boundaries and the spacing is graded around them (finest at their corners) by ``graded``
+    (:class:`sphgag.engine.grading.Grading`); without it, or with its uniform grading, the layout is the wall's own
+    uniform one (a pool is the particles whose centres lie in its sector)."""
     p = Bilayer.of(p)
     radii, names = [p.inner_radius_um], []
     for name, a, b in p.bands():
@@ -498,8 +499,8 @@ def bilayer_layout(p: Bilayer | dict, pools=(), graded: grading.Grading | dict |
         radii += [*inside, b]
         names += [name] * (len(inside) + 1)
     columns = None
-    if pools:
-        columns = grading.columns(grading.Field(tuple(pools), p.dx_um, grading.Grading.of(graded or {})))
+    if pools and graded is not None and not grading.Grading.of(graded).uniform:
+        columns = grading.columns(grading.Field(tuple(pools), p.dx_um, grading.Grading.of(graded)))
     return geometry.quarter_annulus(radii, p.dx_um, layer_names=names, pool_layers=p.pool_layers, columns=columns)
 
 
@@ -520,8 +521,9 @@ def bilayer_model(
     With ``pool`` (a :class:`geometry.Sector`, or a list of them) and the ``gag``
     parameters, the material is a :class:`history.HistoryMaterial` on the path from
     the intact wall to the wall with those medial sectors seeded as GAG pools: the
-    load's ``transition`` converts them and its ``concentration`` swells them. The pools' angular ends are cell
-    boundaries of the layout, graded around them by ``graded`` (:mod:`sphgag.engine.grading`; uniform without).
+    load's ``transition`` converts them and its ``concentration`` swells them. With a non-uniform ``graded``
+    (:mod:`sphgag.engine.grading`) the layout is graded around the pools, their ends cell boundaries
+    (:func:`bilayer_layout`).
     """
     numerics = Numerics.of(numerics)
     pools = [] if pool is None else [pool] if isinstance(pool, geometry.Sector) else list(pool)
