@@ -414,15 +414,12 @@ def test_a_pool_that_grows_into_a_symmetry_edge_stops_there(ci_config, wall):
     )
 
 
-def test_a_pool_past_the_limit_point_of_its_frozen_state_ends_at_that_limit_point(ci_config):
-    """A long pool (12 deg) in a wall 90 times softer than the artery's (elastin alone, mu = 1 kPa, no pre-stretch,
-    0.05 mmHg in the lumen), no damage: the pool's contents are what holds it, and eq. (2.27) with the volumetric
-    term ``log_squared`` under a prescribed Donnan pressure has a largest pressure, where
-    ``mu_g (1 - 1/J) + lam_g ln J / J`` peaks (ln J = 1 + mu_g/lam_g).
-    Raising the concentration past it, volume control finds the maximum concentration the pool holds, and the run
-    ends at that ``limit point``: between the contents' own limit (the closed form) and 2 mEq/l above it (what the
-    soft wall adds), between the last level reached and the first that was not."""
-    bl = dict(ci_config["bilayer"], elastin_shear_modulus_kPa=1.0, lame_lambda_kPa=100.0, hourglass_modulus_kPa=1.0)
+def soft_wall(ci_config, mu):
+    """``(model, start, gag)``: a wall of elastin alone (shear modulus ``mu`` kPa, its Lame parameter 100 ``mu`` and
+    hourglass modulus ``mu``; no pre-stretch, no smooth muscle, no collagen) at 0.05 mmHg in the lumen, and the
+    prescribed law's GAG (hourglass modulus 1 kPa; the contents' volumetric term ``log_squared``, whose pressure has a
+    largest value): a wall so soft that the pool's contents are what holds a pool."""
+    bl = dict(ci_config["bilayer"], elastin_shear_modulus_kPa=mu, lame_lambda_kPa=100.0 * mu, hourglass_modulus_kPa=mu)
     bl["prestretch"] = dict(bl["prestretch"], elastin_circumferential=1.0, elastin_axial=1.0, smc=1.0, collagen=1.0)
     bl["mass_fractions"] = {
         "media": {"elastin": 1.0, "smc": 0.0, "collagen": 0.0},
@@ -430,19 +427,58 @@ def test_a_pool_past_the_limit_point_of_its_frozen_state_ends_at_that_limit_poin
     }
     gag = dict(law_gag(ci_config, "prescribed"), hourglass_modulus_kPa=1.0, volumetric="log_squared")
     numerics = ci_config["numerics"]
-    model = artery.bilayer_model(bl, numerics, name="test-limit-point")
+    model = artery.bilayer_model(bl, numerics, name=f"test-soft-wall-{mu:g}")
     home = protocols.homeostasis(model, numerics, ci_config["homeostasis"])
     start = protocols.pressurise(model, home.state, 0.05, numerics)
-    st = settings(ci_config, critical_stress_kPa=1e6, max_concentration_mEq_l=40.0, concentration_step_mEq_l=10.0)
-    result = delamination.grow(
-        model, solver.State(start.load, start.x, None, None), [sector(45.0, 12.0)], st, numerics, gag, model.props
-    )
-    s = result.summary
-    assert s["stop_kind"] == "limit point" and s["stop_level_mEq_l"] == 40.0, s["stop"]
+    return model, solver.State(start.load, start.x, None, None), gag
+
+
+def contents_limit(gag):
+    """The largest concentration the pool's contents hold on their own (mEq/l): eq. (2.27) under a prescribed Donnan
+    pressure has a largest pressure, where ``mu_g (1 - 1/J) + lam_g ln J / J`` peaks (ln J = 1 + mu_g/lam_g); a wall
+    around them can only raise it."""
     mu, lam = gag["shear_modulus_kPa"], gag["lame_lambda_kPa"]
     J = np.exp(1.0 + mu / lam)
-    own = materials.concentration_for_pressure(
+    return materials.concentration_for_pressure(
         mu * (1 - 1 / J) + lam * np.log(J) / J, gag["bath_concentration_mEq_l"], gag["temperature_K"]
     )
+
+
+def test_a_pool_past_the_limit_point_of_its_frozen_state_ends_at_that_limit_point(ci_config):
+    """A long pool (12 deg) in a wall 90 times softer than the artery's (:func:`soft_wall`, mu = 1 kPa), no damage: the
+    pool's contents are what holds it (:func:`contents_limit`). Raising the concentration past it, volume control
+    finds the maximum concentration the pool holds, and the run ends at that ``limit point``: between the contents'
+    own limit and 2 mEq/l above it (what the soft wall adds), between the last level reached and the first that was
+    not."""
+    model, start, gag = soft_wall(ci_config, 1.0)
+    st = settings(ci_config, critical_stress_kPa=1e6, max_concentration_mEq_l=40.0, concentration_step_mEq_l=10.0)
+    result = delamination.grow(model, start, [sector(45.0, 12.0)], st, ci_config["numerics"], gag, model.props)
+    s = result.summary
+    assert s["stop_kind"] == "limit point" and s["stop_level_mEq_l"] == 40.0, s["stop"]
+    own = contents_limit(gag)
     assert own < s["limit_concentration_mEq_l"] < own + 2.0 and 30.0 <= s["limit_concentration_mEq_l"] < 40.0
     assert result.growth.concentration_mEq_l.max() == 30.0 and s["final_length_um"] == 0.0
+
+
+def test_a_damage_pass_past_the_limit_point_of_its_history_ends_at_that_limit_point(ci_config):
+    """The same pool in a wall 10 times stiffer (mu = 10 kPa) is held at 30.6 mEq/l. A damage pass that weakens every
+    tissue particle to D = 0.9 (the wall of the test above, whose pool's limit point lies below that) has no
+    equilibrium there: its transition fails, and its snap comes to rest at no equilibrium. Followed from the state
+    before the pass (the new history reached with the pool's volume held, then its volume as the control), the
+    concentration the pool holds passes a maximum: the run ends at that ``limit point``, between the contents' own
+    limit and the level, at its state before the pass (no state beyond the last equilibrium)."""
+    level = 30.6
+    model, start, gag = soft_wall(ci_config, 10.0)
+    st = settings(ci_config, critical_stress_kPa=1e6, max_concentration_mEq_l=level, concentration_step_mEq_l=level)
+    run = delamination.GrowthRun.seed(model, start, [sector(45.0, 12.0)], st, ci_config["numerics"], gag, model.props)
+    hist = run.hist
+    weakened = hist.with_damage(np.where(hist.gag, hist.D, 0.9), hist.onset_stretch, hist.onset_energy)
+    updates = iter([delamination.DamageUpdate(weakened)])
+    run.next_history = lambda: next(updates, delamination.DamageUpdate(None))  # the one pass, then no change
+    kind, what = run.settle_level(level)
+    assert kind == "limit point" and "pass 1, whose snap came to rest at no equilibrium" in what, what
+    assert contents_limit(gag) < run.limit_c < level
+    assert run.concentration == level and run.step == 0 and run.hist is hist and run.snaps == 0
+    assert [(r.step, r.concentration) for r in run.rows] == [(0, level)]  # the level's first state, and no other
+    assert run.state.convergence.residual < ci_config["numerics"]["tolerance"]
+    assert model.props is run.material  # the model is left at the run's material

@@ -251,6 +251,52 @@ def reach_volume(
         step = min(step * 1.5, growth)
 
 
+def hold_volume(
+    path_solver: solver.Solver,
+    last: solver.State,
+    members: np.ndarray,
+    end: Load,
+    *,
+    run: str | None = None,
+    parameter: str = "concentration",
+) -> VolumeState:
+    """The equilibrium at the end of the load path from the converged state ``last`` to ``end`` (e.g. the
+    ``transition`` 0 -> 1 of a change of history, :class:`sphgag.engine.history.HistoryMaterial`) with the volume of
+    the pool ``members`` held at ``last``'s and ``parameter`` (the concentration) as the unknown:
+    :func:`solve_at_volume` at each increment of the path (the rest of the path at first, halved where a solve fails,
+    at most ``solver.FALLBACK_BISECTIONS`` times; raises :class:`sphgag.engine.solver.NotConverged` below that). A
+    prescribed pool volume cannot snap, so this path passes where the same path at a fixed ``parameter`` can lose the
+    pool's equilibrium: it gives :func:`continue_path` its start under a new history
+    (:meth:`sphgag.studies.delamination.growth.GrowthRun.follow_snap`)."""
+    model = path_solver.model
+    run = run or model.name
+    options = path_solver.options.newton_budget()
+    pool = PoolVolume.of(model, members)
+    target = pool(last.evaluation if last.evaluation is not None else model.evaluate(last.x, last.load))
+    x, value, done = last.x, float(last.load.material_value(parameter)), 0.0
+    smallest = 0.5**solver.FALLBACK_BISECTIONS
+    step = 1.0
+    while True:
+        at = min(done + step, 1.0)
+        load = _at(last.load.lerp(end, at), value, parameter)
+        try:
+            held = solve_at_volume(model, pool, x, load, target, options.tol, options.max_iter, run, parameter)
+        except solver.SimulationError as exc:
+            step *= 0.5
+            if step < smallest:
+                name, unit = LABELS[parameter]
+                reason = (
+                    f"the path at a fixed pool volume stops {done:.3g} of the way, at {name} = {value:.4g} {unit} "
+                    f"({exc.reason})"
+                )
+                raise solver.NotConverged(run, load, reason) from exc
+            continue
+        if at == 1.0:
+            return held
+        x, value, done = held.x, held.concentration, at
+        step = min(2.0 * step, 1.0 - done)
+
+
 def continue_path(
     path_solver: solver.Solver,
     last: solver.State,

@@ -22,14 +22,22 @@ equilibrium: the wall snaps. The run follows the snap to where the overdamped ps
 growing from it at the same concentration. A concentration step with no equilibrium on its path is first followed
 by volume control with the damage frozen (:func:`sphgag.engine.pool_volume.continue_path`): if the concentration the
 pools hold has a maximum below the step's, the run ends at that ``limit point``; otherwise the state volume control
-reaches, or the snap, is the next state.
+reaches, or the snap, is the next state. A snap of a damage pass that comes to rest at no equilibrium is told apart
+the same way (:meth:`GrowthRun._no_rest`): from the state before the pass, the pass's history is reached with the
+pools' volume held (:func:`sphgag.engine.pool_volume.hold_volume`), then the pools' volume is the control under it;
+if the concentration they hold has a maximum below the level's, the damaged structure has no equilibrium at that
+concentration (a limit of existence) and the run ends at that ``limit point``; otherwise no limit point was found
+and the stop stays ``numerical``, saying what volume control found (it reached the level, an equilibrium the snap
+missed; it stopped with the concentration still rising; or it could not hold the pools' volume through the pass).
 
 **Stops** (:data:`sphgag.studies.delamination.tables.STOP_KINDS`, ``stop_kind`` in summary.csv): ``arrested`` (every
 level up to the ramp's end came to rest), ``merged``, ``unstable`` (growth at a fixed concentration did not arrest
-before a pool spanned ``max_extent_deg``, a cap on the run), ``edge`` (the candidate window of a symmetry edge),
-``layer`` (another layer or a free surface), ``limit point`` and ``numerical`` (a snap came to rest at no
-equilibrium, or ``max_passes`` ended growth); the run always ends at its last equilibrium. Then the concentrations of
-its events, onset, runaway and merge, are bisected between the ramp's levels (:meth:`GrowthRun.critical`).
+before a pool spanned ``max_extent_deg``, a cap on the run, or had run away before the level lost equilibrium),
+``edge`` (the candidate window of a symmetry edge), ``layer`` (another layer or a free surface), ``limit point`` (a
+concentration step's or a damage pass's) and ``numerical`` (a snap came to rest at no equilibrium and volume control
+found no limit point, or ``max_passes`` ended growth); the run always ends at its last equilibrium. Then the
+concentrations of its events, onset, runaway and merge, are bisected between the ramp's levels
+(:meth:`GrowthRun.critical`).
 
 **Pseudo-time** is the number of damage-and-relax passes. The paper's normalised time
 is that of its explicit dynamics, in which every time step is one damage update with
@@ -245,20 +253,39 @@ class GrowthRun:
 
     def _volume_control(self, load: Load, exc: solver.SimulationError) -> solver.State:
         """The concentration step to ``load`` has no equilibrium on its path: trace the pools' path with their volume
-        as the control and the damage frozen (:func:`sphgag.engine.pool_volume.continue_path`). Raises
-        :class:`LimitPoint` where the concentration the pools hold has a maximum below the step's; returns the state
-        at the step's concentration where volume control reaches it; else follows the step as a snap."""
-        c = float(load.material_value("concentration"))
-        what = f"c = {self.concentration:g} -> {c:g} mEq/l"
+        as the control and the damage frozen (:meth:`_frozen_path`). Raises :class:`LimitPoint` where the concentration
+        the pools hold has a maximum below the step's; returns the state at the step's concentration where volume
+        control reaches it; else follows the step as a snap (:meth:`follow_snap`; a snap that comes to rest at no
+        equilibrium raises :class:`sphgag.engine.snap.NoStableState`, its reason saying where volume control
+        stopped)."""
+        what = f"c = {self.concentration:g} -> {load.material_value('concentration'):g} mEq/l"
         log.info("[%s] %s has no equilibrium on its path (%s): volume control", self.name, what, exc.reason)
-        members = np.flatnonzero(self.hist.gag)
-        path, reached = pool_volume.continue_path(self.solver, self.state, members, [c], run=self.name)
+        reached, found = self._frozen_path(self.state, np.flatnonzero(self.hist.gag), load, what)
+        if reached is not None:
+            return reached
+        try:
+            return self.follow_snap(load, what, exc)
+        except snap.NoStableState as lost:
+            raise snap.NoStableState(self.name, load, f"{lost.reason}; {found}") from lost
+
+    def _frozen_path(self, start: solver.State, members: np.ndarray, load: Load, what: str):
+        """The pools' (``members``) path from the equilibrium ``start`` of the model's current material (the damage
+        frozen) with their volume as the control, towards ``load``'s concentration
+        (:func:`sphgag.engine.pool_volume.continue_path`). Raises :class:`LimitPoint` where the concentration the
+        pools hold passes a maximum below ``load``'s; else returns ``(the state at load's concentration or None, what
+        volume control found)``."""
+        c = float(load.material_value("concentration"))
+        path, reached = pool_volume.continue_path(self.solver, start, members, [c], run=self.name)
         if path.end == "limit point":
-            raise LimitPoint(self.name, load, path.reason, path.limit_concentration)
+            raise LimitPoint(self.name, load, f"{what}: {path.reason}", path.limit_concentration)
         if reached:
-            return reached[-1]
-        log.info("[%s] %s: %s", self.name, what, path.reason)
-        return self.follow_snap(load, what, exc)
+            found = f"volume control reaches c = {c:g} mEq/l: an equilibrium the snap did not come to rest at"
+        elif path.end == "complete":  # the path starts at no less than c
+            found = f"the pools' path starts at c = {start.load.material_value('concentration'):.4g} mEq/l"
+        else:
+            found = f"no limit point below c = {c:g} mEq/l: {path.reason}"
+        log.info("[%s] %s: %s", self.name, what, found)
+        return (reached[-1] if reached else None), found
 
     def next_history(self) -> DamageUpdate:
         """The damage update (eq. 2.28) from the current state (:class:`DamageUpdate`): the history it makes and the
@@ -308,7 +335,7 @@ class GrowthRun:
             new,
             load,
             run=self.name,
-            on_snap=lambda exc: self.follow_snap(load, f"pass {step}", exc),  # NoStableState leaves the run as it was
+            on_snap=lambda exc: self.follow_snap(load, f"pass {step}", exc, new),  # an error leaves the run as it was
         )
         self.step = step
         self.dissipated += released
@@ -333,10 +360,14 @@ class GrowthRun:
             )
         return True
 
-    def follow_snap(self, load: Load, what: str, exc: solver.SimulationError) -> solver.State:
+    def follow_snap(
+        self, load: Load, what: str, exc: solver.SimulationError, after: ParticleHistory | None = None
+    ) -> solver.State:
         """Follow a step with no equilibrium on its path (:mod:`sphgag.engine.snap`) from the current state to the
-        equilibrium the overdamped pseudo-dynamics come to rest at, under the model's current material and ``load``;
-        raises :class:`sphgag.engine.snap.NoStableState` if there is none."""
+        equilibrium the overdamped pseudo-dynamics come to rest at, under the model's current material and ``load``.
+        If there is none, raises :class:`sphgag.engine.snap.NoStableState`, or, for a damage pass to the history
+        ``after``, what :meth:`_no_rest` finds (:class:`LimitPoint` where that history has a limit point below the
+        level)."""
         log.info(
             "[%s] %s at c = %g mEq/l has no equilibrium on its path (%s): following the snap",
             self.name,
@@ -345,9 +376,46 @@ class GrowthRun:
             exc.reason,
         )
         self._snapping = what
-        state = snap.follow(self.solver, self.state.x, load, run=self.name)
+        try:
+            state = snap.follow(self.solver, self.state.x, load, run=self.name)
+        except snap.NoStableState as lost:
+            if after is None:
+                raise
+            self._no_rest(after, load, what, lost)
         self.snaps += 1
         return state
+
+    def _no_rest(self, after: ParticleHistory, load: Load, what: str, lost: snap.NoStableState):
+        """The snap of the damage pass ``what`` to the history ``after`` came to rest at no equilibrium (``lost``):
+        limit of existence or solver failure? From the last equilibrium, the run's state before the pass, the new
+        history is reached along its transition with the pools' volume held and the concentration the unknown
+        (:func:`sphgag.engine.pool_volume.hold_volume`; a prescribed volume cannot snap), and the pools' path is then
+        traced under it, the damage frozen, with their volume as the control (:meth:`_frozen_path`). Raises
+        :class:`LimitPoint` where the concentration they hold passes a maximum below the level's; else
+        :class:`sphgag.engine.snap.NoStableState`, its reason saying what volume control found. No state of this
+        search becomes the run's: the run stays at its state before the pass."""
+        log.info(
+            "[%s] %s at c = %g mEq/l: %s; volume control under its history",
+            self.name,
+            what,
+            load.material_value("concentration"),
+            lost.reason,
+        )
+        members = np.flatnonzero(after.gag)
+        self.model.set_props(self.material.towards(after))
+        before = solver.State(load.with_material(transition=0.0), self.state.x, self.state.evaluation, None)
+        try:
+            held = pool_volume.hold_volume(
+                self.solver, before, members, load.with_material(transition=1.0), run=self.name
+            )
+        except solver.SimulationError as exc:
+            found = f"the new history does not hold the pools' volume before the pass ({exc.reason})"
+            log.info("[%s] %s: %s", self.name, what, found)
+        else:
+            start = solver.State(held.load, held.x, None, held.convergence)
+            # raises LimitPoint
+            _, found = self._frozen_path(start, members, load, f"{what}, whose snap came to rest at no equilibrium")
+        raise snap.NoStableState(self.name, load, f"{lost.reason}; {found}") from lost
 
     def level(self, c: float) -> tuple[str, str]:
         """Damage passes at concentration ``c`` until the pools arrest or the run must end: ``(kind, what)``, the kind
@@ -374,8 +442,11 @@ class GrowthRun:
         return "arrested", "arrested"
 
     def settle_level(self, c: float) -> tuple[str, str]:
-        """:meth:`level` at ``c``, its loss of equilibrium a kind of its own: ``limit point`` (with
-        :attr:`limit_c`) or ``numerical`` (no stable state after a snap); the model is left at the run's material."""
+        """:meth:`level` at ``c``, its loss of equilibrium a kind of its own: ``limit point`` (with :attr:`limit_c`;
+        a concentration step's, or a snap's that came to rest at no equilibrium, :meth:`_no_rest`) or ``numerical``
+        (no stable state after a snap, and no limit point); ``unstable`` instead where the level's growth had run
+        away before (a pool at :data:`RUNAWAY_EXTENT_FACTOR` times its extent at rest). The model is left at the
+        run's material."""
         try:
             return self.level(c)
         except LimitPoint as exc:
@@ -383,15 +454,15 @@ class GrowthRun:
             kind, what = "limit point", f"no equilibrium: {exc.reason}"
         except snap.NoStableState as exc:
             kind, what = "numerical", f"no stable state after the snap of {self._snapping} ({exc.reason})"
-            extent = float(self.front.extent_deg(self.hist).max())
-            if extent >= RUNAWAY_EXTENT_FACTOR * self._rest_extent:  # the level had run away before the solver failed
-                kind, what = (
-                    "unstable",
-                    (
-                        f"growth at a fixed concentration did not arrest (a pool grew from {self._rest_extent:.3g} to "
-                        f"{extent:.3g} deg); then {what}"
-                    ),
-                )
+        extent = float(self.front.extent_deg(self.hist).max())
+        if extent >= RUNAWAY_EXTENT_FACTOR * self._rest_extent:  # the level had run away before it lost equilibrium
+            kind, what = (
+                "unstable",
+                (
+                    f"growth at a fixed concentration did not arrest (a pool grew from {self._rest_extent:.3g} to "
+                    f"{extent:.3g} deg); then {what}"
+                ),
+            )
         self.model.set_props(self.material)
         return kind, what
 

@@ -71,9 +71,12 @@ SUMMARY_COLUMNS = [
 #: ``arrested`` (the pools came to rest at every level up to the ramp's end), ``merged`` (two pools joined),
 #: ``unstable`` (growth at a fixed concentration did not arrest: the run stopped at ``max_extent_deg``), ``edge`` (the
 #: front reached a symmetry edge), ``layer`` (the front reached another layer or a free surface), ``limit point``
-#: (the pool has no equilibrium at the level: the concentration it holds, with the damage frozen, has a maximum below
-#: it, found by volume control), ``numerical`` (the solver found no stable state, or the run's pass budget ended) and
-#: ``not run`` (the run had no damage law to grow by, e.g. no G_c to match: its pools were seeded only)
+#: (the pools have no equilibrium at the level: the concentration they hold, with the damage frozen, has a maximum
+#: below it, found by volume control, after a concentration step with no equilibrium on its path or after a damage
+#: pass whose snap came to rest at no equilibrium, under the pass's history: ``limit_concentration_mEq_l``),
+#: ``numerical`` (a snap came to rest at no equilibrium and volume control found no limit point below the level, or
+#: the run's pass budget ended) and ``not run`` (the run had no damage law to grow by, e.g. no G_c to match: its pools
+#: were seeded only). A level whose growth had run away before it lost equilibrium ends ``unstable``.
 STOP_KINDS = ("arrested", "merged", "unstable", "edge", "layer", "limit point", "numerical", "not run")
 #: the stops at which growth at a fixed concentration did not arrest (their level has a runaway concentration)
 RUNAWAY_KINDS = ("merged", "unstable", "edge", "layer")
@@ -263,9 +266,10 @@ def level_classes(growth: pd.DataFrame, summary: dict, levels) -> pd.DataFrame:
       came to a stable state: ``no onset`` if damage has not begun (sigma_cr of eq. 2.28 not reached) by that level,
       ``onset, arrested`` otherwise (whatever they grew on the way);
     * in and beyond the level the run stopped in without arresting: ``propagation`` if it stopped during that level's
-      damage passes (merged, maximum extent, symmetry edge, pass limit, or a damage pass with no stable state after
-      it), ``no equilibrium`` if the ramp could not reach the level at all (the swollen wall has no stable state
-      there, before any new damage: the limit point of figure 4's swelling, or a failure of the discretisation).
+      damage passes (merged, maximum extent, symmetry edge, pass limit, a damage pass with no stable state after it,
+      or one past the limit point of its history), ``no equilibrium`` if the ramp could not reach the level at all
+      (the swollen wall has no stable state there, before any new damage: the limit point of figure 4's swelling, or
+      a failure of the discretisation).
 
     Rows: ``concentration_mEq_l``, ``state``, ``delaminated_length_um`` (at the level's last equilibrium; NaN beyond
     the run).
