@@ -1,11 +1,12 @@
 """Graded particle spacing around GAG pools: finest at their corners, coarsest away from them.
 
 A sector pool (figure 4) is a rectangle in (r, theta) whose four corners are re-entrant corners of the media around
-it; there the field of a swelling pool is singular, and under uniform refinement the pool's volume (and the
-concentration that holds a volume) converges at first order: measured against a finite-element reference of the
-same pool, the error sits at the pools' angular ends (docs/physics.md, "Where figure 4's first-order error comes
-from"). The classical remedy is spacing graded towards the singularity (Babuska et al.); SPHinXsys blends the spacing
-smoothly between a finest and a coarsest value with a per-particle kernel support, as here.
+it; there the field of a swelling pool is singular. Measured against a finite-element reference of the pool in an
+all-elastin wall, the particles' error sits at the pools' angular ends; in the artery's wall it is set by the
+spacing over the pool, its interface (docs/physics.md, "Where figure 4's first-order error comes from"). Spacing
+graded towards the pool and its corners (Babuska et al.) reaches either at less cost than uniform refinement;
+SPHinXsys blends the spacing smoothly between a finest and a coarsest value with a per-particle kernel support, as
+here.
 
 **The field** (um), for a coarse spacing ``dx`` and the options :class:`Grading`::
 

@@ -121,8 +121,15 @@ class Cavity:
         if self.mirrored:
             return pressure_stiffness_blocks(block_index, self.loop)
         k = self.loop
-        nxt = np.array([block_index(k[i], k[(i + 1) % k.size]) for i in range(k.size)], dtype=np.int64)
-        prv = np.array([block_index(k[i], k[i - 1]) for i in range(k.size)], dtype=np.int64)
+        try:
+            nxt = np.array([block_index(k[i], k[(i + 1) % k.size]) for i in range(k.size)], dtype=np.int64)
+            prv = np.array([block_index(k[i], k[i - 1]) for i in range(k.size)], dtype=np.int64)
+        except KeyError as e:  # the Jacobian's pattern is the kernel's pairs
+            raise ValueError(
+                f"the cavity's lining has consecutive particles that are not kernel neighbours ({e.args[0]}): its "
+                "loop, ordered by angle about the pool's centre, is not a chain of neighbours on this layout (a "
+                "graded layout around a long pool can do this; use the particles pool model there)"
+            ) from None
         return nxt, prv
 
     def add_stiffness(self, data: np.ndarray, blocks: tuple, pressure_kPa: float, lz: float) -> None:
