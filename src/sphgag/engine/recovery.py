@@ -86,47 +86,53 @@ def averaged(model, props, values: np.ndarray) -> np.ndarray:
     """``sum_j w_ij v_j``: ``values`` averaged over each particle's kernel neighbourhood (itself and its stencil of
     eq. 2.1, mirror images included) within its own volumetric law (the neighbours whose rows share ``LAM``, ``KAPPA``,
     its form and ``TISSUE``: a layer border or a pool's lining is not averaged across), with the kernel weights of
-    eq. (2.4) corrected to reproduce linear fields (:func:`linear_weights`)."""
-    nb, V = model.nb, model.layout.volume
-    law = props[:, [materials.LAM, materials.KAPPA, materials.VOLUMETRIC, materials.TISSUE]]
-    owner = np.repeat(np.arange(model.n), np.diff(nb.ptr))
-    same = np.all(law[owner] == law[nb.nbr], axis=1).astype(float)
-    w, w_self = np.empty(nb.n_entries), np.empty(model.n)
-    linear_weights(nb.ptr, nb.nbr, nb.R, nb.w, nb.hp, V, same, w, w_self)
-    return w_self * values + np.bincount(owner, w * values[nb.nbr], minlength=model.n)
+    eq. (2.4) corrected to reproduce linear fields (:func:`linear_average`)."""
+    nb = model.nb
+    law = np.ascontiguousarray(props[:, [materials.LAM, materials.KAPPA, materials.VOLUMETRIC, materials.TISSUE]])
+    out = np.empty(model.n)
+    linear_average(nb.ptr, nb.nbr, nb.R, nb.w, nb.hp, model.layout.volume, law, np.ascontiguousarray(values), out)
+    return out
 
 
 @njit(cache=True, error_model="numpy")
-def linear_weights(ptr, nbr, R, xi, hp, V, same, w, w_self):
-    """Weights ``w`` (per entry) and ``w_self`` of each particle's average over itself and its neighbours ``same``:
-    ``V_j xi_ij (alpha_i + beta_i . R_ij)`` (``xi`` of eq. 2.4, ``xi(0)`` for the particle itself), with ``alpha_i,
-    beta_i`` such that the weights sum to one and their first moment ``sum_j w_ij R_ij`` vanishes: a linear field is
-    averaged exactly, beside a surface too. A particle whose moment matrix is singular (too few neighbours of its own
-    law) falls back to the normalised kernel weights (constants only)."""
+def linear_average(ptr, nbr, R, xi, hp, V, law, values, out):
+    """``out_i = w_ii v_i + sum_j w_ij v_j`` over particle i and its neighbours j of the same ``law`` row, with the
+    weights ``V_j xi_ij (alpha_i + beta_i . R_ij)`` (``xi`` of eq. 2.4, ``xi(0)`` for the particle itself) whose
+    ``alpha_i, beta_i`` make them sum to one with no first moment ``sum_j w_ij R_ij``: a linear field is averaged
+    exactly, beside a surface too. A particle whose moment matrix is singular (too few neighbours of its own law)
+    falls back to the normalised kernel weights (constants only)."""
     n = ptr.shape[0] - 1
     for i in range(n):
         s0 = V[i] * spiky(0.0, hp[i])
         m0, m1x, m1y, mxx, mxy, myy = s0, 0.0, 0.0, 0.0, 0.0, 0.0
+        v0, v1x, v1y = s0 * values[i], 0.0, 0.0  # the moments of the values
         for e in range(ptr[i], ptr[i + 1]):
-            c = same[e] * V[nbr[e]] * xi[e]
+            j = nbr[e]
+            same = True
+            for k in range(law.shape[1]):
+                same = same and law[i, k] == law[j, k]
+            if not same:
+                continue
+            c = V[j] * xi[e]
+            r0, r1 = R[e, 0], R[e, 1]
             m0 += c
-            m1x += c * R[e, 0]
-            m1y += c * R[e, 1]
-            mxx += c * R[e, 0] * R[e, 0]
-            mxy += c * R[e, 0] * R[e, 1]
-            myy += c * R[e, 1] * R[e, 1]
+            m1x += c * r0
+            m1y += c * r1
+            mxx += c * r0 * r0
+            mxy += c * r0 * r1
+            myy += c * r1 * r1
+            v0 += c * values[j]
+            v1x += c * r0 * values[j]
+            v1y += c * r1 * values[j]
         det = mxx * myy - mxy * mxy
-        bx = by = 0.0
-        alpha = 1.0 / m0
         if det > 1e-8 * (mxx + myy) ** 2:
-            # beta = -alpha M2^-1 m1, alpha = 1 / (m0 - m1 . M2^-1 m1)
+            # w = c (alpha + beta . R), beta = -alpha M2^-1 m1, alpha = 1 / (m0 - m1 . M2^-1 m1)
             ux = (myy * m1x - mxy * m1y) / det
             uy = (mxx * m1y - mxy * m1x) / det
             alpha = 1.0 / (m0 - (m1x * ux + m1y * uy))
-            bx, by = -alpha * ux, -alpha * uy
-        w_self[i] = s0 * alpha
-        for e in range(ptr[i], ptr[i + 1]):
-            w[e] = same[e] * V[nbr[e]] * xi[e] * (alpha + bx * R[e, 0] + by * R[e, 1])
+            out[i] = alpha * (v0 - ux * v1x - uy * v1y)
+        else:
+            out[i] = v0 / m0
 
 
 @dataclass(frozen=True)
