@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from sphgag import config
-from sphgag.engine import hourglass, kernel
+from sphgag.engine import hourglass, kernel, recovery
 from sphgag.engine.loading import Load
 from sphgag.engine.model import Model
 from sphgag.physics import damage, donnan
@@ -29,6 +29,7 @@ REGISTRIES = {
     "pool model": protocols.POOL_MODELS,
     "hourglass form": hourglass.FORMS,
     "pool model of the annulus": annulus.POOL_MODELS,
+    "stress recovery": recovery.RECOVERIES,
 }
 
 
@@ -73,6 +74,7 @@ def test_the_names_the_pipeline_and_the_figures_know_are_unchanged():
     assert tuple(onset.CRITERIA) == ("particle", "averaged") and tuple(candidates.RULES) == ("contact", "window")
     assert tuple(protocols.POOL_MODELS) == ("particles", "cavity") and tuple(hourglass.FORMS) == ("paper", "energy")
     assert tuple(annulus.POOL_MODELS) == ("hole", "particles")
+    assert tuple(recovery.RECOVERIES) == ("paper", "volumetric", "traction")
     assert protocols.POOL_MODELS["cavity"].laws == ("prescribed",) and protocols.POOL_MODELS["cavity"].hourglass
 
 
@@ -80,6 +82,9 @@ def test_the_schema_enumerates_and_titles_every_registry(ci_config):
     s = config.schema(SCHEMA)["properties"]
     hg = s["numerics"]["properties"]["hourglass"]
     assert hg["enum"] == ["paper", "energy"] and hourglass.FORMS["energy"].title in hg["description"]
+    reading = s["numerics"]["properties"]["stress_recovery"]
+    assert reading["enum"] == list(recovery.RECOVERIES)
+    assert recovery.RECOVERIES["traction"].title in reading["description"]
     annulus_pools = s["verification"]["properties"]["annulus"]["properties"]["pool_models"]
     assert annulus_pools["items"]["enum"] == ["hole", "particles"]
     circle = s["verification"]["properties"]["circular_pool"]["properties"]["pool_models"]

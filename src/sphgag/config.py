@@ -21,7 +21,7 @@ from pathlib import Path
 import jsonschema
 import yaml
 
-from .engine import hourglass
+from .engine import hourglass, recovery
 from .engine.grading import Grading
 from .engine.numerics import Numerics
 from .options import key_text
@@ -185,6 +185,7 @@ def _registries() -> dict:
     it with no edit of the schema."""
     return {
         ("numerics", "hourglass"): hourglass.FORMS,
+        ("numerics", "stress_recovery"): recovery.RECOVERIES,
         ("gag", "charge_laws"): donnan.LAWS,
         ("gag", "volumetric"): volumetric.FORMS,
         ("swelling", "pool_models"): protocols.POOL_MODELS,

@@ -15,16 +15,17 @@ from .model import Evaluation, Model
 
 
 def cauchy(ev: Evaluation):
-    """``(sigma, J)``: the in-plane Cauchy stress ``sigma = P F^T / J`` (eq. 2.10) of every particle, ``(n, 2, 2)``,
-    and ``J = det F lambda_z``."""
-    F, P = ev.F, ev.P
-    J = (F[:, 0, 0] * F[:, 1, 1] - F[:, 0, 1] * F[:, 1, 0]) * ev.load.axial_stretch
-    return np.einsum("nab,ncb->nac", P, F) / J[:, None, None], J
+    """``(sigma, J)``: the in-plane Cauchy stress of every particle, ``(n, 2, 2)``, as the evaluation's stress
+    recovery reads it (:mod:`sphgag.engine.recovery`; the paper's: ``sigma = P F^T / J``, eq. 2.10), and
+    ``J = det F lambda_z``."""
+    return ev.cauchy()
 
 
-def cauchy_polar(ev: Evaluation):
-    """``(sigma_rr, sigma_tt, sigma_rt, J)`` of every particle in its current polar frame (eq. 2.10)."""
-    sig, J = cauchy(ev)
+def cauchy_polar(ev: Evaluation, kernel: bool = False):
+    """``(sigma_rr, sigma_tt, sigma_rt, J)`` of every particle in its current polar frame, as recovered
+    (:func:`cauchy`), or with ``kernel`` the particle's own kernel stress (eq. 2.10,
+    :meth:`sphgag.engine.model.Evaluation.kernel_cauchy`) whatever the recovery."""
+    sig, J = ev.kernel_cauchy() if kernel else cauchy(ev)
     x = ev.x
     phi = np.arctan2(x[:, 1], x[:, 0])
     c, s = np.cos(phi), np.sin(phi)
@@ -49,10 +50,13 @@ def ring_profile(model: Model, ev: Evaluation) -> pd.DataFrame:
     """Transmural profile: per ring, the mean current radius and mean Cauchy stresses.
 
     Rings are averaged over all their particles (the state is axisymmetric
-    for the intact wall); ``circ_stress_std_kPa`` shows how uniform a ring is.
+    for the intact wall); ``circ_stress_std_kPa`` shows how uniform a ring is. The stresses are the recovered ones
+    (:func:`cauchy`); ``*_kernel_kPa`` are the particles' own kernel stresses (eq. 2.10), the same under the paper's
+    recovery.
     """
     lay = model.layout
     srr, stt, _, J = cauchy_polar(ev)
+    krr, ktt, _, _ = cauchy_polar(ev, kernel=True)
     rad = np.linalg.norm(ev.x, axis=1)
     rows = []
     for k in range(len(lay.ring_radius)):
@@ -67,6 +71,8 @@ def ring_profile(model: Model, ev: Evaluation) -> pd.DataFrame:
                 circ_stress_kPa=stt[m].mean(),
                 circ_stress_std_kPa=stt[m].std(),
                 jacobian=J[m].mean(),
+                radial_stress_kernel_kPa=krr[m].mean(),
+                circ_stress_kernel_kPa=ktt[m].mean(),
             )
         )
     return pd.DataFrame(rows)

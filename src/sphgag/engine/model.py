@@ -16,7 +16,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from ..physics import materials
-from . import forces, hourglass, kernel, pool_cavity
+from . import forces, hourglass, kernel, pool_cavity, recovery
 from .geometry import Layout
 from .kernel import Neighbours
 from .loading import (
@@ -42,6 +42,25 @@ class Evaluation:
     constrained: np.ndarray  # particle indices with prescribed positions
     target: np.ndarray  # their prescribed positions
     F_hourglass: np.ndarray | None = None  # F~ of the hourglass penalty (kernel.hourglass_gradients)
+    # ev -> (sigma, J): the stress every measurement reads (engine.recovery), bound to the model; None: eq. 2.10
+    recovery: Callable | None = field(default=None, repr=False, compare=False)
+    recovered: tuple | None = field(default=None, repr=False, compare=False)  # its value, once computed
+
+    def kernel_cauchy(self) -> tuple[np.ndarray, np.ndarray]:
+        """``(sigma, J)``: each particle's own in-plane Cauchy stress ``sigma = P F^T / J`` (eq. 2.10), ``(n, 2, 2)``
+        in global x-y, and ``J = det F lambda_z``: the stress the equilibrium balances."""
+        F, P = self.F, self.P
+        J = (F[:, 0, 0] * F[:, 1, 1] - F[:, 0, 1] * F[:, 1, 0]) * self.load.axial_stretch
+        return np.einsum("nab,ncb->nac", P, F) / J[:, None, None], J
+
+    def cauchy(self) -> tuple[np.ndarray, np.ndarray]:
+        """``(sigma, J)`` as the measurements read them: the stress recovered by the model's recovery
+        (:mod:`sphgag.engine.recovery`, computed once), or the kernel stress (eq. 2.10) without one."""
+        if self.recovery is None:
+            return self.kernel_cauchy()
+        if self.recovered is None:
+            self.recovered = self.recovery(self)
+        return self.recovered
 
     @property
     def residual_vector(self) -> np.ndarray:
@@ -85,6 +104,9 @@ class Model:
     hourglass_alpha : alpha of eq. (2.14); E comes from the property table.
     hourglass : the name of the hourglass control's form (the registry :data:`sphgag.engine.hourglass.FORMS`):
         ``paper`` (eq. 2.14 as printed) or ``energy`` (its energy form, :mod:`sphgag.engine.hourglass`).
+    stress_recovery : the name of the stress its evaluations are read with (the registry
+        :data:`sphgag.engine.recovery.RECOVERIES`; ``paper``: the kernel stress of eq. 2.10). The forces do not
+        depend on it.
     cavities : pools modelled as pressurised cavities (:class:`sphgag.engine.pool_cavity.Cavity`): the swelling pressure
         their particles' rows carry acts on their linings, their particles are held and carry nothing, and every
         deformation gradient sees its own material only.
@@ -101,12 +123,14 @@ class Model:
     boundary: Callable[[Load], tuple] | None = None
     hourglass: str = "paper"
     cavities: tuple = ()
+    stress_recovery: str = "paper"
     # derived data of the fields above (material tables, hourglass stencil): every model object, a replaced one too,
     # starts with its own, empty
     _cache: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     def __post_init__(self):
         hourglass.FORMS.lookup(self.hourglass)
+        recovery.RECOVERIES.lookup(self.stress_recovery)
         self.cth = np.cos(self.layout.theta)
         self.sth = np.sin(self.layout.theta)
         indptr, indices, blockmap, map_ptr = forces.block_pattern(self.nb.ptr, self.nb.nbr)
@@ -275,6 +299,7 @@ class Model:
             constrained=cons,
             target=target,
             F_hourglass=Fh,
+            recovery=recovery.RECOVERIES[self.stress_recovery].bind(self),
         )
 
     def jacobian(self, ev: Evaluation) -> np.ndarray:

@@ -15,7 +15,9 @@ class Numerics(Options):
     (:data:`sphgag.engine.hourglass.FORMS`: ``paper``, eq. 2.14 as printed, or ``energy``, its energy form);
     ``tolerance``: the relative residual of a
     converged state; ``max_newton_iterations`` and ``max_bisections``: Newton's method per load step and the halvings
-    of a step; ``reuse_factorisation``: chord steps with the last factorisation before refactorising."""
+    of a step; ``reuse_factorisation``: chord steps with the last factorisation before refactorising;
+    ``stress_recovery``: how the measurements read the stress (:data:`sphgag.engine.recovery.RECOVERIES`: ``paper``,
+    the kernel stress of eq. 2.10; ``volumetric``; ``traction``), with the equilibrium unchanged."""
 
     SECTION = "numerics"
 
@@ -26,10 +28,14 @@ class Numerics(Options):
     max_newton_iterations: int
     max_bisections: int
     reuse_factorisation: bool
+    stress_recovery: str = "paper"
 
-    def hourglass_control(self) -> dict:
-        """The hourglass keywords of a :class:`sphgag.engine.model.Model` (``hourglass_alpha``, ``hourglass``)."""
-        return dict(hourglass_alpha=self.hourglass_alpha, hourglass=self.hourglass)
+    def model_options(self) -> dict:
+        """The numerical keywords of a :class:`sphgag.engine.model.Model`: the hourglass control (``hourglass_alpha``,
+        ``hourglass``) and the ``stress_recovery``."""
+        return dict(
+            hourglass_alpha=self.hourglass_alpha, hourglass=self.hourglass, stress_recovery=self.stress_recovery
+        )
 
     def solver_options(self) -> PathOptions:
         """The options of the run's load paths (:class:`sphgag.engine.solver.PathOptions`): its tolerance, Newton

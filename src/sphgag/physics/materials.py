@@ -322,6 +322,19 @@ def pk2(c_rr, c_tt, c_rt, lz, props, i):
 
 
 @njit(cache=True, error_model="numpy")
+def volumetric_stress(props, J, out):
+    """``out[i] = U_i'(J[i])``: the Cauchy stress ``U'(J) I`` of the terms of particle i's strain energy that depend
+    on ``J`` alone (eqs. 2.18, 2.21, 2.26-2.27): ``U = -MU ln J + LAM/2 (ln J)^2 + KAPPA u(J) - PI (J - 1) + W_D(J)``,
+    so ``U' = (h - MU) / J - PI - PI_D(J)`` with ``h = J (LAM ln J / J + KAPPA u')`` of :func:`_volumetric` (the
+    isotropic part of :func:`pk2` that is not ``MU G^2``). The stress recovery averages it
+    (:mod:`sphgag.engine.recovery`)."""
+    for i in range(J.shape[0]):
+        h = _volumetric(props, i, J[i], np.log(J[i]))[1]
+        pi = props[i, PI] + donnan(J[i], props[i, FCD], props[i, CBATH], props[i, RT])[0]
+        out[i] = (h - props[i, MU]) / J[i] - pi
+
+
+@njit(cache=True, error_model="numpy")
 def material_tangent(c_rr, c_tt, c_rt, lz, props, i, C):
     """Material tangent ``2 dS/dC`` of particle ``i`` into ``C`` (3 x 3, Voigt order rr, tt, rt).
 

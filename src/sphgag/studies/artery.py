@@ -93,7 +93,7 @@ def mean_model(p: dict, numerics: Numerics, name: str = "mean") -> Model:
     props = materials.mean_behaviour(
         layout.n, p["shear_modulus_kPa"], p["lame_lambda_kPa"], mean_fibre_families(p), p["hourglass_modulus_kPa"]
     )
-    return Model(name, layout, nb, props, **numerics.hourglass_control())
+    return Model(name, layout, nb, props, **numerics.model_options())
 
 
 def mean_thick_wall(p: dict) -> analytic.ThickWallTube:
@@ -532,7 +532,7 @@ def bilayer_model(
     material = BilayerMaterial(p, layout)
     if pools:
         material = seeding(material, layout, pools, gag)
-    return Model(name, layout, nb, material, **numerics.hourglass_control())
+    return Model(name, layout, nb, material, **numerics.model_options())
 
 
 def seeding(base, layout: geometry.Layout, sectors, gag: dict) -> history.HistoryMaterial:

@@ -211,7 +211,7 @@ def crack_model(problem: Problem, numerics: Numerics, name: str = "crack") -> tu
     table.setflags(write=False)
     material = HistoryMaterial(lambda load: table.copy(), ParticleHistory.intact(lay.n).seed([lay.slit]), problem.gag)
     boundary = ExactBoundary(lay, problem.mat, pressure="face_pressure")
-    model = Model(name, lay, nb, material, boundary=boundary, **numerics.hourglass_control())
+    model = Model(name, lay, nb, material, boundary=boundary, **numerics.model_options())
     return model, material
 
 

@@ -260,7 +260,7 @@ def inclusion_model(
         nb,
         InclusionMaterial(lay, mat),
         boundary=None if free else ExactBoundary(lay, mat),
-        **numerics.hourglass_control(),
+        **numerics.model_options(),
     )
 
 

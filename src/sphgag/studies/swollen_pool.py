@@ -253,7 +253,7 @@ def sector_model(
     numerics = Numerics.of(numerics)
     nb = kernel.for_layout(lay, numerics.kernel_support_factor)
     material = inclusion.InclusionMaterial(lay, mat, members)
-    model = Model(f"sector_pool_{pool_model}_dx{dx:g}", lay, nb, material, **numerics.hourglass_control())
+    model = Model(f"sector_pool_{pool_model}_dx{dx:g}", lay, nb, material, **numerics.model_options())
     return protocols.POOL_MODELS.lookup(pool_model).around(model, members), members
 
 
