@@ -15,6 +15,7 @@ import seaborn as sns  # noqa: E402
 
 from ..physics import donnan  # noqa: E402
 from ..records.provenance import figure_metadata  # noqa: E402
+from . import overlap  # noqa: E402
 
 LAYER_COLOURS = {"media": "#3b6fb6", "adventitia": "#2e9e5b", "GAG": "#d1352b"}  # the paper's layers and the pools
 GAG_CONCENTRATION = "GAG concentration (mEq/l)"
@@ -159,7 +160,9 @@ def law_blocks(laws, heights, width: float = 11.0):
 
 
 def save(fig, paths, description: str):
-    """Save ``fig`` to every path (format from the suffix) with provenance metadata."""
+    """Save ``fig`` to every path (format from the suffix) with provenance metadata; where the environment asks for it,
+    record the figure's text overlaps first (:func:`sphgag.views.overlap.record`, under the name of its PNG)."""
+    overlap.record(fig, next((p for p in paths if str(p).endswith(".png")), paths[0]))
     for path in paths:
         Path(path).parent.mkdir(parents=True, exist_ok=True)
         meta = figure_metadata(description)
