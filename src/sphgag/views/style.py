@@ -137,13 +137,6 @@ def paper_pool(table: pd.DataFrame) -> pd.DataFrame:
     return table[table.pool_model == PAPER_POOL] if "pool_model" in table else table
 
 
-def variant_title(law: str, pool: str) -> str:
-    """The heading of one (charge law, pool model) pair."""
-    if pool == PAPER_POOL:
-        return law_title(law)
-    return f"{law_short(law)}; {POOL_TITLES.get(pool, pool)}"
-
-
 def variant_short(law: str, pool: str) -> str:
     """The label of one (charge law, pool model) pair: the law's, or, for another pool model, both names."""
     return law_short(law) if pool == PAPER_POOL else f"{law} law, pool as {pool}"
