@@ -40,9 +40,9 @@ def drawn_texts(fig) -> list:
     return list({id(t): (t, box) for t, box in texts}.values())  # an artist drawn twice (a layout pass) counts once
 
 
-def describe(text) -> str:
-    """A text artist in words: its string and where it is (the title of its axes, if any)."""
-    ax = text.axes
+def describe(text, ax=None) -> str:
+    """A text artist in words: its string and where it is (the title of its axes ``ax``, by default the text's)."""
+    ax = ax or text.axes
     if ax is None:
         return f"{type(text).__name__} {text.get_text()!r}"
     titles = [ax.get_title(loc) for loc in ("left", "center", "right")]
@@ -50,12 +50,21 @@ def describe(text) -> str:
     return f"{type(text).__name__} {text.get_text()!r} in axes {name!r}"
 
 
+def owners(fig) -> dict:
+    """The axes of every text artist of ``fig`` that belongs to one (tick labels included), by the text's id."""
+    return {id(t): ax for ax in fig.axes for t in ax.findobj(matplotlib.text.Text)}
+
+
 def overlaps(fig) -> list[tuple[str, str]]:
     """The problems of ``fig``'s text, each a pair of descriptions (:func:`describe`): two texts whose boxes overlap
     by more than :data:`TOLERANCE_PX` both ways, or a text and "the canvas" when the text leaves the figure."""
-    texts = drawn_texts(fig)
+    texts, of = drawn_texts(fig), owners(fig)
     canvas = fig.bbox
     found = []
+
+    def name(text):
+        return describe(text, of.get(id(text)))
+
     for i, (a, box_a) in enumerate(texts):
         if (
             box_a.x0 < canvas.x0 - TOLERANCE_PX
@@ -63,12 +72,12 @@ def overlaps(fig) -> list[tuple[str, str]]:
             or box_a.x1 > canvas.x1 + TOLERANCE_PX
             or box_a.y1 > canvas.y1 + TOLERANCE_PX
         ):
-            found.append((describe(a), "the canvas"))
+            found.append((name(a), "the canvas"))
         for b, box_b in texts[i + 1 :]:
             width = min(box_a.x1, box_b.x1) - max(box_a.x0, box_b.x0)
             height = min(box_a.y1, box_b.y1) - max(box_a.y0, box_b.y0)
             if width > TOLERANCE_PX and height > TOLERANCE_PX:
-                found.append((describe(a), describe(b)))
+                found.append((name(a), name(b)))
     return found
 
 
