@@ -142,16 +142,6 @@ def variant_short(law: str, pool: str) -> str:
     return law_short(law) if pool == PAPER_POOL else f"{law} law, pool as {pool}"
 
 
-def law_blocks(laws, heights, width: float = 11.0):
-    """A figure with one titled block (a sub-figure, constrained layout) per charge law, stacked in the order of
-    ``laws`` (``heights`` in inches); returns the figure and the blocks."""
-    fig = plt.figure(figsize=(width, sum(heights) + 0.5), layout="constrained")
-    blocks = fig.subfigures(len(laws), 1, height_ratios=list(heights), squeeze=False)[:, 0]
-    for block, law in zip(blocks, laws):
-        block.suptitle(law_title(law), x=0.01, ha="left", fontsize=10, fontweight="bold")
-    return fig, list(blocks)
-
-
 def save(fig, paths, description: str):
     """Save ``fig`` to every path (format from the suffix) with provenance metadata; where the environment asks for it,
     record the figure's text overlaps first (:func:`sphgag.views.overlap.record`, under the name of its PNG)."""
