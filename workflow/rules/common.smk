@@ -5,13 +5,15 @@
 import hashlib
 
 from sphgag.jobs import kinds as JOBS
-from sphgag.physics.donnan import PAPER_LAW, charge_law
+from sphgag.physics.donnan import LAWS as CHARGE_LAWS
+from sphgag.physics.donnan import PAPER_LAW
 from sphgag.physics.materials import law_gag
 from sphgag.studies.artery import Bilayer
 from sphgag.studies.delamination.settings import MATCHED
 from sphgag.studies.delamination.settings import Settings as DelaminationSettings
 from sphgag.studies.onset import CRITERIA
 from sphgag.studies.protocols import POOL_MODELS
+from sphgag.views.names import law_figure
 
 # the Donnan laws run side by side (wildcard {law}); a run's params hold its own law only (gag.charge_law), so that
 # adding or removing a law adds or removes its jobs and reruns no other simulation
@@ -22,11 +24,11 @@ GAG = {law: canonical(law_gag(config["gag"], law)) for law in LAWS}
 def law_figures(stem, category, label):
     """The outputs of a figure drawn once per charge law (LAWS): ``pdf_<law>`` and ``png_<law>``, under the paper's
     figure's name for the paper's law (figures/fig4.png) and with the law's name for another (fig4_conserved.png,
-    ChargeLaw.figure); each PNG in the report under ``category`` with the caption workflow/report/<stem>.rst,
+    sphgag.views.names); each PNG in the report under ``category`` with the caption workflow/report/<stem>.rst,
     labelled with its law."""
     out = {}
     for law in LAWS:
-        name, paper = charge_law(law).figure(stem), charge_law(law).paper
+        name, paper = law_figure(stem, law), CHARGE_LAWS[law].paper
         out[f"pdf_{law}"] = f"figures/{name}.pdf"
         result = f"{label}, {law} charge law" + (" (the paper's)" if paper else "")
         out[f"png_{law}"] = report(

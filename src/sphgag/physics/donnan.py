@@ -51,11 +51,6 @@ class ChargeLaw(Variant):
         to ``c`` (per reference volume): ``c / J`` where the particle conserves its fixed charge, else ``c``."""
         return c / J if self.conserves_charge else c
 
-    def figure(self, stem: str) -> str:
-        """The file stem of figure ``stem`` (``fig4``) drawn under this law: the paper's law keeps the paper's figure's
-        name, another law adds its own (``fig4_conserved``)."""
-        return stem if self.paper else f"{stem}_{self.name}"
-
     def reference_concentration(self, c_fc, J):
         """The load's concentration ``c`` (per reference volume) whose fixed-charge concentration at ``J`` is ``c_fc``:
         the inverse of :meth:`concentration`, ``J c_fc`` or ``c_fc``."""

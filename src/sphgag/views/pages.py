@@ -17,6 +17,7 @@ import pandas as pd
 from ..physics.donnan import PAPER_LAW, charge_law
 from ..studies import annulus, gci
 from ..studies import claims as claims_
+from .names import LAW_FIGURES, law_figure
 
 
 def _c(value: float) -> str:
@@ -356,9 +357,6 @@ def _claims_page(table: pd.DataFrame) -> str:
     return claims_.markdown(table)
 
 
-# the figures drawn once per charge law (rules fig4-fig7, law_figures in workflow/rules/common.smk)
-LAW_FIGURES = ("fig4", "fig5", "fig6", "fig7")
-
 # page -> (title, its figures (the stems of PNG names under figures/: a figure drawn once per charge law is shown once
 # per law, :func:`shown`), its sections)
 PAGES: dict[str, tuple[str, tuple[str, ...], tuple[Section, ...]]] = {
@@ -423,12 +421,12 @@ def stamp(commit: str, configuration: dict) -> str:
 
 def shown(stems, laws) -> list[tuple[str, str]]:
     """``(PNG name, caption)`` of the figures ``stems``: a figure of the paper's figures 4-7 once per charge law of
-    ``laws`` (:meth:`~sphgag.physics.donnan.ChargeLaw.figure`: fig4.png, fig4_conserved.png), captioned with its law;
+    ``laws`` (:func:`~sphgag.views.names.law_figure`: fig4.png, fig4_conserved.png), captioned with its law;
     any other once, captioned with its name."""
     out = []
     for stem in stems:
         if stem in LAW_FIGURES:
-            out += [(f"{charge_law(law).figure(stem)}.png", f"{stem}: {charge_law(law).title}") for law in laws]
+            out += [(f"{law_figure(stem, law)}.png", f"{stem}: {charge_law(law).title}") for law in laws]
         else:
             out.append((f"{stem}.png", stem))
     return out
