@@ -242,6 +242,8 @@ FIGURES = [
         "variants_hourglass",
         "variants_pool_models",
         "paper_procedure",
+        # figures 4-7 (and figure 4 with every pool model) once per charge law: the CI configuration runs both
+        *(f"{stem}_conserved" for stem in ("fig4", "fig5", "fig6", "fig7", "variants_pool_models")),
     )
     for ext in ("pdf", "png")
 ]
