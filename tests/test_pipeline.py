@@ -392,6 +392,24 @@ def test_outputs_follow_the_data_contracts(workdir, ci_config):
         assert (workdir / fig).stat().st_size > 5000
 
 
+def test_figures_4_to_7_fit_a_screen_and_their_snapshots_show_the_pools(workdir):
+    """Figures 4-7, one per charge law, are at most 2000 px a side at the default dpi; the pools cover at least a
+    tenth of every snapshot panel figures 5-7 can draw (each framed on its pools, sphgag.views.snapshots)."""
+    from PIL import Image
+
+    from sphgag.views import snapshots
+
+    for stem in ("fig4", "fig5", "fig6", "fig7"):
+        for name in (f"{stem}.png", f"{stem}_conserved.png"):
+            assert max(Image.open(workdir / "figures" / name).size) <= 2000, name
+    runs = sorted((workdir / "results/delamination/runs").glob("*/*_snapshots.npz"))
+    assert runs
+    for path in runs:
+        snap = snapshots.read_snapshots(path)
+        for k in range(len(snap["steps"])):
+            assert snapshots.pool_fraction(snap, k) >= 0.1, (path.name, k)
+
+
 def test_every_run_has_its_paraview_series_and_every_delamination_run_its_animation(workdir):
     """The series read back as the saved states (positions, history) and the animation has a frame per state."""
     from PIL import Image
