@@ -124,6 +124,8 @@ def snapshot_panel(ax, snap: dict, k: int, layers, title: str):
     dx = spacing(snap)
     p = local(snap, k)
     near = (p[:, 0] > x0 - dx) & (p[:, 0] < x1 + dx) & (p[:, 1] > y0 - dx) & (p[:, 1] < y1 + dx)
+    near = np.flatnonzero(near)
+    near = near[np.argsort(snap[f"s{k}_history_origin"][near] > 0, kind="stable")]  # the pools drawn over the tissue
     origin, D = snap[f"s{k}_history_origin"][near], snap[f"s{k}_history_D"][near]
     outer = [r for _, r in layers]
     band = np.minimum(np.searchsorted(outer, np.hypot(*snap["X"][near].T)), len(layers) - 1)
