@@ -8,6 +8,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 import seaborn as sns
+from matplotlib.ticker import FormatStrFormatter, LogLocator, NullFormatter
 
 from ..physics import fracture
 from ..studies import annulus
@@ -126,6 +127,10 @@ def resolution_panel(ax, errors: pd.DataFrame, measures: dict, ratios: dict):
         ax=ax,
     )
     ax.set(xscale="log", yscale="log", xlabel="dx / b")
+    # the spacings span less than a decade: round values labelled, not every minor tick (their labels overlapped)
+    ax.xaxis.set_major_locator(LogLocator(subs=(1.0, 1.5, 2.0, 3.0, 5.0, 7.0)))
+    ax.xaxis.set_major_formatter(FormatStrFormatter("%g"))
+    ax.xaxis.set_minor_formatter(NullFormatter())
     style_legend(ax, "upper left", fontsize=6.5, bbox_to_anchor=(1.0, 1.0))
 
 
