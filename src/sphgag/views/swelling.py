@@ -160,7 +160,7 @@ def band_panel(ax, rows: pd.DataFrame):
 def volume_panel(ax, resolution: pd.DataFrame, case: str, law: str):
     """The tip radial stress against the pool's volume ratio J at every spacing of the resolution study
     (convergence.csv rows of charge law ``law``, the paper's pool model and one case, converted and at-volume states),
-    the walls by line style: the axis on which the spacings agree."""
+    the walls by line style: the axis on which the spacings agree. Returns the colour of each spacing."""
     rows = resolution[
         (resolution.charge_law == law)
         & (resolution.pool_model == PAPER_POOL)
@@ -186,6 +186,7 @@ def volume_panel(ax, resolution: pd.DataFrame, case: str, law: str):
     ax.xaxis.set_major_formatter(ScalarFormatter())
     ax.axhline(0.0, color="0.7", lw=0.6)
     ax.set_xlabel("pool volume ratio J")
+    return shades
 
 
 # the paper's figure 4 in its text: "the radial stresses change from compressive to tensile, typically exceeding
@@ -308,13 +309,15 @@ def fig4(
         legend[NOT_RUN] = Line2D([], [], ls="")
     if resolution is not None:
         for ax, name in zip(grid.axes[-1], names):
-            volume_panel(ax, resolution, name, law)
+            shades = volume_panel(ax, resolution, name, law)
+        for dx, colour in shades.items():
+            legend[f"resolution study: dx = {dx:g} um"] = Line2D([], [], color=colour, marker="o", ms=2.5, lw=1.0)
         grid.axes[-1, 0].set_ylabel(TIP)
         grid.axes[-1, 0].set_title(f"({'bcdefghijklmnopqrstuvwxyz'[len(blocks)]}) every dx", loc="left")
         for wall, dashes in (("passive", "-"), ("active", "--")):
             legend[f"resolution study: {wall} (every dx)"] = Line2D([], [], color="0.3", ls=dashes, lw=1.0)
     grid.add_legend(legend_data=legend, label_order=list(legend), fontsize=7)
-    title = textwrap.fill(f"Figure 4: {law_title(law)}", 100)
+    title = textwrap.fill(f"Figure 4: {law_title(law)}", 75)
     grid.tight_layout()
     fig = grid.figure
     fig.suptitle(title, x=0.01, y=1.0, ha="left", va="top", fontsize=10, fontweight="bold")
