@@ -15,6 +15,7 @@ from sphgag.engine import geometry, kernel
 from sphgag.engine.model import Model
 from sphgag.physics import materials
 from sphgag.studies import artery, protocols
+from sphgag.views import overlap
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -69,7 +70,9 @@ class _Pipeline:
         self.project = project_copy(self.root / "project")
         self.log = (self.root / "snakemake.log").open("w")
         cmd = [sys.executable, "-m", "snakemake", "everything", "--cores", "2", "--configfile", "config/ci.yaml"]
-        env = dict(os.environ, NUMBA_CACHE_DIR=str(self.cache))
+        # every figure the run saves records its text overlaps here (sphgag.views.overlap.record)
+        self.text_checks = self.root / "text_checks"
+        env = dict(os.environ, NUMBA_CACHE_DIR=str(self.cache), **{overlap.CHECK_DIR: str(self.text_checks)})
         self.process = subprocess.Popen(cmd, cwd=self.project, stdout=self.log, stderr=subprocess.STDOUT, env=env)
 
     def wait(self) -> Path:
@@ -110,6 +113,12 @@ def pytest_sessionfinish(session, exitstatus):
 def numba_cache():
     """The Numba cache the pipeline run compiled into (empty when it started: as on a fresh machine)."""
     return _PIPELINE[0].cache
+
+
+@pytest.fixture(scope="session")
+def text_checks(workdir):
+    """The folder in which every figure of the pipeline run recorded its text overlaps (one JSON file a figure)."""
+    return _PIPELINE[0].text_checks
 
 
 @pytest.fixture(scope="session")

@@ -28,13 +28,18 @@ def test_a_section_whose_table_was_not_made_names_the_target_that_makes_it(tmp_p
 
 
 def test_every_page_is_written_with_its_figures_beside_it(tmp_path):
-    figures = {}
-    for name in {f for _, shown, _ in pages.PAGES.values() for f in shown}:
+    figures, laws = {}, ["prescribed", "conserved"]
+    for name, _ in pages.shown({f for _, shown, _ in pages.PAGES.values() for f in shown}, laws):
         figures[name] = tmp_path / name
         figures[name].write_bytes(b"png")
+    assert {"fig4.png", "fig4_conserved.png", "fig7_conserved.png", "fig3.png"} <= set(figures)
     out = tmp_path / "results"
-    pages.write(out, {"claims": CLAIMS}, figures, pages.stamp("abc", {"files": ["config/ci.yaml"], "sha256": "f" * 64}))
+    stamp = pages.stamp("abc", {"files": ["config/ci.yaml"], "sha256": "f" * 64})
+    pages.write(out, {"claims": CLAIMS}, figures, stamp, laws)
     assert sorted(p.stem for p in out.glob("*.md")) == sorted(pages.PAGES)
     index = (out / "index.md").read_text()
     assert "commit `abc`, configuration `config/ci.yaml` (sha256 `ffffffffffff`)" in index
     assert all((out / "figures" / name).read_bytes() == b"png" for name in figures)
+    swelling = (out / "swelling.md").read_text()  # each law's figure 4, captioned with its law
+    assert "![fig4: prescribed charge law" in swelling and "(figures/fig4.png)" in swelling
+    assert "![fig4: conserved charge law" in swelling and "(figures/fig4_conserved.png)" in swelling

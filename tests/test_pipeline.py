@@ -242,6 +242,8 @@ FIGURES = [
         "variants_hourglass",
         "variants_pool_models",
         "paper_procedure",
+        # figures 4-7 (and figure 4 with every pool model) once per charge law: the CI configuration runs both
+        *(f"{stem}_conserved" for stem in ("fig4", "fig5", "fig6", "fig7", "variants_pool_models")),
     )
     for ext in ("pdf", "png")
 ]
@@ -388,6 +390,24 @@ def test_outputs_follow_the_data_contracts(workdir, ci_config):
     assert figure4.across_band.str.match(r"^(dx \d|n/a)").all(), figure4.across_band.tolist()
     for fig in FIGURES:
         assert (workdir / fig).stat().st_size > 5000
+
+
+def test_figures_4_to_7_fit_a_screen_and_their_snapshots_show_the_pools(workdir):
+    """Figures 4-7, one per charge law, are at most 2000 px a side at the default dpi; the pools cover at least a
+    tenth of every snapshot panel figures 5-7 can draw (each framed on its pools, sphgag.views.snapshots)."""
+    from PIL import Image
+
+    from sphgag.views import snapshots
+
+    for stem in ("fig4", "fig5", "fig6", "fig7"):
+        for name in (f"{stem}.png", f"{stem}_conserved.png"):
+            assert max(Image.open(workdir / "figures" / name).size) <= 2000, name
+    runs = sorted((workdir / "results/delamination/runs").glob("*/*_snapshots.npz"))
+    assert runs
+    for path in runs:
+        snap = snapshots.read_snapshots(path)
+        for k in range(len(snap["steps"])):
+            assert snapshots.pool_fraction(snap, k) >= 0.1, (path.name, k)
 
 
 def test_every_run_has_its_paraview_series_and_every_delamination_run_its_animation(workdir):

@@ -321,39 +321,53 @@ def _tips(variants, models=("passive",), cases=tuple(SWELLING_CASES), pressures=
     return pd.DataFrame(rows)
 
 
-def _fig4(tips, laws):
+def _fig4(tips, law):
     from sphgag.views import swelling
 
     cases = {name: SWELLING_CASES[name] for name in dict.fromkeys(tips.case)}
-    return swelling.fig4(tips, _particles(), cases, 10.0, laws, 150.0, WALL_PRESSURES, pool_layers=["media"])
+    return swelling.fig4(tips, _particles(), cases, 10.0, law, 150.0, WALL_PRESSURES, pool_layers=["media"])
 
 
-def test_figure_4_draws_a_block_per_law_and_pool_model_in_figure_3s_colours():
+def test_figure_4_is_laid_out_as_the_papers_for_one_law_in_figure_3s_colours():
+    """One law a figure: (a) the pools, then a block per wall ((b) passive, (c) active; another pool model has blocks
+    of its own), a tip radial and a top hoop row each, a column per pool; the paper's "~50 kPa above 100 mEq/l" on
+    every tip radial stress panel."""
+    from sphgag.views import overlap, swelling
+
     variants = [("prescribed", "particles"), ("prescribed", "cavity"), ("conserved", "particles")]
-    fig = _fig4(_tips(variants), ["prescribed", "conserved"])
-    assert len(fig.axes) == (1 + 2 * len(variants)) * len(SWELLING_CASES)  # (a), then tip and top per block
+    tips = _tips(variants, models=("passive", "active"))
+    fig = _fig4(tips, "prescribed")
+    assert len(fig.axes) == (1 + 2 * 2 * 2) * len(SWELLING_CASES)  # (a), then tip and top per pool model and wall
     titles = _titles(fig)
     assert titles[:2] == ["(a) case I: 3 deg", "(a) case IV: 16 deg"]
-    assert [t for t in titles if t[0] != "("] == [  # the headings of the (law, pool model) blocks
-        "prescribed charge law: Pi(c), eqs. 2.25-2.27 as printed (the paper's model: compare with the paper)",
-        "prescribed Pi(c), paper; the pool as a pressurised cavity (our deviation: its lining carries Pi, its "
-        "contents swell uniformly)",
-        "conserved charge law: Pi at the current concentration c/J (mixture theory; a deviation)",
+    assert [t for t in titles if t[0] == "(" and "case" not in t] == [
+        "(b) passive model",
+        "(c) active model",
+        "(d) passive model, pool as cavity",
+        "(e) active model, pool as cavity",
     ]
-    assert fig.axes[2].get_ylabel() == "(b) passive, prescribed Pi(c), paper\ntip radial stress (kPa)"
+    assert fig._suptitle.get_text().startswith("Figure 4: prescribed charge law")
+    assert [fig.axes[k].get_ylabel() for k in (2, 4)] == [swelling.TIP, swelling.TOP]
+    tip_panels = [ax for ax in fig.axes if ax.get_ylabel() == swelling.TIP or ax in fig.axes[3:4]]
+    for ax in tip_panels:  # the paper's band: 50 kPa from 100 mEq/l
+        assert any(list(line.get_ydata()) == [50.0, 50.0] for line in ax.lines), ax.get_ylabel()
     legend = fig.legends[0]
     colours = {t.get_text(): _hex(h.get_color()) for t, h in zip(legend.texts, legend.legend_handles)}
     assert colours["103 mmHg"] == DARK2[0] and colours["200 mmHg"] == DARK2[2]  # 200 mmHg as in figure 3
+    assert swelling.PAPER_TIP_LABEL in colours
+    assert overlap.overlaps(fig) == []
+    fig = _fig4(tips, "conserved")
+    assert len(fig.axes) == (1 + 2 * 2) * len(SWELLING_CASES)
+    assert fig._suptitle.get_text().startswith("Figure 4: conserved charge law")
 
 
 def test_figure_4_and_the_resolution_study_draw_a_third_charge_law():
     from sphgag.views import style, swelling
 
     laws = ["prescribed", "conserved", "ideal"]
-    fig = _fig4(_tips([(law, "particles") for law in laws], cases=("IV",)), laws)
-    assert len(fig.axes) == 1 + 2 * len(laws)  # (a), then tip and top per law
-    assert [t for t in _titles(fig) if t[0] != "("][-1] == "ideal charge law" == style.law_title("ideal")
-    assert fig.axes[-1].get_ylabel() == "(d) passive, ideal\ntop hoop stress (kPa)"
+    fig = _fig4(_tips([(law, "particles") for law in laws], cases=("IV",)), "ideal")
+    assert len(fig.axes) == 1 + 2  # (a), then tip and top
+    assert fig._suptitle.get_text() == "Figure 4: ideal charge law" == f"Figure 4: {style.law_title('ideal')}"
 
     table = _concat(
         [
@@ -390,17 +404,17 @@ def test_figure_4_draws_the_resolution_bands_and_the_tip_stress_against_pool_vol
     )
     band = convergence.band_table(resolution, 103.0)
     cases = {name: SWELLING_CASES[name] for name in dict.fromkeys(tips.case)}
-    args = (tips, _particles(), cases, 10.0, ["prescribed"], 150.0, WALL_PRESSURES)
+    args = (tips, _particles(), cases, 10.0, "prescribed", 150.0, WALL_PRESSURES)
     fig = swelling.fig4(*args, pool_layers=["media"], band=band, resolution=resolution)
     assert len(fig.axes) == (1 + 2 + 1) * len(cases)  # (a), tip and top, then tip against pool volume
     tip_axes = fig.axes[len(cases) : 2 * len(cases)]
     assert all(any(isinstance(c, PolyCollection) for c in ax.collections) for ax in tip_axes)
-    assert all(swelling.EXTRAPOLATED in [t.get_text() for t in legend.texts] for legend in fig.legends[1:])
+    assert swelling.EXTRAPOLATED in [t.get_text() for t in fig.legends[0].texts]
     assert any("GCI > 10%" in t.get_text() for ax in tip_axes for t in ax.texts)
     volume = fig.axes[-len(cases)]
     assert volume.get_xlabel() == "pool volume ratio J" and len(volume.lines) == 3 + 1  # a line per dx, and zero
     fig = swelling.fig4(*args, pool_layers=["media"])
-    assert swelling.NOT_RUN in [t.get_text() for t in fig.texts]
+    assert swelling.NOT_RUN in [t.get_text() for t in fig.legends[0].texts]
 
 
 def test_the_verification_figures_draw_their_panels():
@@ -518,7 +532,7 @@ def test_the_criterion_styles_keep_the_first_two_and_tell_any_number_apart():
 
 
 def _snapshots(steps=3, centre_deg=50.0, dx=6.0):
-    """A run's ``*_snapshots.npz`` as :func:`sphgag.views.delamination.read_snapshots` returns it: a pool of seeded
+    """A run's ``*_snapshots.npz`` as :func:`sphgag.views.snapshots.read_snapshots` returns it: a pool of seeded
     GAG (origin 1) in a patch of wall, tissue beside it damaged and then converted (origin 2) as the run goes on."""
     r, th = np.meshgrid(np.arange(640.0, 712.0, dx), np.deg2rad(np.arange(40.0, 60.0, np.rad2deg(dx / 663.0))))
     r, th = r.ravel(), th.ravel()
@@ -536,6 +550,7 @@ def _snapshots(steps=3, centre_deg=50.0, dx=6.0):
         origin = np.where(ring & (off < 1.0), 1, np.where(ring & (off < 1.0 + 0.6 * k), 2, 0))
         snap[f"s{k}_x"] = X * (1.0 + 0.002 * k)
         snap[f"s{k}_history_origin"] = origin
+        snap[f"s{k}_history_pool"] = np.where(origin > 0, 0, -1)
         snap[f"s{k}_history_D"] = np.where((origin == 0) & ring & (off < 2.0 + 0.6 * k), 0.5, 0.0)
     return snap
 
@@ -590,35 +605,66 @@ def _growth(laws, cases, sigmas, criteria, steps=6):
 WALL_LAYERS = [["media", 680.0], ["lamina", 681.0], ["media", 690.0], ["adventitia", 720.0]]
 
 
-@pytest.mark.filterwarnings("error:constrained_layout not applied")  # columns wide enough for their titles
-def test_figures_5_to_7_draw_three_onset_criteria():
+@pytest.mark.filterwarnings("error:constrained_layout not applied")  # panels wide enough for their titles
+def test_figures_5_to_7_draw_three_onset_criteria_one_law_a_figure():
     from sphgag.views import delamination as views
+    from sphgag.views import overlap
 
     laws, criteria = ["prescribed"], THREE_CRITERIA
     growth, summary = _growth(laws, ["single", "low", "high", "offset"], [40.0, 60.0], criteria)
     snap = _snapshots()
 
-    fig = views.fig5(growth, summary, {(law, c): snap for law in laws for c in criteria}, "single", 40.0, criteria,
-                     laws, WALL_LAYERS)  # fmt: skip
+    fig = views.fig5(growth, summary, {c: snap for c in criteria}, "single", 40.0, criteria, "prescribed", WALL_LAYERS)
     titles = _titles(fig)
-    assert [f"(b) {c} onset measure, single" in titles for c in criteria] == [True] * 3
-    assert "(c) growth, single: onset (triangles), runaway (lines)" in titles
-    (growth_ax,) = [ax for ax in fig.axes if ax.get_title().startswith("(c) growth, single")]
+    assert [f"(b) {c} onset measure" in titles for c in criteria] == [True] * 3
+    assert "(c) growth: onset (triangles),\nrunaway (lines)" in titles
+    assert sum(t.startswith("(a) strain, 40 kPa\n") for t in titles) == 3  # a row of three states per criterion
+    (growth_ax,) = [ax for ax in fig.axes if ax.get_title().startswith("(c) growth")]
     assert set(criteria) <= set(growth_ax.get_legend_handles_labels()[1])  # a line style per criterion
+    tip = [ax for ax in fig.axes if ax.get_title() == "(b) averaged onset measure"][0]
+    assert [views.PAPER_SIGMA] * 2 in [list(line.get_ydata()) for line in tip.lines]  # the paper's sigma_cr
+    assert views.PAPER_SIGMA_LABEL in [t.get_text() for t in tip.get_legend().texts]
     (key,) = fig.legends
     assert [t.get_text() for t in key.get_texts()][:3] == ["intact media", "intact lamina", "intact adventitia"]
+    assert overlap.overlaps(fig) == []
 
-    fig = views.fig6(growth, summary, {(law, case, c): snap for law in laws for case in ("low", "high")
-                                       for c in criteria}, ["low", "high"], criteria, laws, WALL_LAYERS)  # fmt: skip
+    fig = views.fig6(growth, summary, {(case, c): snap for case in ("low", "high") for c in criteria},
+                     ["low", "high"], criteria, "prescribed", WALL_LAYERS)  # fmt: skip
     titles = _titles(fig)
     assert "(c) low: converted particles" in titles and "(c) high: converted particles" in titles
-    assert sum(t.startswith("(b) high, strain: ") for t in titles) == 1  # the last state of the third criterion
+    assert sum(t.startswith("(b) high, strain: last\n") for t in titles) == 1  # the last state of the third criterion
+    assert overlap.overlaps(fig) == []
 
-    fig = views.fig7(growth, summary, {(law, c): snap for law in laws for c in criteria}, "offset", 40.0, criteria,
-                     laws, WALL_LAYERS)  # fmt: skip
+    fig = views.fig7(growth, summary, {c: snap for c in criteria}, "offset", 40.0, criteria, "prescribed", WALL_LAYERS)
     (tip,) = [ax for ax in fig.axes if ax.get_title().startswith("(b) offset: tip radial stress")]
     colours = {_hex(line.get_color()) for line in tip.get_lines()[: len(criteria)]}
     assert colours == set(map(_hex, views.criterion_colours(criteria).values()))
+    assert overlap.overlaps(fig) == []
+
+
+def test_a_snapshot_panel_is_framed_on_its_pool_and_says_so_when_the_pool_balloons():
+    """Each snapshot is framed on its pools' current extent (true to scale, a scale bar), the pools covering at least
+    a tenth of the panel; a pool swollen radially beyond the wall's thickness is framed on itself, and its title
+    says so."""
+    import matplotlib.pyplot as plt
+
+    from sphgag.views import snapshots
+
+    snap = _snapshots()
+    for k in range(3):
+        x0, x1, y0, y1 = snapshots.frame(snap, k)
+        assert snapshots.ASPECT[0] <= (y1 - y0) / (x1 - x0) <= snapshots.ASPECT[1]
+        assert snapshots.pool_fraction(snap, k) >= 0.1
+        assert not snapshots.ballooned(snap, k)
+    centre = snap["s2_x"][snap["s2_history_origin"] == 1].mean(axis=0)
+    pool = snap["s2_history_origin"] > 0
+    snap["s2_x"] = np.where(pool[:, None], centre + 12.0 * (snap["s2_x"] - centre), snap["s2_x"])  # ballooned
+    assert snapshots.ballooned(snap, 2) and snapshots.pool_fraction(snap, 2) >= 0.1
+    fig, ax = plt.subplots()
+    snapshots.snapshot_panel(ax, snap, 2, WALL_LAYERS, "(a) run")
+    assert ax.get_title(loc="left").endswith(snapshots.BALLOONED)
+    assert ax.get_aspect() == 1.0 and ax.get_xlim() == pytest.approx(snapshots.frame(snap, 2)[:2])
+    plt.close(fig)
 
 
 def test_the_sensitivity_figures_draw_a_panel_per_output_method_and_law():

@@ -5,6 +5,7 @@
 import hashlib
 
 from sphgag.jobs import kinds as JOBS
+from sphgag.physics.donnan import LAWS as CHARGE_LAWS
 from sphgag.physics.donnan import PAPER_LAW
 from sphgag.physics.materials import law_gag
 from sphgag.studies.artery import Bilayer
@@ -12,11 +13,33 @@ from sphgag.studies.delamination.settings import MATCHED
 from sphgag.studies.delamination.settings import Settings as DelaminationSettings
 from sphgag.studies.onset import CRITERIA
 from sphgag.studies.protocols import POOL_MODELS
+from sphgag.views.names import law_figure
 
 # the Donnan laws run side by side (wildcard {law}); a run's params hold its own law only (gag.charge_law), so that
 # adding or removing a law adds or removes its jobs and reruns no other simulation
 LAWS = config["gag"]["charge_laws"]
 GAG = {law: canonical(law_gag(config["gag"], law)) for law in LAWS}
+
+
+def law_figures(stem, category, label):
+    """The outputs of a figure drawn once per charge law (LAWS): ``pdf_<law>`` and ``png_<law>``, under the paper's
+    figure's name for the paper's law (figures/fig4.png) and with the law's name for another (fig4_conserved.png,
+    sphgag.views.names); each PNG in the report under ``category`` with the caption workflow/report/<stem>.rst,
+    labelled with its law."""
+    out = {}
+    for law in LAWS:
+        name, paper = law_figure(stem, law), CHARGE_LAWS[law].paper
+        out[f"pdf_{law}"] = f"figures/{name}.pdf"
+        result = f"{label}, {law} charge law" + (" (the paper's)" if paper else "")
+        out[f"png_{law}"] = report(
+            f"figures/{name}.png", caption=f"../report/{stem}.rst", category=category, labels={"result": result}
+        )
+    return out
+
+
+def law_pngs(rule):
+    """The PNGs of a rule's figure, one per charge law (law_figures), in the order of LAWS."""
+    return [rule.output[f"png_{law}"] for law in LAWS]
 
 
 # Code inputs. Snakemake tracks a rule's script, not the package modules the script imports: a rule's code input is

@@ -15,8 +15,8 @@ DOCS_STUDIES = dict(
 )
 # the figures the pages show, by file name
 DOCS_FIGURES = [
-    *(rules.fig1.output.png, rules.fig3.output.png, rules.fig4.output.png),
-    *(rules.fig5.output.png, rules.fig6.output.png, rules.fig7.output.png),
+    *(rules.fig1.output.png, rules.fig3.output.png),
+    *(png for rule in (rules.fig4, rules.fig5, rules.fig6, rules.fig7) for png in law_pngs(rule)),
     rules.verification_pool_figure.output.png,
 ]
 DOCS_PAGES = ("index", "claims", "swelling", "delamination", "verification")
@@ -41,6 +41,7 @@ rule docs_pages:
         "results/benchmarks/docs_pages.tsv"
     params:
         studies=studies_evidence(DOCS_STUDIES),
+        laws=LAWS,
         configuration=dict(
             files=[os.path.relpath(f) for f in workflow.configfiles],
             sha256=hashlib.sha256(repr(config).encode()).hexdigest(),

@@ -103,7 +103,7 @@ rule fig1:
 
 
 rule fig4:
-    """Figure 4: the pools, and the tip radial and top hoop stress against GAG concentration, for every charge law;
+    """Figure 4, once per charge law: the pools, and the tip radial and top hoop stress against GAG concentration;
     with the resolution study's bands and its tip stress against pool volume where target `resolution` has run."""
     input:
         code=code_of("fig4"),
@@ -112,13 +112,7 @@ rule fig4:
         band=study_input(lambda: rules.swelling_gci.output.band, "resolution"),
         resolution=study_input(lambda: rules.swelling_convergence.output[0], "resolution"),
     output:
-        pdf="figures/fig4.pdf",
-        png=report(
-            "figures/fig4.png",
-            caption="../report/fig4.rst",
-            category="3 Swelling",
-            labels={"result": "Figure 4: stresses around a swelling GAG pool"},
-        ),
+        **law_figures("fig4", "3 Swelling", "Figure 4: stresses around a swelling GAG pool"),
     log:
         "logs/fig4.log",
     benchmark:
@@ -207,8 +201,8 @@ rule swelling_convergence_figure:
         "../scripts/swelling_convergence_figure.py"
 
 
-# figures 5-7: the delamination runs (rule delaminate) of the pool sets named by delamination.figures, one block per
-# charge law, one column or line style per onset criterion.
+# figures 5-7: the delamination runs (rule delaminate) of the pool sets named by delamination.figures, one figure per
+# charge law, one row of snapshots or line style per onset criterion.
 # The wall's layers as [name, outer radius] from the lumen out: the snapshots' particles are greyed by layer
 DE_LAYERS = [[name, outer] for name, _, outer in Bilayer.of(config["bilayer"]).bands()]
 # figure 5a shows its set at critical_stress_kPa if that is one of its sigma_cr, else at the nearest one
@@ -229,7 +223,7 @@ for figure, spec in DE_FIGURE_RULES.items():
 
     rule:
         """Figure 5, 6 or 7 (the rule's name): the delamination runs of its pool sets (delamination.figures),
-        snapshots and growth, one block per charge law."""
+        snapshots and growth, one figure per charge law."""
         name:
             figure
         input:
@@ -246,13 +240,7 @@ for figure, spec in DE_FIGURE_RULES.items():
                 for criterion in DE["criteria"]
             ],
         output:
-            pdf=f"figures/{figure}.pdf",
-            png=report(
-                f"figures/{figure}.png",
-                caption=f"../report/{figure}.rst",
-                category="5 Delamination",
-                labels={"result": spec["label"]},
-            ),
+            **law_figures(figure, "5 Delamination", spec["label"]),
         log:
             f"logs/{figure}.log",
         benchmark:

@@ -99,13 +99,7 @@ use rule fig4 as variants_fig4 with:
         band=study_input(lambda: rules.swelling_gci.output.band, "resolution"),
         resolution=study_input(lambda: rules.swelling_convergence.output[0], "resolution"),
     output:
-        pdf="figures/variants_pool_models.pdf",
-        png=report(
-            "figures/variants_pool_models.png",
-            caption="../report/variants_pool_models.rst",
-            category="6 Variants",
-            labels={"result": "Figure 4 with every pool model"},
-        ),
+        **law_figures("variants_pool_models", "6 Variants", "Figure 4 with every pool model"),
     log:
         "logs/variants_fig4.log",
     benchmark:

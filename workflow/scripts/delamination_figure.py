@@ -1,6 +1,6 @@
 """Rules fig5, fig6 and fig7: the delamination runs of a figure's pool sets (delamination.figures) grown by damage,
-every charge law; the rule's name says which figure (the rules are one family in workflow/rules/figures.smk,
-sphgag.views.delamination.FIGURES)."""
+one figure per charge law; the rule's name says which figure (the rules are one family in
+workflow/rules/figures.smk, sphgag.views.delamination.FIGURES)."""
 
 import pandas as pd
 
@@ -13,7 +13,9 @@ with jobs.run(snakemake, name=snakemake.rule) as job:  # noqa: F821
     p = job.params
     # the paper's damage law (eq. 2.28 as printed); the fracture-energy runs are rows of the tables, not of the figure
     growth, summary = (delamination.paper_law(pd.read_csv(path)) for path in (job.input.growth, job.input.summary))
-    fig = views.figure(
-        job.name, growth, summary, job.input.snapshots, p.poolsets, p.sigma, p.criteria, p.laws, p.layers
-    )
-    style.save(fig, [job.output.pdf, job.output.png], f"{views.FIGURES[job.name][1]}, sphgag")
+    for law in p.laws:
+        fig = views.figure(
+            job.name, growth, summary, job.input.snapshots, p.poolsets, p.sigma, p.criteria, law, p.laws, p.layers
+        )
+        paths = [job.output[f"pdf_{law}"], job.output[f"png_{law}"]]
+        style.save(fig, paths, f"{views.FIGURES[job.name][1]}, {law} charge law, sphgag")

@@ -15,4 +15,5 @@ with jobs.run(snakemake, name="docs_pages") as job:  # noqa: F821
         tables[name] = pd.concat(made, ignore_index=True) if made and len(made) == len(evidence) else None
     # the checkout's commit: Snakemake reruns every table whose code changed since, so they are this commit's
     header = pages.stamp(provenance.git_commit(), job.params.configuration)
-    pages.write(Path(job.output.pages[0]).parent, tables, {Path(f).name: f for f in job.input.figures}, header)
+    figures = {Path(f).name: f for f in job.input.figures}
+    pages.write(Path(job.output.pages[0]).parent, tables, figures, header, job.params.laws)

@@ -24,6 +24,7 @@ from matplotlib.colors import Normalize  # noqa: E402
 from scipy.spatial import cKDTree  # noqa: E402
 
 from ..engine.history import DAMAGED, SEEDED  # noqa: E402
+from . import overlap  # noqa: E402
 
 ORIGIN_COLOURS = {SEEDED: "#222222", DAMAGED: "#1b9e77"}  # off the stress colour map: black and green
 PARTLY_DAMAGED = "#d95f02"  # tissue with 0 < D < 1: orange, off the stress colour map too
@@ -99,5 +100,7 @@ def write(path, frames, title: str) -> Path:
 
     animation = FuncAnimation(fig, draw, frames=len(frames), blit=False)
     animation.save(path, writer=PillowWriter(fps=1.0 / FRAME_SECONDS))
+    draw(len(frames) - 1)  # the last frame, the one with the most text, is the one checked
+    overlap.record(fig, path)
     plt.close(fig)
     return path

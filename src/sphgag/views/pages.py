@@ -14,8 +14,10 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from ..physics.donnan import PAPER_LAW, charge_law
 from ..studies import annulus, gci
 from ..studies import claims as claims_
+from .names import LAW_FIGURES, law_figure
 
 
 def _c(value: float) -> str:
@@ -355,11 +357,12 @@ def _claims_page(table: pd.DataFrame) -> str:
     return claims_.markdown(table)
 
 
-# page -> (title, its figures (PNG names under figures/), its sections)
+# page -> (title, its figures (the stems of PNG names under figures/: a figure drawn once per charge law is shown once
+# per law, :func:`shown`), its sections)
 PAGES: dict[str, tuple[str, tuple[str, ...], tuple[Section, ...]]] = {
     "index": (
         "Results",
-        ("fig1.png", "fig3.png", "fig4.png", "fig5.png", "fig6.png", "fig7.png"),
+        ("fig1", "fig3", "fig4", "fig5", "fig6", "fig7"),
         (
             Section("What holds and what does not (the paper's pool of GAG particles)", "claims", holds_table),
             Section(
@@ -373,7 +376,7 @@ PAGES: dict[str, tuple[str, tuple[str, ...], tuple[Section, ...]]] = {
     "claims": ("The paper's claims against our numbers", (), (Section("Claims", "claims", _claims_page),)),
     "swelling": (
         "Swelling (figure 4)",
-        ("fig4.png",),
+        ("fig4",),
         (
             Section("Figure 4's runs", "tips", figure4_runs_table),
             Section("Claims C6-C12 across the resolution band", "claims", figure4_claims_table),
@@ -389,7 +392,7 @@ PAGES: dict[str, tuple[str, tuple[str, ...], tuple[Section, ...]]] = {
     ),
     "delamination": (
         "Delamination (figures 5-7)",
-        ("fig5.png", "fig6.png", "fig7.png"),
+        ("fig5", "fig6", "fig7"),
         (
             Section("Every run of figures 5-7", "delamination", runs_table),
             Section("Resolution study of the event concentrations", "delamination_gci", gci_table, "resolution"),
@@ -397,7 +400,7 @@ PAGES: dict[str, tuple[str, tuple[str, ...], tuple[Section, ...]]] = {
     ),
     "verification": (
         "Verification and variants",
-        ("verification_pool.png",),
+        ("verification_pool",),
         (
             Section("The pressurised annulus", "annulus", annulus_table, "verification"),
             Section("The hourglass control's forms on figure 5's pool", "variants", variants_table, "variants"),
@@ -416,9 +419,23 @@ def stamp(commit: str, configuration: dict) -> str:
     )
 
 
-def page(name: str, tables: dict[str, pd.DataFrame | None], header: str) -> str:
+def shown(stems, laws) -> list[tuple[str, str]]:
+    """``(PNG name, caption)`` of the figures ``stems``: a figure of the paper's figures 4-7 once per charge law of
+    ``laws`` (:func:`~sphgag.views.names.law_figure`: fig4.png, fig4_conserved.png), captioned with its law;
+    any other once, captioned with its name."""
+    out = []
+    for stem in stems:
+        if stem in LAW_FIGURES:
+            out += [(f"{law_figure(stem, law)}.png", f"{stem}: {charge_law(law).title}") for law in laws]
+        else:
+            out.append((f"{stem}.png", stem))
+    return out
+
+
+def page(name: str, tables: dict[str, pd.DataFrame | None], header: str, laws=(PAPER_LAW,)) -> str:
     """The Markdown of results page ``name``: its title, the stamp ``header``, its sections (a section whose table
-    was not made says which target makes it), then its figures (copied beside the page under figures/)."""
+    was not made says which target makes it), then its figures (copied beside the page under figures/), those drawn
+    once per charge law once for each of ``laws``, each captioned."""
     title, figures, sections = PAGES[name]
     out = [f"# {title}", "", header, ""]
     if name == "index":
@@ -428,15 +445,18 @@ def page(name: str, tables: dict[str, pd.DataFrame | None], header: str) -> str:
         body = s.render(table) if table is not None else f"Not run: `snakemake {s.target}` makes it."
         out += [f"## {s.title}", "", body, ""]
     if figures:
-        out += ["## Figures", "", *(f"![{figure}](figures/{figure})\n" for figure in figures)]
+        out += ["## Figures", ""]
+        out += [f"![{caption}](figures/{png})\n\n*{caption}*\n" for png, caption in shown(figures, laws)]
     return "\n".join(out)
 
 
-def write(out_dir: Path, tables: dict[str, pd.DataFrame | None], figures: dict[str, Path], header: str) -> None:
+def write(
+    out_dir: Path, tables: dict[str, pd.DataFrame | None], figures: dict[str, Path], header: str, laws=(PAPER_LAW,)
+) -> None:
     """Every page of :data:`PAGES` as ``out_dir/{page}.md``, with the figures they show copied from ``figures``
-    (name -> path) into ``out_dir/figures``."""
+    (name -> path) into ``out_dir/figures`` (the paper's figures 4-7 once per charge law of ``laws``)."""
     (out_dir / "figures").mkdir(parents=True, exist_ok=True)
     for name in PAGES:
-        (out_dir / f"{name}.md").write_text(page(name, tables, header))
-    for figure in dict.fromkeys(f for _, shown, _ in PAGES.values() for f in shown):
-        shutil.copyfile(figures[figure], out_dir / "figures" / figure)
+        (out_dir / f"{name}.md").write_text(page(name, tables, header, laws))
+    for png in dict.fromkeys(png for _, stems, _ in PAGES.values() for png, _ in shown(stems, laws)):
+        shutil.copyfile(figures[png], out_dir / "figures" / png)

@@ -43,13 +43,14 @@ def figure(equilibrium: pd.DataFrame, runs: pd.DataFrame, damage: pd.DataFrame, 
     groups.sort(key=lambda kv: (bool(kv[1].interior_particles.notna().any()), kv[0][0], kv[0][1]))
     factors = sorted(set(runs.step_factor) | set(damage.get("step_factor", [])))
     colours = dict(zip(factors, plt.cm.viridis(np.linspace(0.15, 0.85, len(factors)))))
-    width = 2.9 * max(len(cases), len(groups))
-    fig = plt.figure(figsize=(width, 7.6 + 7.0 * bool(groups)))
+    width = max(2.9 * max(len(cases), len(groups)), 6.0)  # the title and the outside legends fit one column too
+    fig = plt.figure(figsize=(width, 7.6 + 7.0 * bool(groups)), layout="constrained")
     top, bottom = fig.subfigures(2, 1, height_ratios=[1.0, 0.92]) if groups else (fig, None)
     _swelling(top, cases, equilibrium, runs, colours, tolerance, concentration)
     if groups:
         _damage(bottom, groups, colours, tolerance)
-    fig.suptitle("The paper's explicit procedure (fixed steps, mass scaling) against the equilibrium path", fontsize=10)
+    title = "The paper's explicit procedure (fixed steps, mass scaling)\nagainst the equilibrium path"
+    top.suptitle(title, fontsize=10)  # over the upper block, whose layout makes room for it
     return fig
 
 

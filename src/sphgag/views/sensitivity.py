@@ -207,5 +207,6 @@ def delamination_map(table: pd.DataFrame, swelling: pd.DataFrame, cases: dict, p
         matplotlib.lines.Line2D([], [], marker="*", ls="", color="k", label="figure 4 swelling: limit point"),
         matplotlib.lines.Line2D([], [], marker="x", ls="", color="k", label="figure 4 swelling: " + LAST_CONVERGED),
     ]
-    fig.legend(handles=handles, loc="outside lower center", ncol=3, fontsize=7, frameon=False)
+    columns = max(1, min(3, int(fig.get_figwidth() // 3.3)))  # as many columns as the figure is wide for
+    fig.legend(handles=handles, loc="outside lower center", ncol=columns, fontsize=7, frameon=False)
     return fig

@@ -15,6 +15,7 @@ import seaborn as sns  # noqa: E402
 
 from ..physics import donnan  # noqa: E402
 from ..records.provenance import figure_metadata  # noqa: E402
+from . import overlap  # noqa: E402
 
 LAYER_COLOURS = {"media": "#3b6fb6", "adventitia": "#2e9e5b", "GAG": "#d1352b"}  # the paper's layers and the pools
 GAG_CONCENTRATION = "GAG concentration (mEq/l)"
@@ -136,30 +137,15 @@ def paper_pool(table: pd.DataFrame) -> pd.DataFrame:
     return table[table.pool_model == PAPER_POOL] if "pool_model" in table else table
 
 
-def variant_title(law: str, pool: str) -> str:
-    """The heading of one (charge law, pool model) pair."""
-    if pool == PAPER_POOL:
-        return law_title(law)
-    return f"{law_short(law)}; {POOL_TITLES.get(pool, pool)}"
-
-
 def variant_short(law: str, pool: str) -> str:
     """The label of one (charge law, pool model) pair: the law's, or, for another pool model, both names."""
     return law_short(law) if pool == PAPER_POOL else f"{law} law, pool as {pool}"
 
 
-def law_blocks(laws, heights, width: float = 11.0):
-    """A figure with one titled block (a sub-figure, constrained layout) per charge law, stacked in the order of
-    ``laws`` (``heights`` in inches); returns the figure and the blocks."""
-    fig = plt.figure(figsize=(width, sum(heights) + 0.5), layout="constrained")
-    blocks = fig.subfigures(len(laws), 1, height_ratios=list(heights), squeeze=False)[:, 0]
-    for block, law in zip(blocks, laws):
-        block.suptitle(law_title(law), x=0.01, ha="left", fontsize=10, fontweight="bold")
-    return fig, list(blocks)
-
-
 def save(fig, paths, description: str):
-    """Save ``fig`` to every path (format from the suffix) with provenance metadata."""
+    """Save ``fig`` to every path (format from the suffix) with provenance metadata; where the environment asks for it,
+    record the figure's text overlaps first (:func:`sphgag.views.overlap.record`, under the name of its PNG)."""
+    overlap.record(fig, next((p for p in paths if str(p).endswith(".png")), paths[0]))
     for path in paths:
         Path(path).parent.mkdir(parents=True, exist_ok=True)
         meta = figure_metadata(description)

@@ -3,6 +3,8 @@ and the resolution study of those stresses (figure swelling_convergence, not in 
 
 from __future__ import annotations
 
+import textwrap
+
 import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
@@ -18,13 +20,12 @@ from .style import (
     LAST_CONVERGED,
     PAPER_POOL,
     _style,
-    is_paper_law,
+    law_title,
     layer_colours,
     long_measures,
     pressure_colour,
     pressure_colours,
     variant_short,
-    variant_title,
     variants,
 )
 
@@ -47,6 +48,10 @@ def pool_geometry_panel(ax, particles: pd.DataFrame, case: dict, probe_length: f
         ax.plot([a0, a1, a1, a0, a0], [r0, r0, r1, r1, r0], lw=0.7, color="k" if name.startswith("tip") else "0.45")
     ax.set(title=title, xlabel="arc from pool centre (um)")
     ax.set_aspect("equal")
+    edge = np.abs(arc).max()  # a narrow panel: two ticks, a round arc either side of the centre
+    step = 10 ** np.floor(np.log10(0.6 * edge))
+    step *= max(m for m in (1, 2, 5) if m * step <= 0.6 * edge)
+    ax.set_xticks([-step, step])
 
 
 TIP, TOP = "tip radial stress (kPa)", "top hoop stress (kPa)"
@@ -152,12 +157,12 @@ def band_panel(ax, rows: pd.DataFrame):
     return first
 
 
-def volume_panel(ax, resolution: pd.DataFrame, case: str):
+def volume_panel(ax, resolution: pd.DataFrame, case: str, law: str):
     """The tip radial stress against the pool's volume ratio J at every spacing of the resolution study
-    (convergence.csv rows of the paper's law and pool model and one case, converted and at-volume states), the walls
-    by line style: the axis on which the spacings agree."""
+    (convergence.csv rows of charge law ``law``, the paper's pool model and one case, converted and at-volume states),
+    the walls by line style: the axis on which the spacings agree. Returns the colour of each spacing."""
     rows = resolution[
-        resolution.charge_law.map(is_paper_law)
+        (resolution.charge_law == law)
         & (resolution.pool_model == PAPER_POOL)
         & (resolution.case == case)
         & (resolution.stage != "intact")
@@ -181,8 +186,20 @@ def volume_panel(ax, resolution: pd.DataFrame, case: str):
     ax.xaxis.set_major_formatter(ScalarFormatter())
     ax.axhline(0.0, color="0.7", lw=0.6)
     ax.set_xlabel("pool volume ratio J")
-    if len(rows):
-        ax.legend(fontsize=6, frameon=False)
+    return shades
+
+
+# the paper's figure 4 in its text: "the radial stresses change from compressive to tensile, typically exceeding
+# approximately 50 kPa for GAG concentration greater than 100 mEq/l" (the caption of figure 4)
+PAPER_TIP = dict(stress_kPa=50.0, from_mEq_l=100.0)
+PAPER_TIP_LABEL = "paper's text: tip radial stress\n> ~50 kPa above 100 mEq/l"
+PAPER_TIP_STYLE = dict(color="#b2182b", lw=3.0, alpha=0.35, solid_capstyle="butt")
+
+
+def paper_tip_mark(ax, max_concentration: float):
+    """The paper's value on a tip radial stress panel of figure 4: a band at 50 kPa from 100 mEq/l to
+    ``max_concentration`` (:data:`PAPER_TIP`, from the paper's caption of its figure 4)."""
+    ax.plot([PAPER_TIP["from_mEq_l"], max_concentration], [PAPER_TIP["stress_kPa"]] * 2, **PAPER_TIP_STYLE)
 
 
 def fig4(
@@ -190,7 +207,7 @@ def fig4(
     particles: pd.DataFrame,
     cases: dict,
     probe_length: float,
-    laws,
+    law: str,
     max_concentration,
     pressures=(),
     *,
@@ -198,21 +215,24 @@ def fig4(
     band: pd.DataFrame | None = None,
     resolution: pd.DataFrame | None = None,
 ):
-    """Figure 4: (a) the pools; then for each charge law (``laws``, column ``charge_law``) and pool model (column
-    ``pool_model``, the paper's first) the passive and active tip radial and top hoop stress vs concentration
-    (seaborn facets of tip_stress.csv: a row per law, pool model, model and stress, a column per pool, a colour per
-    pressure). A run's line ends at its last converged state (a cross if that is below ``max_concentration``). The
-    colours are those of the pressures of the table and ``pressures`` together (figure 3's, so that a pressure has
-    one colour in both figures). ``pool_layers``: the layers a pool's particles are in (``bilayer.pool_layers``).
+    """Figure 4 under one charge law (``law``, column ``charge_law``), laid out as the paper's: (a) the pools, a
+    column per pool (case I-IV); then one block per pool model (column ``pool_model``, the paper's first) and wall
+    (passive (b), active (c)): the tip radial stress (top row) and the top hoop stress (bottom row) against
+    concentration (seaborn facets of tip_stress.csv, a colour per pressure). The tip radial stress panels mark the
+    paper's "~50 kPa above 100 mEq/l" (:func:`paper_tip_mark`). A run's line ends at its last converged state (a
+    cross if that is below ``max_concentration``). The colours are those of the pressures of the table and
+    ``pressures`` together (figure 3's, so that a pressure has one colour in both figures). ``pool_layers``: the
+    layers a pool's particles are in (``bilayer.pool_layers``).
 
     With the resolution study (``band``: gci_band.csv, ``resolution``: convergence.csv; target ``resolution``), the
-    panels of its pools, laws and walls draw its extrapolated curve and GCI band (:func:`band_panel`), and a last
-    row plots the tip radial stress against the pool volume ratio at every spacing (:func:`volume_panel`, the paper's
-    law); without it, the figure says so."""
+    panels of its pools and walls draw its extrapolated curve and GCI band (:func:`band_panel`), and a last row
+    plots the tip radial stress against the pool volume ratio at every spacing (:func:`volume_panel`); without it,
+    the figure says so."""
     _style()
     names = sorted(cases, key=lambda k: cases[k]["angular_extent_deg"])
     tips = tips if "pool_model" in tips else tips.assign(pool_model=PAPER_POOL)
-    pairs = variants(tips, laws)
+    tips = tips[tips.charge_law == law]
+    pools = [pool for _, pool in variants(tips, [law])]
     models = [m for m in ("passive", "active") if m in set(tips.model)]
     levels = sorted(tips.pressure_mmHg.unique())
     colours = pressure_colours([*pressures, *levels])
@@ -220,46 +240,43 @@ def fig4(
     long = long_measures(
         tips.assign(pressure=tips.pressure_mmHg.map("{:g} mmHg".format)),
         {c: POOL_MEASURES[c] for c in ("tip_radial_stress_kPa", "tip_peak_radial_stress_kPa", "top_circ_stress_kPa")},
-        ["charge_law", "pool_model", "model", "case", "stage", "pressure", "concentration_mEq_l"],
+        ["pool_model", "model", "case", "stage", "pressure", "concentration_mEq_l"],
     )
     long = long[(long.stage == "converted") | (long.statistic == "region mean")]  # no peak of the intact wall
-    blocks = [(law, pool, m) for law, pool in pairs for m in models]
-    letters = {block: "bcdefghijklmnopqrstuvwxyz"[k] for k, block in enumerate(blocks)}
-
-    def label(block, q):
-        law, pool, m = block
-        return f"({letters[block]}) {m}, {variant_short(law, pool)}\n{q}"
-
-    long["panel"] = [
-        label((law, pool, m), q) for law, pool, m, q in zip(long.charge_law, long.pool_model, long.model, long.quantity)
-    ]
-    panels = [label(b, q) for b in blocks for q in (TIP, TOP)]
-    volume_row = f"({'bcdefghijklmnopqrstuvwxyz'[len(blocks)]}) paper's law, every dx\n{TIP}"
+    blocks = [(pool, m) for pool in pools for m in models]
+    long["panel"] = long.pool_model + "|" + long.model + "|" + long.quantity  # a row's key: the block and stress
+    panels = [(pool, m, q) for pool, m in blocks for q in (TIP, TOP)]
+    rows = ["(a)", *("|".join(p) for p in panels), *(["volume"] if resolution is not None else [])]
     grid = sns.FacetGrid(
         long,
         row="panel",
         col="case",
-        row_order=["(a)"] + panels + ([volume_row] if resolution is not None else []),
+        row_order=rows,
         col_order=names,
         sharex=False,
         sharey="row",
-        height=2.1,
-        aspect=3.0 / 2.1,
+        height=1.9,
+        aspect=2.5 / 1.9,
     )
     grid.map_dataframe(swelling_lines, colours=hues, max_concentration=max_concentration)
-    grid.add_legend()
     grid.set_titles("")
     grid.set_axis_labels(GAG_CONCENTRATION, "")
-    for ax, panel in zip(grid.axes[1:, 0], panels):
-        ax.set_ylabel(panel)
-    for ax in grid.axes[
-        1 : 1 + len(panels)
-    ].flat:  # one concentration axis: a run that ended early ends short of the others
+    for ax in grid.axes[1 : 1 + len(panels)].flat:  # one concentration axis: a run that ended early ends short
         ax.set_xlim(-0.04 * max_concentration, 1.04 * max_concentration)
-    for k, (law, pool) in enumerate(pairs):  # a heading above each law's (and pool model's) rows
-        grid.axes[1 + 2 * len(models) * k, 0].set_title(
-            variant_title(law, pool), loc="left", fontweight="bold", fontsize=9
-        )
+    for k, (pool, m) in enumerate(blocks):  # the block's letter and wall above its rows, as the paper's (b) and (c)
+        top = 1 + 2 * k
+        heading = f"({'bcdefghijklmnopqrstuvwxyz'[k]}) {m} model"
+        heading += "" if pool == PAPER_POOL else f", pool as {pool}"
+        grid.axes[top, 0].set_title(heading, loc="left", fontweight="bold")
+        for ax in grid.axes[top]:
+            paper_tip_mark(ax, max_concentration)
+        grid.axes[top, 0].set_ylabel(TIP)
+        grid.axes[top + 1, 0].set_ylabel(TOP)
+    for ax in grid.axes[1 : 1 + len(panels) - 1].flat:  # the concentration axis is labelled below each block only
+        ax.set_xlabel("")
+    for k in range(len(blocks) - 1):
+        for ax in grid.axes[1 + 2 * k + 1]:
+            ax.set_xlabel(GAG_CONCENTRATION)
     for ax, name in zip(grid.axes[0], names):
         pool_geometry_panel(
             ax,
@@ -270,36 +287,41 @@ def fig4(
             pool_layers,
         )
     grid.axes[0, 0].set_ylabel("radius (um)")
+    legend = dict(grid._legend_data)
+    legend[PAPER_TIP_LABEL] = Line2D([], [], **PAPER_TIP_STYLE)
     if band is not None:
-        converted = band[band.stage == "converted"]
+        converted = band[(band.stage == "converted") & (band.charge_law == law)]
         quantity = {TIP: "tip_radial_stress_kPa", TOP: "top_circ_stress_kPa"}
-        for k, block in enumerate(blocks):
-            for j, q in enumerate((TIP, TOP)):
-                for ax, name in zip(grid.axes[1 + 2 * k + j], names):
-                    law, pool, m = block
-                    rows = converted[
-                        (converted.charge_law == law)
-                        & (converted.pool_model == pool)
-                        & (converted.model == m)
-                        & (converted.case == name)
-                        & (converted.quantity == quantity[q])
-                    ]
-                    if len(rows):
-                        band_panel(ax, rows)
-        proxies = [
-            Patch(color="0.55", alpha=0.35, lw=0),
-            Line2D([], [], color="k", ls="--", lw=0.9),
-            Line2D([], [], color="0.45", marker="x", ls="", lw=0.8),
-        ]
-        labels = [BAND, EXTRAPOLATED, NO_ORDER]
-        grid.figure.legend(proxies, labels, loc="lower right", fontsize=7, frameon=False)
+        for k, (pool, m, q) in enumerate(panels):
+            for ax, name in zip(grid.axes[1 + k], names):
+                rows_ = converted[
+                    (converted.pool_model == pool)
+                    & (converted.model == m)
+                    & (converted.case == name)
+                    & (converted.quantity == quantity[q])
+                ]
+                if len(rows_):
+                    band_panel(ax, rows_)
+        legend[BAND] = Patch(color="0.55", alpha=0.35, lw=0)
+        legend[EXTRAPOLATED] = Line2D([], [], color="k", ls="--", lw=0.9)
+        legend[NO_ORDER] = Line2D([], [], color="0.45", marker="x", ls="", lw=0.8)
     else:
-        grid.figure.text(0.99, 0.998, NOT_RUN, ha="right", va="top", fontsize=7, color="0.3")
+        legend[NOT_RUN] = Line2D([], [], ls="")
     if resolution is not None:
         for ax, name in zip(grid.axes[-1], names):
-            volume_panel(ax, resolution, name)
-        grid.axes[-1, 0].set_ylabel(volume_row)
+            shades = volume_panel(ax, resolution, name, law)
+        for dx, colour in shades.items():
+            legend[f"resolution study: dx = {dx:g} um"] = Line2D([], [], color=colour, marker="o", ms=2.5, lw=1.0)
+        grid.axes[-1, 0].set_ylabel(TIP)
+        grid.axes[-1, 0].set_title(f"({'bcdefghijklmnopqrstuvwxyz'[len(blocks)]}) every dx", loc="left")
+        for wall, dashes in (("passive", "-"), ("active", "--")):
+            legend[f"resolution study: {wall} (every dx)"] = Line2D([], [], color="0.3", ls=dashes, lw=1.0)
+    grid.add_legend(legend_data=legend, label_order=list(legend), fontsize=7)
+    title = textwrap.fill(f"Figure 4: {law_title(law)}", 75)
     grid.tight_layout()
+    fig = grid.figure
+    fig.suptitle(title, x=0.01, y=1.0, ha="left", va="top", fontsize=10, fontweight="bold")
+    fig.subplots_adjust(top=fig.subplotpars.top - (0.2 + 0.17 * title.count("\n")) / fig.get_figheight())
     return grid.figure
 
 

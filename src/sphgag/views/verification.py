@@ -8,6 +8,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 import seaborn as sns
+from matplotlib.ticker import FormatStrFormatter, LogLocator, NullFormatter
 
 from ..physics import fracture
 from ..studies import annulus
@@ -101,6 +102,13 @@ def verification_pool(table: pd.DataFrame, profiles: pd.DataFrame):
     return fig
 
 
+def round_log_ticks(axis):
+    """Label a log axis that spans less than a decade at round values only (its minor tick labels overlapped)."""
+    axis.set_major_locator(LogLocator(subs=(1.0, 1.5, 2.0, 3.0, 5.0, 7.0)))
+    axis.set_major_formatter(FormatStrFormatter("%g"))
+    axis.set_minor_formatter(NullFormatter())
+
+
 def resolution_panel(ax, errors: pd.DataFrame, measures: dict, ratios: dict):
     """Errors of the pool verification against dx / b, log-log (seaborn): a colour per aspect ratio (``ratios``:
     legend label -> colour, in the order of the sorted ratios), a marker and line style per ``measures`` column
@@ -126,6 +134,7 @@ def resolution_panel(ax, errors: pd.DataFrame, measures: dict, ratios: dict):
         ax=ax,
     )
     ax.set(xscale="log", yscale="log", xlabel="dx / b")
+    round_log_ticks(ax.xaxis)
     style_legend(ax, "upper left", fontsize=6.5, bbox_to_anchor=(1.0, 1.0))
 
 
@@ -223,6 +232,7 @@ def verification_crack(table: pd.DataFrame, modulus: float, fracture_energy_J_m2
     ax.set(
         xscale="log", yscale="log", xlabel="dx [um]", ylabel="|relative error|", title="(c) errors against resolution"
     )
+    round_log_ticks(ax.xaxis)
     ax.legend(frameon=False, fontsize=5.5, loc="upper left", bbox_to_anchor=(1.0, 1.0))
     return fig
 

@@ -160,7 +160,7 @@ def bilayer_transmural_panels(ax_r, ax_t, profiles: pd.DataFrame, colours: dict)
     for name, border in zip(names, mean_borders):
         ax_t.text(border, 0.97, f"{name} ", transform=at, fontsize=7, va="top", ha="right")
     ax_r.set(ylabel="radial stress (kPa)")
-    ax_t.set(xlabel="normalised wall position (r - r_in)/(r_out - r_in)", ylabel="circumferential stress (kPa)")
+    ax_t.set(xlabel="normalised wall position\n(r - r_in)/(r_out - r_in)", ylabel="circumferential stress (kPa)")
 
 
 def fig3(mean_states, mean_exact, bilayer, bilayer_exact: dict, profiles: pd.DataFrame, homeostatic_mmHg: float):
