@@ -169,3 +169,33 @@ def test_the_ablation_gives_no_number_without_an_equilibrium():
         "setting", "direction", "case", "model", "charge_law", "concentration_mEq_l", "tip_radial_stress_kPa",
         "top_hoop_stress_kPa", "volume_ratio", "residual",
     ]  # fmt: skip
+
+
+def _ablation(tips: dict) -> pd.DataFrame:
+    """An ablation table at 150 mEq/l: ``tips[(setting, direction, case)]`` = tip radial stress."""
+    rows = [
+        dict(setting=s, direction=d, case=c, model="passive", charge_law="prescribed", concentration_mEq_l=150.0,
+             tip_radial_stress_kPa=v, top_hoop_stress_kPa=1.0, volume_ratio=2.0, residual=1e-6, equilibrium="converged",
+             pressure_mmHg=103.0, particles=100)
+        for (s, d, c), v in tips.items()
+    ]  # fmt: skip
+    return pd.DataFrame(rows, columns=paper_settings.COLUMNS)
+
+
+def test_claim_p5_judges_the_authors_configuration_and_names_the_largest_steps():
+    from sphgag.studies import claims
+
+    tips = {("none", "script", "I"): 120.0, ("none", "script", "IV"): 60.0, ("none", "ours", "I"): 400.0,
+            ("none", "ours", "IV"): 1200.0, ("lumen_control", "from_script", "I"): 300.0,
+            ("lumen_control", "from_script", "IV"): 900.0, ("lumen_control", "from_ours", "I"): 150.0,
+            ("lumen_control", "from_ours", "IV"): 100.0, ("temperature", "from_script", "I"): 121.0,
+            ("temperature", "from_script", "IV"): 61.0, ("temperature", "from_ours", "I"): 399.0,
+            ("temperature", "from_ours", "IV"): 1199.0}  # fmt: skip
+    claim = claims.p5_authors_settings(claims.Evidence(paper_settings=_ablation(tips)))
+    assert claim.claim_id == "P5" and claim.holds == "yes" and claim.margin == pytest.approx(10.0)
+    assert claim.our_value.index("lumen_control") < claim.our_value.index("temperature")
+    tips[("none", "script", "IV")] = 200.0
+    assert claims.p5_authors_settings(claims.Evidence(paper_settings=_ablation(tips))).holds == "no"
+    tips[("none", "script", "IV")] = np.nan  # no equilibrium: never a pass
+    assert claims.p5_authors_settings(claims.Evidence(paper_settings=_ablation(tips))).holds == "no"
+    assert claims.p5_authors_settings(claims.Evidence()).holds == "not run"
