@@ -161,7 +161,7 @@ def test_the_ablation_gives_no_number_without_an_equilibrium():
     none = table[table.setting == "none"].set_index("concentration_mEq_l")
     assert none.loc[100.0, "tip_radial_stress_kPa"] == 40.0 and none.loc[100.0, "equilibrium"] == "converged"
     assert np.isnan(none.loc[150.0, "tip_radial_stress_kPa"])
-    assert none.loc[150.0, "equilibrium"].startswith("no equilibrium (limit point below 150")
+    assert none.loc[150.0, "equilibrium"] == "no equilibrium at 150 mEq/l (the path ends below it: limit point)"
     switched = table[(table.setting == "tip_probe") & (table.concentration_mEq_l == 100.0)].iloc[0]
     assert np.isnan(switched.tip_radial_stress_kPa) and switched.equilibrium.startswith("not converged")
     assert switched.direction == "from_script"

@@ -239,8 +239,10 @@ def ablation(tables: list[pd.DataFrame], concentrations, tolerance: float) -> pd
                 values = dict(tip_radial_stress_kPa=np.nan, top_hoop_stress_kPa=np.nan, volume_ratio=np.nan,
                               residual=np.nan, pressure_mmHg=np.nan)  # fmt: skip
                 if not len(at):
-                    reason = f"{last.path_end} below {c:g} mEq/l" + (f": {last.end_reason}" if last.end_reason else "")
-                    rows.append(dict(row, **values, equilibrium=f"no equilibrium ({reason})"))
+                    reason = f"the path ends below it: {last.path_end}" + (
+                        f", {last.end_reason}" if isinstance(last.end_reason, str) and last.end_reason else ""
+                    )
+                    rows.append(dict(row, **values, equilibrium=f"no equilibrium at {c:g} mEq/l ({reason})"))
                     continue
                 s = at.iloc[-1]
                 if not s.residual <= tolerance:

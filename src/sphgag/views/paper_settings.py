@@ -6,6 +6,7 @@ in the tip radial stress from the authors' value to ours, read both ways (circle
 that setting switched to ours; squares: from ours, that setting switched to theirs, sign turned so that both read
 authors' -> ours), passive walls blue, active walls red. A step of 0 means the setting changes nothing there; the
 whole difference, ours - the authors', is the panel's title. The axis is linear up to 10 kPa and logarithmic beyond.
+A missing marker: one end of that step has no equilibrium at that concentration (the ablation table says why).
 """
 
 from __future__ import annotations
@@ -30,6 +31,7 @@ def figure(steps: pd.DataFrame):
     at = steps[np.isclose(steps.concentration_mEq_l, top) & (steps.quantity == "tip_radial_stress_kPa")]
     cases = list(dict.fromkeys(at.case))
     settings = list(dict.fromkeys(at.setting))
+    reach = 2.0 * max(float(np.nanmax(np.abs(at.step))) if at.step.notna().any() else 10.0, 10.0)  # every marker in
     fig, axes = plt.subplots(1, len(cases), figsize=(4.6 * len(cases) + 1.6, 0.45 * len(settings) + 2.2),
                              sharey=True, squeeze=False, layout="constrained")  # fmt: skip
     for ax, case in zip(axes[0], cases):
@@ -46,6 +48,7 @@ def figure(steps: pd.DataFrame):
             titles.append(f"{model}: {r.script:.0f} (authors') -> {r.ours:.0f} kPa (ours)")
         ax.axvline(0.0, color="0.5", lw=0.8)
         ax.set_xscale("symlog", linthresh=10.0)
+        ax.set_xlim(-reach, reach)
         ax.set_yticks(range(len(settings)), [s.replace("_", " ") for s in settings])
         ax.set_ylim(len(settings) - 0.5, -0.5)
         ax.grid(axis="x", color="0.9")
