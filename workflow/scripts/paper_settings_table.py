@@ -13,5 +13,5 @@ with jobs.run(snakemake, name="paper_settings_table") as job:  # noqa: F821
     steps.to_csv(job.output.steps, index=False)
     top = max(p.concentrations)
     for r in paper_settings.ranked(table, top).itertuples():
-        job.log.info("[paper_settings] %s: median |step| %.1f kPa at %g mEq/l (share %.2f)", r.setting,
-                     r.abs_step_kPa, top, r.share)  # fmt: skip
+        job.log.info("[paper_settings] %s: median share %.2f of ours - authors' at %g mEq/l (|step| %.1f kPa)",
+                     r.setting, r.share, top, r.abs_step_kPa)  # fmt: skip

@@ -278,11 +278,13 @@ def steps(table: pd.DataFrame, concentration: float, quantity: str = "tip_radial
 
 
 def ranked(table: pd.DataFrame, concentration: float) -> pd.DataFrame:
-    """The settings by the size of their step in the tip radial stress at ``concentration`` (:func:`steps`), largest
-    first: per setting, the median over walls, pools and directions of ``|step|`` and of ``share``."""
+    """The settings by how much of the difference between the two configurations their step accounts for in the tip
+    radial stress at ``concentration`` (:func:`steps`): per setting, the median over walls, pools and directions of
+    ``share`` (the step over ours - the authors'; negative: a step away from ours) and of ``|step|``, the largest
+    share first."""
     s = steps(table, concentration)
     if not len(s):
         return pd.DataFrame(columns=["setting", "abs_step_kPa", "share"])
     g = s.assign(abs_step_kPa=s.step.abs()).groupby("setting", sort=False)
     out = g.agg(abs_step_kPa=("abs_step_kPa", "median"), share=("share", "median")).reset_index()
-    return out.sort_values("abs_step_kPa", ascending=False, na_position="last").reset_index(drop=True)
+    return out.sort_values("share", ascending=False, na_position="last").reset_index(drop=True)
