@@ -50,6 +50,7 @@ include: "workflow/rules/sensitivity.smk"
 include: "workflow/rules/views.smk"
 include: "workflow/rules/variants.smk"
 include: "workflow/rules/procedure.smk"
+include: "workflow/rules/paper_settings.smk"
 include: "workflow/rules/docs.smk"
 
 
@@ -135,6 +136,14 @@ rule paper_procedure:
         rules.procedure_figure.output,
 
 
+rule paper_settings:
+    """Figure 4's magnitudes against the authors' settings: figure 4's protocol at equilibrium under the authors'
+    configuration (config/script.yaml) and ours, and each with one setting switched to the other's value."""
+    input:
+        rules.paper_settings_table.output,
+        rules.paper_settings_figure.output,
+
+
 rule views:
     """A ParaView series of every swelling and delamination run, and an animation of every delamination run."""
     input:
@@ -158,6 +167,7 @@ rule everything:
         rules.sensitivity.input,
         rules.variants.input,
         rules.paper_procedure.input,
+        rules.paper_settings.input,
         rules.views.input,
         rules.docs.input,
 

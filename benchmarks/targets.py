@@ -24,6 +24,7 @@ ORDER = (
     "docs",
     "views",
     "paper_procedure",
+    "paper_settings",
     "resolution",
     "verification",
     "sensitivity",

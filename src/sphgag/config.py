@@ -31,6 +31,7 @@ from .studies import annulus, artery, candidates, onset, protocols
 from .studies.artery import Bilayer, Mean
 from .studies.delamination.section import Delamination
 from .studies.paper_procedure import PaperProcedure
+from .studies.paper_settings import PaperSettings
 from .studies.pool_response import Sensitivity
 from .studies.protocols import BilayerCalibration, Calibration, HomeostasisSettings
 from .studies.swelling import Swelling, SwellingConvergence
@@ -276,6 +277,7 @@ SECTIONS = (
     Delamination,
     Verification,
     PaperProcedure,
+    PaperSettings,
     Sensitivity,
 )
 

@@ -87,11 +87,12 @@ STATE = "results/states/{model}_{pressure}mmHg.npz"
 SW = config["swelling"]
 CASES = list(SW["cases"])
 SWELL_PRESSURES = [f"{p:g}" for p in SW["pressures_mmHg"]]
-# what the simulations depend on; probe_length_um only sets where rule pool_stresses measures
+# what the simulations depend on; probe_length_um and tip_probe only set where rule pool_stresses measures
+SWELL_PROBES = ("probe_length_um", "tip_probe")
 SWELL_SETTINGS = {
     k: v
     for k, v in SW.items()
-    if k not in ("cases", "models", "pool_models", "variant_pool_models", "pressures_mmHg", "probe_length_um")
+    if k not in ("cases", "models", "pool_models", "variant_pool_models", "pressures_mmHg") + SWELL_PROBES
 }
 # the pool models run side by side (wildcard {pool}), each under the charge laws it carries
 # (sphgag.studies.protocols.POOL_MODELS); a run's settings hold its own pool model only. Figure 4's pool models

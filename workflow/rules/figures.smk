@@ -149,6 +149,7 @@ rule claims:
         resolution=study_input(lambda: rules.swelling_convergence.output[0], "resolution"),
         procedure=study_input(lambda: rules.procedure_summary.output.table, "paper_procedure"),
         procedure_damage=study_input(lambda: rules.procedure_summary.output.damage, "paper_procedure"),
+        paper_settings=study_input(lambda: rules.paper_settings_table.output.table, "paper_settings"),
     output:
         table=report(
             "results/claims.csv",
@@ -172,6 +173,7 @@ rule claims:
         resolution=study_evidence(lambda: rules.swelling_convergence.output[0], "resolution"),
         procedure=study_evidence(lambda: rules.procedure_summary.output.table, "paper_procedure"),
         procedure_damage=study_evidence(lambda: rules.procedure_summary.output.damage, "paper_procedure"),
+        paper_settings=study_evidence(lambda: rules.paper_settings_table.output.table, "paper_settings"),
         study_pressure=config["swelling_convergence"]["pressure_mmHg"],
     script:
         "../scripts/claims.py"

@@ -54,6 +54,7 @@ rule pool_stresses:
         gag=lambda wildcards: GAG[wildcards.law],
         grading=config["grading"],
         probe_length=SW["probe_length_um"],
+        tip_probe=SW["tip_probe"],
     script:
         "../scripts/pool_stresses.py"
 

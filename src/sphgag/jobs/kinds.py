@@ -40,6 +40,11 @@ EXPLICIT, DAMAGE = "{model}/{case}_x{factor}", "{poolset}/{sigma}kPa_x{factor}"
 procedure_explicit = Kind("procedure_explicit", EXPLICIT, "procedure", log_path=f"{PROCEDURE_LOGS}/{EXPLICIT}.log")
 procedure_delaminate = Kind("procedure_delaminate", DAMAGE, "procedure", log_path=f"{PROCEDURE_LOGS}/{DAMAGE}.log")
 
+# Figure 4 against the authors' settings (target paper_settings): one run per base configuration (script, ours), the
+# setting switched from it (none: the base itself) and wall model
+PAPER_SETTINGS = "{base}/{setting}/{model}"
+paper_settings_run = Kind("paper_settings_run", PAPER_SETTINGS, log_path=f"logs/paper_settings/{PAPER_SETTINGS}.log")
+
 # The views of every run: a ParaView series of each swelling and delamination run ("{law}/{run}": any delamination
 # run, of the paper's damage law or of one with a fracture energy), and an animation of each delamination run
 ANY_DELAMINATION = "{law}/{run}"

@@ -24,6 +24,7 @@ import numpy as np
 import pandas as pd
 
 from ..physics.donnan import PAPER_LAW  # Pi(c) prescribed, eqs. 2.25-2.27 as printed
+from . import paper_settings
 
 #: the paper's pool model (sphgag.studies.protocols.POOL_MODELS): the pool's GAG particles carry eq. (2.27)
 PAPER_POOL = "particles"
@@ -57,7 +58,8 @@ class Evidence:
     (swelling/convergence.csv and gci_band.csv, target ``resolution``: figure 4's resolution study at
     ``study_pressure``, :func:`across_band`), ``procedure`` (paper_procedure/summary.csv, target
     ``paper_procedure``: the authors' explicit procedure, :data:`PROCEDURE`; ``procedure_damage``, its damage runs'
-    rows, paper_procedure/damage.csv); :data:`TARGETS` names the target that
+    rows, paper_procedure/damage.csv), ``paper_settings`` (paper_settings/ablation.csv, target ``paper_settings``:
+    figure 4 under the authors' settings, :func:`p5_authors_settings`); :data:`TARGETS` names the target that
     makes each of these, for the rows of a claim whose evidence is missing.
     """
 
@@ -79,6 +81,7 @@ class Evidence:
     study_pressure: float | None = None
     procedure: pd.DataFrame | None = None
     procedure_damage: pd.DataFrame | None = None
+    paper_settings: pd.DataFrame | None = None
 
     def of_law(self, law: str, pool_model: str = PAPER_POOL) -> Evidence:
         """The evidence of one charge law and pool model: its rows of the pool tables (columns ``charge_law`` and,
@@ -103,6 +106,7 @@ TARGETS = {
     "band": "resolution",
     "procedure": "paper_procedure",
     "procedure_damage": "paper_procedure",
+    "paper_settings": "paper_settings",
 }
 
 
@@ -801,6 +805,47 @@ def procedure_claims(e: Evidence, found: list[Claim]) -> list[Claim]:
     return out
 
 
+# -- figure 4 under the authors' settings (target paper_settings) ---------------------------------------------------
+
+#: claim P5's range of the tip radial stress [kPa] (P1's reading of figure 4) and the concentration it is read at
+P5_RANGE, P5_CONCENTRATION = (50.0, 150.0), 150.0
+
+
+def p5_authors_settings(e: Evidence) -> Claim:
+    """Figure 4's magnitudes follow from the authors' settings."""
+    criterion = (
+        f"the authors' configuration (config/script.yaml) gives every pool's and wall's tip radial stress within "
+        f"{P5_RANGE[0]:g}-{P5_RANGE[1]:g} kPa at {P5_CONCENTRATION:g} mEq/l, each at equilibrium; the settings are "
+        "ranked by the median share of the difference ours - authors' that their step makes (both directions, cases "
+        "and walls of the ablation)"
+    )
+    bare = Claim("P5", p5_authors_settings.__doc__.splitlines()[0], '"typically exceeding approximately 50 kPa" above '
+                 "100 mEq/l; about 50-150 kPa at 150 mEq/l (figure 4, as P1 reads it)", "", "", criterion)  # fmt: skip
+    if e.paper_settings is None:
+        return e.not_run(bare, "paper_settings")
+    t = e.paper_settings
+    at = t[np.isclose(t.concentration_mEq_l, P5_CONCENTRATION)]
+    script = at[(at.setting == paper_settings.NONE) & (at.direction == "script")]
+    ours = at[(at.setting == paper_settings.NONE) & (at.direction == "ours")]
+    if not len(script):
+        return replace(bare, our_value=f"n/a: no state of the authors' configuration at {P5_CONCENTRATION:g} mEq/l",
+                       holds="n/a")  # fmt: skip
+    v = script.tip_radial_stress_kPa.to_numpy(dtype=float)
+    missing = int(np.isnan(v).sum())
+    margin = float(min(np.nanmin(v) - P5_RANGE[0], P5_RANGE[1] - np.nanmax(v))) if missing < len(v) else np.nan
+    each = ", ".join(f"{r.model} {r.case} {r.tip_radial_stress_kPa:.0f}" for r in script.itertuples())
+    theirs = f"authors' configuration: {each} kPa (residual <= {script.residual.max():.1g})"
+    if missing:
+        theirs += f"; {missing} state(s) without equilibrium"
+    if len(ours):
+        theirs += "; ours: " + ", ".join(f"{r.model} {r.case} {r.tip_radial_stress_kPa:.0f}" for r in ours.itertuples())
+    top = paper_settings.ranked(t, P5_CONCENTRATION).dropna(subset=["share"]).head(3)
+    if len(top):
+        theirs += "; the settings that account for most of the difference (median share of ours - authors', |step|): "
+        theirs += ", ".join(f"{r.setting} {r.share:+.2f} ({r.abs_step_kPa:.0f} kPa)" for r in top.itertuples())
+    return replace(bare, our_value=theirs, holds=_yes(missing == 0 and margin >= 0.0), margin=margin)
+
+
 def _found(claims, e: Evidence) -> list[Claim]:
     """The claims of ``claims`` that ``e`` has the data for."""
     return [c for c in (claim(e) for claim in claims) if c is not None]
@@ -907,7 +952,8 @@ def evaluate(e: Evidence, laws) -> list[Claim]:
     found = _found(CALIBRATION, e) + by_law(variants(e.tips, laws), pool_claims)
     paper = [c for c in found if c.charge_law == PAPER_LAW and c.pool_model == PAPER_POOL]
     procedure = [replace(c, charge_law=PAPER_LAW, pool_model=PAPER_POOL) for c in procedure_claims(e, paper)]
-    return found + procedure
+    settings = replace(p5_authors_settings(e), charge_law=PAPER_LAW, pool_model=PAPER_POOL)  # the paper's law alone
+    return found + procedure + [settings]
 
 
 def variants(tips: pd.DataFrame | None, laws) -> list[tuple[str, str]]:
@@ -1002,6 +1048,10 @@ def markdown(df: pd.DataFrame) -> str:
         "counts, and 4 and 16 times as many steps), beside the equilibrium's verdict (P1: the equilibrium at the "
         "procedure's spacing and temperature; P2-P4: the equilibrium's C14-C16). `ours` quotes the residual at which "
         "each number was read: an explicit state's residual above the solver tolerance (1e-4) is not an equilibrium.",
+        "",
+        "P5 reads figure 4 at equilibrium under the authors' settings (target `paper_settings`: config/script.yaml, "
+        "and each of its settings switched to ours alone, and back), and names the settings whose step moves the tip "
+        "stress most.",
         "",
         "| id | charge law | pool model | path | claim | paper | ours | holds | criterion | margin | across the band |",
         "|---|---|---|---|---|---|---|---|---|---|---|",

@@ -122,14 +122,16 @@ def measure(
     wall: str = "passive",
     name: str = "convergence",
     graded: dict | None = None,
+    tip_probe: str = "region",
 ) -> pd.DataFrame:
     """Rows of ``results/swelling/convergence.csv`` for one particle spacing and ``wall`` (column ``model``:
-    passive or active): the pool stresses (:func:`sphgag.studies.protocols.pool_table`) of the states of
-    :func:`swell_cases`, the intact wall, the converted pools on their path and the pools at their volume ratios."""
+    passive or active): the pool stresses (:func:`sphgag.studies.protocols.pool_table`, the tips of ``tip_probe``) of
+    the states of :func:`swell_cases`, the intact wall, the converted pools on their path and the pools at their
+    volume ratios."""
     tables = []
     for case, entry in cases.items():
         model = case_model(dx, bilayer, numerics, gag, entry, f"{name}_{case}", graded)
-        table = protocols.pool_table(model, states[case], artery.pool_sector(entry), probe_length, gag)
+        table = protocols.pool_table(model, states[case], artery.pool_sector(entry), probe_length, gag, tip_probe)
         kept = table[table.stage.isin(["intact", "converted", volume_states.STAGE])]
         tables.append(kept.assign(dx_um=float(dx), particles=model.n, model=wall, case=case))
     out = pd.concat(tables, ignore_index=True)

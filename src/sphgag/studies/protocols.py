@@ -482,13 +482,36 @@ def swelling_load(base: Load, conversion: float, concentration: float) -> Load:
     return base.with_material(transition=float(conversion), concentration=float(concentration))
 
 
-def pool_measurements(model: Model, ev, pool, members: np.ndarray, probe_length: float) -> dict:
+#: how the tip radial stress of figure 4 is measured (``swelling.tip_probe``): over the region ``probe_length_um``
+#: beyond each end of the pool (ours), or on the pool layers' particles adjacent to each end (the authors' script: "a
+#: few medial particles just beyond the angular ends of the pool at its radius"), one particle spacing wide
+TIP_PROBES = {
+    "region": "the pool layers' material swelling.probe_length_um beyond each angular end, across the pool's radial "
+    "extent (ours)",
+    "adjacent": "the pool layers' particles within one particle spacing beyond each angular end, across the pool's "
+    "radial extent (the authors' script)",
+}
+
+
+def tip_length(tip_probe: str, probe_length: float, dx: float) -> float:
+    """The arc length [um] of the tip regions of :func:`pool_measurements` under ``tip_probe`` (:data:`TIP_PROBES`):
+    ``probe_length`` for ``region``, the layout's particle spacing ``dx`` for ``adjacent`` (the column of particles
+    next to each end)."""
+    if tip_probe not in TIP_PROBES:
+        raise ValueError(f"tip probe {tip_probe!r}: one of {', '.join(TIP_PROBES)}")
+    return probe_length if tip_probe == "region" else dx
+
+
+def pool_measurements(
+    model: Model, ev, pool, members: np.ndarray, probe_length: float, tip_probe: str = "region"
+) -> dict:
     """Tip radial and top/bottom circumferential Cauchy stress around a pool (current polar frame).
 
     Each stress is the volume-weighted mean over a region of fixed physical size
     (:func:`measure.pool_probes`): the medial material ``probe_length`` beyond
     each angular end of the pool across its radial extent (tips) and just
-    outside it at its mid-angle (top = outer side, bottom = inner side). Beside
+    outside it at its mid-angle (top = outer side, bottom = inner side); with ``tip_probe = adjacent``
+    (:data:`TIP_PROBES`) the tips are the particles within one spacing beyond each end (:func:`tip_length`). Beside
     the tip mean, ``tip_peak_radial_stress_kPa`` is the largest particle value
     in the tip regions (a kernel average next to the pool's corners, which does
     not converge with refinement). ``pool_volume_change`` is the pool's
@@ -498,9 +521,10 @@ def pool_measurements(model: Model, ev, pool, members: np.ndarray, probe_length:
     """
     lay = model.layout
     probes = measure.pool_probes(pool, probe_length)
-    tips = [measure.sector_average(ev, lay, probes[k], "rr", lay.pool_layers) for k in ("tip_low", "tip_high")]
+    ends = [measure.pool_probes(pool, tip_length(tip_probe, probe_length, lay.dx))[k] for k in ("tip_low", "tip_high")]
+    tips = [measure.sector_average(ev, lay, end, "rr", lay.pool_layers) for end in ends]
     srr, _, _, J_all = measure.cauchy_polar(ev)
-    tip_particles = np.concatenate([probes[k].members(lay, layer=lay.pool_layers) for k in ("tip_low", "tip_high")])
+    tip_particles = np.concatenate([end.members(lay, layer=lay.pool_layers) for end in ends])
     J = J_all[members] if members.size else np.array([np.nan])
     V = lay.volume[members] if members.size else np.array([1.0])
     if model.cavities:  # the contents swell uniformly: the lining's area gives the pool's volume (engine.pool_cavity)
@@ -736,6 +760,35 @@ POOL_MODELS: Registry[PoolModel] = Registry(
 )
 
 
+#: how the lumen is loaded while a pool swells (``swelling.lumen_control``)
+LUMEN_CONTROLS = {
+    "pressure": "the lumen pressure of the start state held (a follower load on the inner surface; ours)",
+    "radius": "the inner radius of the start state held (displacement control; the authors' script): the pressure "
+    "the wall then carries is read back from the reactions",
+}
+
+
+def lumen_load(model: Model, start: solver.State, lumen_control: str) -> Load:
+    """The load of ``start`` (a pressure-controlled state) with its lumen held as ``lumen_control`` says
+    (:data:`LUMEN_CONTROLS`): its pressure, or the mean current radius of its inner-surface particles (each then placed
+    at that radius on its reference ray, :func:`sphgag.engine.loading.prescribed_inner_positions`)."""
+    if lumen_control not in LUMEN_CONTROLS:
+        raise ValueError(f"lumen control {lumen_control!r}: one of {', '.join(LUMEN_CONTROLS)}")
+    if lumen_control == "pressure":
+        return start.load
+    r_in = measure.surface_radius(model, start.x, "inner")
+    return replace(start.load, pressure_kPa=None, inner_radius=r_in)
+
+
+def with_hourglass_factor(model: Model, factor: float) -> Model:
+    """``model`` with the modulus E of every particle's hourglass penalty (eq. 2.14) times ``factor``: the
+    authors' script scales E by a factor per stage (0.1 while swelling). Every form's penalty is linear in
+    ``alpha E`` (:func:`sphgag.engine.forces.hourglass_coefficients`), so this is alpha times ``factor``."""
+    if factor == 1.0:
+        return model
+    return replace(model, hourglass_alpha=model.hourglass_alpha * float(factor))
+
+
 def concentration_steps(sw: dict) -> np.ndarray:
     """The fixed-charge concentrations [mEq/l] of the figure 4 ramp after c = 0: ``concentration_points`` evenly
     spaced from 0 to ``max_concentration_mEq_l``."""
@@ -757,8 +810,11 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
     4. raise the fixed-charge concentration from 0 to ``max_concentration_mEq_l``
        (``concentration_points`` converged states, c = 0 included).
     The lumen pressure stays constant throughout: it is a follower pressure load
-    on the inner surface (pressure control), not a prescribed radius. The states
-    are measured by :func:`pool_table`.
+    on the inner surface (pressure control), not a prescribed radius; with ``lumen_control = radius`` in ``sw``
+    (:data:`LUMEN_CONTROLS`, the authors' script) the inner radius of ``start`` is held instead. With
+    ``hourglass_factor`` in ``sw`` the hourglass modulus E of eq. (2.14) is that factor times its value for the whole
+    protocol, the intact wall re-solved first (:func:`with_hourglass_factor`; the script: 0.1 while swelling). The
+    states are measured by :func:`pool_table`.
 
     Where a concentration step finds no equilibrium on its path, the pool's own volume becomes the control
     (:func:`sphgag.engine.pool_volume.continue_path`): the path either passes a limit point (the states end at the last
@@ -767,10 +823,12 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
     limit point there, the discretisation fails; the reason is recorded). No state beyond the last equilibrium is
     returned.
     """
+    model = with_hourglass_factor(model, sw.get("hourglass_factor", 1.0))
     path_solver = Numerics.of(numerics).solver(model)
     run = model.name
     opts = dict(run=run, on_state=log_state(run))
-    base = swelling_load(start.load, 0.0, 0.0)
+    held = lumen_load(model, start, sw.get("lumen_control", "pressure"))
+    base = swelling_load(held, 0.0, 0.0)
     intact = path_solver.follow_path(start.x, base, [base], **opts)[-1]
     steps = sw["conversion_steps"]
     log.info(
@@ -831,9 +889,12 @@ def state_model(
     return POOL_MODELS.lookup(pool_model).converted_model(model, x, hollow)
 
 
-def pool_table(model: Model, states: list[PoolState], pool, probe_length: float, gag: Gag | dict) -> pd.DataFrame:
+def pool_table(
+    model: Model, states: list[PoolState], pool, probe_length: float, gag: Gag | dict, tip_probe: str = "region"
+) -> pd.DataFrame:
     """One row per state of :func:`swell_pool`: the Donnan swelling pressure (eq. 2.26), the carried lumen pressure
-    and the stresses around the pool (:func:`pool_measurements`), with the residual of the state."""
+    and the stresses around the pool (:func:`pool_measurements`, its tips by ``tip_probe``), with the residual of the
+    state."""
     gag = Gag.of(gag)
     members = model.props.converting  # the seeded pool (history.HistoryMaterial)
     rows, hollow = [], None
@@ -849,7 +910,7 @@ def pool_table(model: Model, states: list[PoolState], pool, probe_length: float,
             ),
             pressure_mmHg=measure.carried_pressure(model, ev) / MMHG_TO_KPA,
         )
-        row.update(pool_measurements(at, ev, pool, members, probe_length))
+        row.update(pool_measurements(at, ev, pool, members, probe_length, tip_probe))
         # how the state was reached and how its path ended (what its state file keeps)
         row.update({k: v for k, v in st.info().items() if k not in row and k != "stage"})
         row.update(limit_concentration_mEq_l=st.limit_concentration)  # NaN, not None, without a limit point
@@ -858,12 +919,12 @@ def pool_table(model: Model, states: list[PoolState], pool, probe_length: float,
 
 
 def run_table(
-    model: Model, saved, pool, probe_length: float, gag: dict, wall: str, case: str, run: str
+    model: Model, saved, pool, probe_length: float, gag: dict, wall: str, case: str, run: str, tip_probe="region"
 ) -> pd.DataFrame:
     """The rows of one swelling run of figure 4 (rule ``pool_stresses``) from its saved states ``saved``:
-    :func:`pool_table`, first its charge law, pool model, wall model ``wall`` and pool ``case``; its tip radial and
-    top hoop stresses intact, converted and at the end logged."""
-    table = pool_table(model, [PoolState.from_saved(s) for s in saved], pool, probe_length, gag)
+    :func:`pool_table` (its tips by ``tip_probe``), first its charge law, pool model, wall model ``wall`` and pool
+    ``case``; its tip radial and top hoop stresses intact, converted and at the end logged."""
+    table = pool_table(model, [PoolState.from_saved(s) for s in saved], pool, probe_length, gag, tip_probe)
     table.insert(0, "charge_law", gag["charge_law"])
     table.insert(1, "pool_model", table.pop("pool_model"))
     table.insert(2, "model", wall)

@@ -17,8 +17,10 @@ class Swelling(Options):
     """The ``swelling`` section: the walls (``models``: passive, active), the pool models of figure 4 and of the
     variants, the saved states it starts from (``pressures_mmHg``), the conversion in ``conversion_steps``, the ramp of
     the fixed-charge concentration (``concentration_points`` from 0 to ``max_concentration_mEq_l``, eqs. 2.25-2.27),
-    the size of the tip and top regions (``probe_length_um``) and the pools (``cases``, :class:`artery.Pool` entries by
-    name)."""
+    the size of the tip and top regions (``probe_length_um``) and how the tip is probed (``tip_probe``,
+    :data:`sphgag.studies.protocols.TIP_PROBES`), how the lumen is held while the pools swell (``lumen_control``,
+    :data:`sphgag.studies.protocols.LUMEN_CONTROLS`), the factor on the hourglass modulus of eq. (2.14) meanwhile
+    (``hourglass_factor``) and the pools (``cases``, :class:`artery.Pool` entries by name)."""
 
     SECTION = "swelling"
 
@@ -30,6 +32,9 @@ class Swelling(Options):
     max_concentration_mEq_l: float
     concentration_points: int
     probe_length_um: float
+    tip_probe: str
+    lumen_control: str
+    hourglass_factor: float
     cases: Mapping
 
     @classmethod

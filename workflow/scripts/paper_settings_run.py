@@ -1,0 +1,17 @@
+"""Rule paper_settings_run: figure 4's protocol under one configuration of the paper_settings study, measured."""
+
+from sphgag import jobs
+from sphgag.studies import paper_settings
+
+with jobs.run(snakemake) as job:  # noqa: F821
+    table = paper_settings.run(job.params.run, job.w.model == "active", job.name)
+    table = table.assign(base=job.w.base, setting=job.w.setting)
+    table.to_csv(job.output.table, index=False)
+    for case, g in table.groupby("case", sort=False):
+        last = g.iloc[-1]
+        job.log.info(
+            "[%s] case %s, %d particles: at %g mEq/l tip %.1f kPa, top %.1f kPa, J %.3g (end: %s)",
+            job.name, case, int(last.particles), last.concentration_mEq_l, last.tip_radial_stress_kPa,
+            last.top_circ_stress_kPa, last.pool_volume_change + 1.0, last.path_end,
+        )  # fmt: skip
+    job.record(dict(job.params), dict(max_residual=float(table.residual.max())))
