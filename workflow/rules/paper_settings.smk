@@ -5,7 +5,7 @@ from sphgag.studies import paper_settings as PAPER_SETTINGS
 
 PS = config["paper_settings"]
 # the authors' configuration, validated like this one before any job (a ConfigError names what is wrong)
-PS_SCRIPT = canonical(PAPER_SETTINGS.load_script(PS, Path(workflow.basedir, "config", "schema.yaml")))
+PS_SCRIPT = canonical(validate(load_yaml(PS["script_config"]), Path(workflow.basedir, "config", "schema.yaml")))
 PS_RUNS = PAPER_SETTINGS.runs(PS)
 
 

@@ -31,6 +31,7 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
+import yaml
 
 from ..options import Options
 from ..physics.donnan import PAPER_LAW
@@ -86,18 +87,16 @@ class PaperSettings(Options):
     def problems(cls, config) -> list[str]:
         """The authors' configuration is a file; every setting's keys are keys of it and of ``config``; the cases are
         pools of both; the concentrations are steps of the ramp. (The file's own validation is
-        :func:`load_script`'s, at the rules' parse time.)"""
+        :func:`sphgag.config.validate`'s, at the rules' parse time: workflow/rules/paper_settings.smk.)"""
         ps = config.get("paper_settings")
         if not ps:
             return []
         path = Path(ps["script_config"])
         if not path.is_file():
             return [f"paper_settings.script_config = {str(path)!r} is not a file (relative to the working directory)"]
-        from ..config import ConfigError, load_yaml  # the configuration's reader (sphgag.config imports this module)
-
-        try:
-            script = load_yaml(path)
-        except (ConfigError, OSError, ValueError) as exc:
+        try:  # read, not validated: sphgag.config imports this module, and a job's code is what it imports
+            script = yaml.safe_load(path.read_text()) or {}
+        except (OSError, ValueError) as exc:
             return [f"paper_settings.script_config = {str(path)!r} cannot be read: {exc}"]
         problems = []
         for name, keys in ps["settings"].items():
@@ -122,14 +121,6 @@ class PaperSettings(Options):
                     f"(paper_settings.concentration_step_mEq_l = {step:g})"
                 )
         return problems
-
-
-def load_script(section: Mapping, schema_path) -> dict:
-    """The authors' configuration named by the ``paper_settings`` section ``section``, validated against the schema
-    at ``schema_path`` (:func:`sphgag.config.validate`: a :class:`sphgag.config.ConfigError` names what is wrong)."""
-    from ..config import load_yaml, validate
-
-    return validate(load_yaml(section["script_config"]), schema_path)
 
 
 def get(config: Mapping, key: str):
