@@ -1,4 +1,4 @@
-"""Transmural radial and hoop stress against the exact thick wall (issue 48), raw and recovered.
+"""Transmural radial and hoop stress against the exact thick wall, raw and recovered.
 
 The mean wall (figure 2a's protocol, :func:`sphgag.studies.protocols.mean_pressure_diameter` with a coarser sweep)
 and the bi-layered wall, passive and active (:func:`sphgag.studies.protocols.activated`, then the pressures), at 103,

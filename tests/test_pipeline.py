@@ -371,7 +371,7 @@ def test_outputs_follow_the_data_contracts(workdir, ci_config):
     # target paper_procedure: P1-P4 by every explicit path (the paper's law), beside the equilibrium's verdict
     procedure = claims[claims.claim_id.str.startswith("P")]
     factors = ci_config["paper_procedure"]["step_factors"]
-    assert set(procedure.claim_id) == {"P1", "P2", "P3", "P4"} and set(procedure.charge_law) == {"prescribed"}
+    assert set(procedure.claim_id) == {"P1", "P2", "P3", "P4", "P5"} and set(procedure.charge_law) == {"prescribed"}
     assert set(procedure[procedure.claim_id == "P1"].path) == {"equilibrium", *(f"explicit x{f}" for f in factors)}
     assert set(procedure[~equilibrium].holds) <= {"yes", "no", "n/a"}
     # target variants: the claims of figure 4 under every other pool model, under each law it carries
@@ -971,8 +971,8 @@ HEAVY = {
 }
 PAPER = {"fig1", "fig3a_mean", "fig3b", "fig3", "fig4", "fig5", "fig6", "fig7", "verification_pool_figure", "claims"}
 TARGET_RULES = (
-    "all", "resolution", "verification", "fracture_energy", "sensitivity", "variants", "paper_procedure", "views",
-    "docs", "everything",
+    "all", "resolution", "verification", "fracture_energy", "sensitivity", "variants", "paper_procedure",
+    "paper_settings", "views", "docs", "everything",
 )  # fmt: skip
 
 
@@ -1032,7 +1032,8 @@ def test_everything_plans_every_job_the_configuration_defines(fresh_copy):
             | {"swelling_convergence_stresses", "swelling_convergence", "swelling_convergence_figure", "swelling_gci"}
             | {"sensitivity_batch", "sensitivity_method", "sobol_design", "sensitivity_tables", "sensitivity_figure"}
             | {"delamination_map_figure", "variant", "variants_figure", "variants_tip_stress", "variants_fig4"}
-            | {"procedure_equilibrium", "procedure_summary", "procedure_figure"},  # not the explicit runs
+            | {"procedure_equilibrium", "procedure_summary", "procedure_figure"}  # not the explicit runs
+            | {"paper_settings_run", "paper_settings_table", "paper_settings_figure"},
         ),
         (  # a sensitivity key: the bootstrap of the Sobol intervals; read by the Sobol indices alone
             lambda cfg: cfg["sensitivity"]["sobol"].update(resamples=50),

@@ -1,4 +1,4 @@
-# Figure 4's magnitudes against the authors' settings (target paper_settings, issue 47): figure 4's protocol under the
+# Figure 4's magnitudes against the authors' settings (target paper_settings): figure 4's protocol under the
 # authors' configuration (paper_settings.script_config) and ours, and each with one setting switched to the other's
 # value, at equilibrium; the ablation table, the figure of each setting's step, and claim P5's evidence.
 from sphgag.studies import paper_settings as PAPER_SETTINGS

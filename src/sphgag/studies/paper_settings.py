@@ -1,4 +1,4 @@
-"""Figure 4's magnitudes against the authors' settings (target ``paper_settings``; issue 47).
+"""Figure 4's magnitudes against the authors' settings (target ``paper_settings``).
 
 Our figure 4 tip radial stresses differ from the paper's by a factor of 4 to 20 (claim P1). The authors' script
 (``../shared/notes/reference-implementation.md``) differs from our model in several settings besides its procedure:
