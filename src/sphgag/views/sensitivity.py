@@ -21,6 +21,9 @@ SENSITIVITY_OUTPUTS = {  # results/sensitivity/indices.csv output -> axis label
 }
 
 
+INPUT_LABEL = "input label"  # the gid of an input's label on a Morris panel (declutter)
+
+
 def input_label(path: str) -> str:
     """A sensitivity input's dotted path without its unit: ``gag.shear_modulus_kPa`` -> ``gag.shear_modulus``."""
     section, _, leaf = path.rpartition(".")
@@ -70,6 +73,7 @@ def morris_panel(ax, rows: pd.DataFrame, labelled: int = 4):
             fontsize=6,
             xytext=(3, 2),
             textcoords="offset points",
+            gid=INPUT_LABEL,
         )
     lim = max(float(star.conf_high.max()), float(wide.sigma.max()), 1e-12) * 1.1
     ax.plot([0, lim], [0, lim], ls=":", lw=0.7, color="0.5")  # sigma = mu*: strongly non-linear or interacting
@@ -135,7 +139,23 @@ def sensitivity(indices: pd.DataFrame, laws):
                     fontsize=8,
                     fontweight="bold",
                 )
+    declutter(fig)
     return fig
+
+
+def declutter(fig):
+    """Leave out an input's label where it would cover the label of a more influential input (drawn before it), as
+    the figure is laid out."""
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    for ax in fig.axes:
+        kept = []
+        for text in [t for t in ax.texts if t.get_gid() == INPUT_LABEL]:
+            box = text.get_window_extent(renderer)
+            if any(box.overlaps(other) for other in kept):
+                text.remove()
+            else:
+                kept.append(box)
 
 
 MAP_COLOURS = {
