@@ -194,6 +194,7 @@ def test_claim_p5_judges_the_authors_configuration_and_names_the_largest_steps()
     claim = claims.p5_authors_settings(claims.Evidence(paper_settings=_ablation(tips)))
     assert claim.claim_id == "P5" and claim.holds == "yes" and claim.margin == pytest.approx(10.0)
     assert claim.our_value.index("lumen_control") < claim.our_value.index("temperature")
+    assert "|" not in claim.our_value  # the report reads the table as reStructuredText: |x| is a substitution
     tips[("none", "script", "IV")] = 200.0
     assert claims.p5_authors_settings(claims.Evidence(paper_settings=_ablation(tips))).holds == "no"
     tips[("none", "script", "IV")] = np.nan  # no equilibrium: never a pass
