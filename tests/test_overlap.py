@@ -62,3 +62,19 @@ def test_no_figure_of_the_ci_run_has_text_over_text(workdir, text_checks):
     assert drawn <= checked, sorted(drawn - checked)
     bad = [f"{c['figure']}: {a} / {b}" for c in checks for a, b in c["overlaps"]]
     assert not bad, "\n".join(bad)
+
+
+def test_sigma_cr_labels_of_nearby_lines_share_one_label():
+    """sigma_cr = 30, 40 and 60 kPa on a panel that spans thousands of kPa (a pool whose tip far exceeds them) are
+    one label, not three stacked on each other; apart, each keeps its own."""
+    from sphgag.views.delamination import sigma_labels
+
+    fig, (wide, narrow) = plt.subplots(1, 2, figsize=(6, 3), layout="constrained")
+    colours = {30.0: "C0", 40.0: "C1", 60.0: "C2"}
+    for ax, top in ((wide, 5000.0), (narrow, 80.0)):
+        ax.set_ylim(0.0, top)
+        sigma_labels(ax, colours)
+    assert [t.get_text() for t in wide.texts] == [" 30/40/60"]
+    assert [t.get_text() for t in narrow.texts] == [" 30", " 40", " 60"]
+    assert overlap.overlaps(fig) == []
+    plt.close(fig)

@@ -841,7 +841,7 @@ def p5_authors_settings(e: Evidence) -> Claim:
         theirs += "; ours: " + ", ".join(f"{r.model} {r.case} {r.tip_radial_stress_kPa:.0f}" for r in ours.itertuples())
     top = paper_settings.ranked(t, P5_CONCENTRATION).dropna(subset=["share"]).head(3)
     if len(top):
-        theirs += "; the settings that account for most of the difference (median share of ours - authors', size of the step): "
+        theirs += "; the settings that account for most of the difference (median share of ours - authors', step): "
         theirs += ", ".join(f"{r.setting} {r.share:+.2f} ({r.abs_step_kPa:.0f} kPa)" for r in top.itertuples())
     return replace(bare, our_value=theirs, holds=_yes(missing == 0 and margin >= 0.0), margin=margin)
 

@@ -176,22 +176,30 @@ def tip_stress_panel(
         ax.legend(list(old.legend_handles) + [paper], [t.get_text() for t in old.texts] + [PAPER_SIGMA_LABEL])
     for sigma, colour in sigma_colours.items():
         ax.axhline(sigma, color=colour, ls=(0, (4, 3)), lw=0.8)
-        ax.text(
-            1.0,
-            sigma,
-            f" {sigma:g}",
-            transform=ax.get_yaxis_transform(),
-            color=colour,
-            fontsize=7,
-            va="center",
-            ha="left",
-        )
     ax.axhline(0.0, color="0.7", lw=0.6)
     lo, hi = ax.get_ylim()
     lines = sum(1 + str(text).count("\n") for text in labels.values())
     ax.set_ylim(lo, hi + 0.12 * lines * (hi - lo))  # room for the legend above the curves
+    sigma_labels(ax, sigma_colours)
     ax.set(xlabel=PSEUDO_TIME, ylabel="tip radial stress (kPa)", title=title)
     style_legend(ax, "upper left", title=None)
+
+
+def sigma_labels(ax, sigma_colours: dict, gap: float = 0.04):
+    """Each sigma_cr's value beside its line at the panel's right edge, in its colour; values whose lines lie within
+    ``gap`` of the panel's height of each other share one label (in black), so no two labels overlap."""
+    lo, hi = ax.get_ylim()
+    groups: list[list] = []
+    for sigma in sorted(sigma_colours):
+        if groups and sigma - groups[-1][-1] < gap * (hi - lo):
+            groups[-1].append(sigma)
+        else:
+            groups.append([sigma])
+    for group in groups:
+        colour = sigma_colours[group[0]] if len(group) == 1 else "black"
+        text = " " + "/".join(f"{s:g}" for s in group)
+        y = 0.5 * (group[0] + group[-1])
+        ax.text(1.0, y, text, transform=ax.get_yaxis_transform(), color=colour, fontsize=7, va="center", ha="left")
 
 
 def of_law(table: pd.DataFrame, law: str) -> pd.DataFrame:

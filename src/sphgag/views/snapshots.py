@@ -17,7 +17,7 @@ INTACT_GREYS = (0.84, 0.62)  # intact tissue: the innermost layer light, the out
 DAMAGE_CMAP = matplotlib.colors.LinearSegmentedColormap.from_list("damage", ["#ffd300", "#f47b20", "#7f2704"])
 MARGIN = 0.25  # a panel's margin around its pools: this fraction of their smaller extent (at least 1.5 spacings)
 ASPECT = (0.25, 1.5)  # a panel's height over its width: no thinner strip, no taller column (the pools keep >= 10 %)
-BALLOONED = "the pool ballooned out of the wall: panel framed on the pool"
+BALLOONED = "ballooned out of the wall: framed on the pool"
 
 
 def intact_colours(layers) -> dict:
