@@ -93,3 +93,31 @@ def test_at_the_scripts_step_counts_the_swollen_pool_is_out_of_balance(ci_config
     assert last.step == 3000 + 21000 + 45000
     assert last.residual > cfg["numerics"]["tolerance"]
     assert last.kinetic_energy > 0.0
+
+
+def test_the_procedure_holds_the_lumen_and_scales_the_hourglass_as_the_swelling_section_says(ci_config, full_config):
+    """The explicit procedure under the authors' lumen control and hourglass factor (swelling.lumen_control = radius,
+    hourglass_factor = 0.1; paper_procedure.controlled): every recorded state keeps every inner particle at the start's
+    mean inner radius, with no lumen pressure prescribed, and the model's hourglass penalty is a tenth of the wall's."""
+    from sphgag.engine import measure
+
+    pp, cfg = full_config["paper_procedure"], ci_config
+    wall = dict(bilayer=cfg["bilayer"], numerics=cfg["numerics"], homeostasis=cfg["homeostasis"], active=False)
+    calibration = {k: cfg["bilayer_calibration"][k] for k in ("activation_pressure_mmHg", "activation_steps")}
+    dx = cfg["bilayer"]["dx_um"]
+    start = convergence.pressurised_wall(dx, **wall, calibration=calibration, pressure_mmHg=103.0, name="held")
+    gag = dict(law_gag(cfg["gag"], "prescribed"), temperature_K=pp["temperature_K"])
+    wall_model = convergence.case_model(dx, cfg["bilayer"], cfg["numerics"], gag, cfg["swelling"]["cases"]["I"], "I")
+    model, base = paper_procedure.controlled(wall_model, start.x, start.load, "radius", 0.1)
+    assert model.hourglass_alpha == pytest.approx(0.1 * wall_model.hourglass_alpha)
+    r0 = measure.surface_radius(model, start.x, "inner")
+    assert base.pressure_kPa is None and base.inner_radius == pytest.approx(r0)
+    stage = dict(steps=20, density=50000.0, viscosity=0.0)
+    stages = dict(relax=stage, convert=stage, swell=dict(stage, steps=40), record_every_mEq_l=50.0,
+                  max_concentration_mEq_l=100.0, stop_concentration_mEq_l=100.0)  # fmt: skip
+    timing = {k: pp[k] for k in ("time_step", "load_update_steps")}
+    records = paper_procedure.swell(model, start.x, base, timing, stages, 1, "held")
+    assert [r.concentration for r in records][-2:] == [50.0, 100.0]
+    for r in records:
+        assert r.load.pressure_kPa is None
+        assert np.allclose(np.linalg.norm(r.x[model.layout.inner_surface], axis=1), r0, rtol=1e-12)

@@ -18,6 +18,8 @@ PP_SIMULATION = dict(
     cases={c: SW["cases"][c] for c in PP["cases"]},
 )
 PP_TIMING = {k: PP[k] for k in ("time_step", "load_update_steps")}
+# the summary's concentration: the top of figure 4's ramp, or where the explicit runs stop below it
+PP_TOP = min(SW["max_concentration_mEq_l"], PP["swelling"]["stop_concentration_mEq_l"])
 # the damage runs: each pool set of paper_procedure.pool_sets at each of its sigma_cr and every step factor
 PP_DAMAGE_RUNS = [
     dict(poolset=name, sigma=f"{sigma:g}", factor=factor)
@@ -67,6 +69,7 @@ rule procedure_equilibrium:
         **PP_SIMULATION,
         settings=dict(SWELL_SETTINGS, pool_model="particles"),
         probe_length=SW["probe_length_um"],
+        tip_probe=SW["tip_probe"],
     script:
         "../scripts/procedure_equilibrium.py"
 
@@ -92,7 +95,11 @@ rule procedure_explicit:
     params:
         **PP_SIMULATION,
         procedure=dict(timing=PP_TIMING, swelling=PP["swelling"]),
+        # the swelling stage's lumen and hourglass modulus as the equilibria's (swelling section), its tips likewise
+        lumen_control=SW["lumen_control"],
+        hourglass_factor=SW["hourglass_factor"],
         probe_length=SW["probe_length_um"],
+        tip_probe=SW["tip_probe"],
     script:
         "../scripts/procedure_explicit.py"
 
@@ -148,7 +155,7 @@ rule procedure_summary:
     benchmark:
         "results/benchmarks/procedure_summary.tsv"
     params:
-        concentration=SW["max_concentration_mEq_l"],
+        concentration=PP_TOP,
     script:
         "../scripts/procedure_summary.py"
 
@@ -176,6 +183,6 @@ rule procedure_figure:
         "results/benchmarks/procedure_figure.tsv"
     params:
         tolerance=config["numerics"]["tolerance"],
-        concentration=SW["max_concentration_mEq_l"],
+        concentration=PP_TOP,
     script:
         "../scripts/procedure_figure.py"

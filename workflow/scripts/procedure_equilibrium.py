@@ -15,7 +15,7 @@ with jobs.run(snakemake) as job:  # noqa: F821
         for case, entry in p.cases.items()
     }  # fmt: skip
     table = convergence.measure(wall["dx"], wall["bilayer"], wall["numerics"], p.gag, p.cases, states, p.probe_length,
-                                job.w.model, run)  # fmt: skip
+                                job.w.model, run, tip_probe=p.tip_probe)  # fmt: skip
     table.to_csv(job.output.table, index=False)
     job.log.info("[%s] %d particles; equilibrium paths of %s", run, int(table.particles.iloc[0]), ", ".join(p.cases))
     job.record(dict(p), dict(max_residual=float(table.residual.max())))

@@ -11,12 +11,13 @@ with jobs.run(snakemake) as job:  # noqa: F821
     entry = p.cases[w.case]
     model = convergence.case_model(wall["dx"], wall["bilayer"], wall["numerics"], p.gag, entry, run)
     start = state.load(job.input.start, wall)
+    model, base = paper_procedure.controlled(model, start.x, start.load, p.lumen_control, p.hourglass_factor)
     t0 = time.perf_counter()
     timing = p.procedure["timing"]
-    records = paper_procedure.swell(model, start.x, start.load, timing, p.procedure["swelling"], w.factor, run)
+    records = paper_procedure.swell(model, start.x, base, timing, p.procedure["swelling"], w.factor, run)
     seconds, steps, step_time = time.perf_counter() - t0, records[-1].step, timing["time_step"]
     state.save_series(job.output.states, [(r.x, r.load, r.info(step_time), None) for r in records], dict(p))
-    table = paper_procedure.table(model, records, artery.pool_sector(entry), p.probe_length, step_time)
+    table = paper_procedure.table(model, records, artery.pool_sector(entry), p.probe_length, step_time, p.tip_probe)
     table.assign(model=w.model, case=w.case, step_factor=w.factor, particles=model.n).to_csv(
         job.output.table, index=False
     )

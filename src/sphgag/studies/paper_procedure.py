@@ -3,9 +3,9 @@
 The paper's states come from leapfrog pseudo-dynamics (eqs. 2.12-2.13) with stage-dependent mass scaling and
 fixed step counts; nothing checks that a state is in equilibrium (the reference implementation,
 ``../shared/notes/reference-implementation.md``). This module runs that procedure over our forces
-(:func:`sphgag.engine.dynamics.advance`: the same particles, materials, hourglass form and lumen pressure as the
-quasi-static path), so that a difference between our figures and the paper's can be traced to the physics or to the
-procedure.
+(:func:`sphgag.engine.dynamics.advance`: the same particles, materials, hourglass form, lumen control and hourglass
+factor as the quasi-static path, :func:`controlled`), so that a difference between our figures and the paper's can
+be traced to the physics or to the procedure.
 
 Figure 4's procedure (:func:`swell`), from the pressurised wall at equilibrium, in the script's three stages:
 
@@ -228,14 +228,24 @@ def swell(
     return out + ramp(model, motion, converted, swollen, steps, stepping, every, record_at, "swell", run, until)
 
 
-def table(model: Model, records: list[Record], pool, probe_length: float, time_step: float) -> pd.DataFrame:
+def controlled(model: Model, x0: np.ndarray, base: Load, lumen_control: str, hourglass_factor: float):
+    """``(model, load)`` of the swelling stage as the equilibria have them (:func:`.protocols.swell_pool`): the
+    lumen of the pressurised state ``x0`` at ``base`` held by ``lumen_control`` (its pressure, or its inner radius:
+    the authors' script) and the hourglass modulus E of eq. (2.14) times ``hourglass_factor`` (the script: 0.1)"""
+    model = protocols.with_hourglass_factor(model, hourglass_factor)
+    return model, protocols.lumen_load(model, solver.State(base, x0, None, None), lumen_control)
+
+
+def table(
+    model: Model, records: list[Record], pool, probe_length: float, time_step: float, tip_probe: str = "region"
+) -> pd.DataFrame:
     """One row per record of :func:`swell`: where it is on the schedule, its residual and kinetic energy, and the
-    stresses around the pool (:func:`sphgag.studies.protocols.pool_measurements`)."""
+    stresses around the pool (:func:`sphgag.studies.protocols.pool_measurements`, its tips by ``tip_probe``)."""
     rows = []
     for r in records:
         ev = model.evaluate(r.x, r.load)
-        rows.append(dict(r.info(time_step), **protocols.pool_measurements(model, ev, pool, model.props.converting,
-                                                                          probe_length)))  # fmt: skip
+        at = protocols.pool_measurements(model, ev, pool, model.props.converting, probe_length, tip_probe)
+        rows.append(dict(r.info(time_step), **at))
     return pd.DataFrame(rows)
 
 
