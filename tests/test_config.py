@@ -327,3 +327,19 @@ def test_the_configuration_module_imports_at_its_top_only():
         if isinstance(node, ast.Import | ast.ImportFrom)
     ]
     assert not deferred, deferred
+
+
+def test_a_laws_ramp_top_names_a_charge_law_and_is_that_laws_alone(full_config):
+    """delamination.max_concentration_by_law_mEq_l: a key that names no charge law, or a top out of range, is refused
+    naming the key; the runs of a law it names ramp to its top, every other law's to max_concentration_mEq_l."""
+    from sphgag.studies.delamination import Settings
+
+    msg = bad(full_config, ["delamination", "max_concentration_by_law_mEq_l"], {"neutral": 300.0})
+    assert "delamination.max_concentration_by_law_mEq_l.neutral names no charge law (prescribed, conserved)" in msg
+    assert "max_concentration_by_law_mEq_l" in bad(full_config, ["delamination", "max_concentration_by_law_mEq_l"],
+                                                   {"conserved": -1.0})  # fmt: skip
+    de = dict(full_config["delamination"], max_concentration_by_law_mEq_l={"conserved": 300.0})
+    assert Settings.of_law(de, "conserved")["max_concentration_mEq_l"] == 300.0
+    assert Settings.of_law(de, "prescribed")["max_concentration_mEq_l"] == de["max_concentration_mEq_l"]
+    settings = Settings.from_config(Settings.of_law(de, "conserved"), 40.0, "averaged")
+    assert settings.levels[-1] == 300.0 and settings.levels[0] == de["concentration_step_mEq_l"]

@@ -139,6 +139,13 @@ DE_RUNS = [
 # settings, not a wildcard: changing it reruns every delamination run. A study that runs at the section's own sigma_cr
 # (and lumen pressure) reads them after its other settings (DE_AT_CONFIG).
 DE_SETTINGS = DelaminationSettings.params(DE)
+
+
+def de_law_settings(wildcards):
+    """The settings of a run of figures 5-7 under the charge law {law}: its law's ramp top, where it has its own."""
+    return DelaminationSettings.params(DelaminationSettings.of_law(DE, wildcards.law))
+
+
 DE_AT_CONFIG = ("critical_stress_kPa", "pressure_mmHg")
 DE_DX = [f"{dx:g}" for dx in DE["convergence"]["dx_um"]]
 

@@ -26,7 +26,7 @@ rule delaminate:
     params:
         state_slice=dict(PRESSURISED_SLICE, model="passive"),
         pools=lambda wildcards: DE["pool_sets"][wildcards.poolset],
-        delamination=DE_SETTINGS,
+        delamination=de_law_settings,
         gag=lambda wildcards: GAG[wildcards.law],
     script:
         "../scripts/delaminate.py"
@@ -53,7 +53,7 @@ rule delaminate_fracture_energy:
     params:
         state_slice=dict(PRESSURISED_SLICE, model="passive"),
         pools=lambda wildcards: DE["pool_sets"][wildcards.poolset],
-        delamination=DE_SETTINGS,
+        delamination=de_law_settings,
         gag=lambda wildcards: GAG[wildcards.law],
     script:
         "../scripts/delaminate.py"

@@ -9,6 +9,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from ...options import Options, file_name_problems
+from ...physics.donnan import LAWS
 from ..artery import pool_placement_problems
 from ..protocols import BilayerCalibration
 
@@ -73,8 +74,8 @@ class Delamination(Options):
     @classmethod
     def problems(cls, config) -> list[str]:
         """The figures' and the resolution study's sets exist (:meth:`pool_set_roles`), the held pressure has a saved
-        state, the critical stresses and spacings give distinct file names, and every pool lies inside the pool
-        layers, off the symmetry edges."""
+        state, the critical stresses and spacings give distinct file names, a law's ramp top names a charge law
+        (:data:`sphgag.physics.donnan.LAWS`), and every pool lies inside the pool layers, off the symmetry edges."""
         de = config.get("delamination", {})
         if not de:
             return []
@@ -82,6 +83,11 @@ class Delamination(Options):
         if "pressure_mmHg" in de:
             problems += BilayerCalibration.unsaved(config, [("delamination.pressure_mmHg", de["pressure_mmHg"])])
         problems += file_name_problems("delamination", "critical_stresses_kPa", de.get("critical_stresses_kPa", []))
+        problems += [
+            f"delamination.max_concentration_by_law_mEq_l.{law} names no charge law ({', '.join(LAWS)})"
+            for law in de.get("max_concentration_by_law_mEq_l", {})
+            if law not in LAWS
+        ]
         de_dx = [f"{v:g}" for v in de.get("convergence", {}).get("dx_um", [])]
         if len(set(de_dx)) < len(de_dx):
             problems.append(f"delamination.convergence.dx_um: {de_dx} repeat a file name (dx{{dx}}): make them differ")

@@ -61,6 +61,13 @@ class Settings:
         (:mod:`sphgag.jobs`), not here, so that adding a sigma_cr reruns no other run."""
         return dict({k: de[k] for k in cls.config_keys()}, **extra, **{k: de[k] for k in own})
 
+    @staticmethod
+    def of_law(de: dict, law: str) -> dict:
+        """The ``delamination`` section ``de`` as the runs of charge law ``law`` of figures 5-7 read it: the ramp's top
+        is ``max_concentration_by_law_mEq_l[law]`` where that is given, else ``max_concentration_mEq_l``."""
+        top = de.get("max_concentration_by_law_mEq_l", {}).get(law, de["max_concentration_mEq_l"])
+        return dict(de, max_concentration_mEq_l=top)
+
     @classmethod
     def from_config(
         cls, de: dict, critical_stress_kPa: float, criterion: str, fracture_energy_J_m2: float | None = None
