@@ -43,3 +43,19 @@ def test_every_page_is_written_with_its_figures_beside_it(tmp_path):
     swelling = (out / "swelling.md").read_text()  # each law's figure 4, captioned with its law
     assert "![fig4: prescribed charge law" in swelling and "(figures/fig4.png)" in swelling
     assert "![fig4: conserved charge law" in swelling and "(figures/fig4_conserved.png)" in swelling
+
+
+def test_the_authors_settings_are_answered_in_a_paragraph_and_a_table():
+    """The swelling page's P5 section: each configuration's tip radial stress at 150 mEq/l, "no eq." where a path
+    has none, and the settings ranked by their share of the difference, in words and in a table."""
+    from .test_paper_settings import _ablation
+
+    tips = {("none", "script", "I"): 120.0, ("none", "ours", "I"): 400.0, ("lumen_control", "from_script", "I"): 300.0,
+            ("lumen_control", "from_ours", "I"): 150.0, ("temperature", "from_script", "I"): float("nan"),
+            ("temperature", "from_ours", "I"): 399.0}  # fmt: skip
+    text = pages.authors_settings(_ablation(tips))
+    assert "the authors' settings (`config/script.yaml`) give a tip radial stress of passive I 120 kPa" in text
+    assert "ours (`config/config.yaml`) passive I 400 kPa" in text
+    assert "`lumen_control` (0.77)" in text and text.index("`lumen_control`") < text.index("| configuration")
+    assert "| the authors', `temperature` ours | no eq. |" in text
+    assert "| ours, `lumen_control` the authors' | 150 |" in text

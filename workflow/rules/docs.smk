@@ -12,6 +12,7 @@ DOCS_STUDIES = dict(
     annulus=(lambda: [rules.verify_annulus.output.table], "verification"),
     variants=(lambda: expand(rules.variant.output.summary, form=HOURGLASS_FORMS), "variants"),
     morris=(lambda: [rules.sensitivity_tables.output.indices], "sensitivity"),
+    paper_settings=(lambda: [rules.paper_settings_table.output.table], "paper_settings"),
 )
 # the figures the pages show, by file name
 DOCS_FIGURES = [

@@ -15,7 +15,7 @@ import numpy as np
 import pandas as pd
 
 from ..physics.donnan import PAPER_LAW, charge_law
-from ..studies import annulus, gci
+from ..studies import annulus, gci, paper_settings
 from ..studies import claims as claims_
 from .names import LAW_FIGURES, law_figure
 
@@ -353,6 +353,46 @@ def procedure_table(claims: pd.DataFrame) -> str:
     return "\n".join(rows)
 
 
+def authors_settings(table: pd.DataFrame) -> str:
+    """Figure 4 under the authors' settings (target paper_settings, claim P5) in a paragraph a reader can quote and
+    a table: the tip radial stress at claim P5's concentration under each configuration and each one-setting switch
+    (``results/paper_settings/ablation.csv``; "no eq." where the path has no equilibrium there), and the settings
+    that account for most of the difference (:func:`sphgag.studies.paper_settings.ranked`)."""
+    c, (lo, hi) = claims_.P5_CONCENTRATION, claims_.P5_RANGE
+    at = table[np.isclose(table.concentration_mEq_l, c)]
+    walls = list(dict.fromkeys(zip(at.model, at.case)))
+    value = at.set_index(["setting", "direction", "model", "case"]).tip_radial_stress_kPa
+
+    def tips(setting, direction):
+        return [value.get((setting, direction, m, k), np.nan) for m, k in walls]
+
+    def listed(values):
+        return ", ".join(f"{m} {k} {_kpa(v)}" for (m, k), v in zip(walls, values))
+
+    ranked = paper_settings.ranked(table, c).dropna(subset=["share"]).head(3)
+    top = ", ".join(f"`{r.setting}` ({r.share:.2f})" for r in ranked.itertuples()) or "none could be ranked"
+    text = (
+        f"At {c:g} mEq/l and at equilibrium, the authors' settings (`config/script.yaml`) give a tip radial stress of "
+        f"{listed(tips(paper_settings.NONE, 'script'))} kPa, ours (`config/config.yaml`) "
+        f"{listed(tips(paper_settings.NONE, 'ours'))} kPa; the paper's figure 4 reads {lo:g}-{hi:g} kPa (claim P5). "
+        f"The settings that account for most of the difference, by the median share of ours - the authors' that "
+        f"their step makes (both directions, walls and pools): {top}."
+    )
+    rows = ["| configuration | " + " | ".join(f"{m} {k}" for m, k in walls) + " |", "|" + " --- |" * (len(walls) + 1)]
+    names = {"script": "the authors'", "ours": "ours"}
+    switched = {"from_script": "ours", "from_ours": "the authors'"}
+    for base, direction in paper_settings.DIRECTIONS.items():
+        rows.append(f"| {names[base]} | " + " | ".join(map(_kpa, tips(paper_settings.NONE, base))) + " |")
+        for setting in dict.fromkeys(at.setting[at.direction == direction]):
+            label = f"{names[base]}, `{setting}` {switched[direction]}"
+            rows.append(f"| {label} | " + " | ".join(map(_kpa, tips(setting, direction))) + " |")
+    return text + "\n\n" + "\n".join(rows)
+
+
+def _kpa(value: float) -> str:
+    return f"{value:.0f}" if np.isfinite(value) else "no eq."
+
+
 def _claims_page(table: pd.DataFrame) -> str:
     return claims_.markdown(table)
 
@@ -381,6 +421,7 @@ PAGES: dict[str, tuple[str, tuple[str, ...], tuple[Section, ...]]] = {
             Section("Figure 4's runs", "tips", figure4_runs_table),
             Section("Claims C6-C12 across the resolution band", "claims", figure4_claims_table),
             Section("The paper's explicit procedure beside the equilibria (P1-P4)", "claims", procedure_table),
+            Section("Figure 4 under the authors' settings (P5)", "paper_settings", authors_settings, "paper_settings"),
             Section(
                 "Resolution study: observed order, extrapolation and GCI",
                 "swelling_gci",
