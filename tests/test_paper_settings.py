@@ -32,7 +32,7 @@ def test_the_script_configuration_differs_from_ours_only_in_its_settings(script_
     script's, and which of paper_procedure's runs the authors' configuration makes)."""
     settings = {k for keys in full_config["paper_settings"]["settings"].values() for k in keys}
     unswitched = {"swelling.max_concentration_mEq_l", "swelling.concentration_points", "gag.charge_laws"}
-    unswitched |= {"paper_procedure.cases", "paper_procedure.step_factors", "paper_procedure.pool_sets.single"}
+    unswitched |= {"paper_procedure.cases", "paper_procedure.step_factors"}
 
     def leaves(node, path=()):
         if isinstance(node, dict):
