@@ -107,6 +107,7 @@ CONTRACT = {
         "volume_ratio",
         "volume_error",
         "lining_hoop_error",
+        "lining_hoop_traction_error",
         "ring_crossing_um",
         "beyond_end",
         "residual",

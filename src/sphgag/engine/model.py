@@ -339,6 +339,15 @@ class Model:
         add_pressure_stiffness(data, self.pressure_blocks, load.pressure_kPa or 0.0, load.axial_stretch)
         return data
 
+    def lining_pressures(self, ev: Evaluation) -> list[float]:
+        """The pressure [kPa] on each cavity's lining at ``ev``: the normal Cauchy traction the prescribed Pi and the
+        contents exert, :func:`sphgag.engine.pool_cavity.pool_pressure` (per reference length) over the axial
+        stretch (a hole's: Pi)."""
+        self.material(ev.load)
+        lz = ev.load.axial_stretch
+        pairs = zip(self.cavities, self._cache["cavity_pressures"])
+        return [pool_cavity.pool_pressure(c.volume_ratio(ev.x), pc, lz, *contents) / lz for c, (pc, contents) in pairs]
+
     def rank_one_terms(self, ev: Evaluation) -> list[tuple[float, np.ndarray]]:
         """The Jacobian's dense rank-one parts, ``(c, g)`` with ``d(f_int + f_ext)/dx += c g g^T`` (``g`` flat over
         the dofs): each cavity's contents (:meth:`sphgag.engine.pool_cavity.Cavity.rank_one`). The solver applies them

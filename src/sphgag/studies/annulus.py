@@ -72,7 +72,11 @@ POOL_MODELS: Registry[AnnulusPool] = Registry(
         AnnulusPool("particles", "the paper's GAG particles carrying the pressure", "particles", paper=True),
     ),
 )
-MEASURES = {"volume_ratio": "volume_ratio_exact", "lining_hoop_kPa": "lining_hoop_exact_kPa"}  # measure -> its exact
+MEASURES = {  # measure -> its exact
+    "volume_ratio": "volume_ratio_exact",
+    "lining_hoop_kPa": "lining_hoop_exact_kPa",
+    "lining_hoop_traction_kPa": "lining_hoop_exact_kPa",
+}
 
 
 @dataclass(frozen=True)

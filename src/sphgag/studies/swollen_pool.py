@@ -23,6 +23,8 @@ particle. **Measures** (each at a converged state with its residual):
   :data:`sphgag.studies.inclusion.TIP_PARTICLES` matrix rings fitted by ``c0 + c1 q + c2 q^2``, ``q = A/R``, at
   ``R = A`` (:func:`sphgag.studies.inclusion.tip_fit`, the Lamé form; a particle's own stress near the free
   surface carries the truncated stencil's error), against the exact ``sigma_tt(A+)``;
+* ``lining_hoop_traction_kPa``: the hoop stress at the hole recovered from its traction (a cavity's lining only,
+  :func:`traction_hoop`);
 * ``ring_crossing_um``: how far the pool's particles reach outside the lining (:func:`ring_crossing`; the paper's
   particles only);
 * ``pool_jacobian_spread``: the largest over the smallest volume ratio ``J_i`` of the pool's particles (the paper's
@@ -41,6 +43,7 @@ import pandas as pd
 from ..engine import geometry, grading, kernel, measure, pool_cavity, solver
 from ..engine.model import Model
 from ..engine.numerics import Numerics
+from ..engine.recovery import normal_stress_state
 from ..options import Options
 from ..physics import cavity
 from . import artery, inclusion, protocols
@@ -157,6 +160,8 @@ def measure_circle(model, state: solver.State, exact: cavity.CircularPool, h: fl
         lining_hoop_kPa=lining_hoop,
         lining_hoop_exact_kPa=exact.interface_hoop_kPa,
         lining_hoop_error=lining_hoop / exact.interface_hoop_kPa - 1.0,
+        lining_hoop_traction_kPa=traction_hoop(model, ev, exact.A),
+        lining_hoop_traction_error=traction_hoop(model, ev, exact.A) / exact.interface_hoop_kPa - 1.0,
         ring_crossing_um=np.nan if model.cavities else ring_crossing(state.x, np.flatnonzero(pool), lining),
         pool_jacobian_spread=np.nan if model.cavities else float(J[pool].max() / J[pool].min()),
         outer_radius_um=float(r[edge].mean()),
@@ -164,6 +169,28 @@ def measure_circle(model, state: solver.State, exact: cavity.CircularPool, h: fl
         residual=state.convergence.residual,
         particles=model.n,
     )
+
+
+def traction_hoop(model, ev, A: float) -> float:
+    """The hoop stress [kPa] at the hole's surface ``R = A`` recovered from its traction (as the wall's surfaces,
+    :class:`sphgag.engine.recovery.SurfaceTraction`): the normal stress is the pressure on the lining
+    (:meth:`sphgag.engine.model.Model.lining_pressures`), the hoop stretch that of the first two matrix rings (each
+    ring's mean current radius over its reference one) extrapolated linearly to ``R = A``, the axial stretch the
+    load's, and the radial stretch solves the normal-stress condition of the lining's material
+    (:func:`sphgag.engine.recovery.normal_stress_state`). Second order in the spacing (docs/physics.md). NaN for a
+    pool of particles: its lining's traction is the contents' own stress, not a known load."""
+    if not model.cavities:
+        return np.nan
+    lay = model.layout
+    rings = [lay.ring_members(k) for k in (lay.first_matrix_ring, lay.first_matrix_ring + 1)]
+    R = np.array([np.hypot(*lay.X[m].T).mean() for m in rings])
+    stretch = np.array([np.hypot(*ev.x[m].T).mean() for m in rings]) / R
+    lt = stretch[0] + (A - R[0]) * (stretch[1] - stretch[0]) / (R[1] - R[0])
+    srr, stt, J = np.empty(1), np.empty(1), np.empty(1)
+    props = model.material(ev.load)[0]
+    pressure = np.array([-model.lining_pressures(ev)[0]])
+    normal_stress_state(props, rings[0][:1], np.array([lt]), ev.load.axial_stretch, pressure, srr, stt, J)
+    return float(stt[0])
 
 
 def ring_crossing(x: np.ndarray, pool: np.ndarray, lining: np.ndarray) -> float:

@@ -134,20 +134,25 @@ def annulus_table(table: pd.DataFrame) -> str:
     head = (
         "| pool | B/A | Pi / limit | volume ratio error: "
         + " / ".join(f"dx {d:g}" for d in spacings)
-        + " (order) | hoop stress error: same spacings (order) | GAG beyond the lining, finest (um) |"
+        + " (order) | hoop stress error: same spacings (order) | hoop stress recovered from the traction: same "
+        + "(order) | GAG beyond the lining, finest (um) |"
     )
-    rows = [head, "|" + " --- |" * 6]
+    rows = [head, "|" + " --- |" * 7]
     below = table[(table.fraction < 1.0)]
     for (model, ratio, f), g in below.groupby(["pool_model", "outer_ratio", "fraction"], sort=True):
         g = g.set_index("dx_um").reindex(spacings)
         cells = []
-        for quantity, error in (("volume_ratio", "volume_error"), ("lining_hoop_kPa", "lining_hoop_error")):
+        for quantity, error in (
+            ("volume_ratio", "volume_error"),
+            ("lining_hoop_kPa", "lining_hoop_error"),
+            ("lining_hoop_traction_kPa", "lining_hoop_traction_error"),
+        ):
             key = (model, ratio, f, quantity)
             order = f"{orders.loc[key, 'order_fine']:.2f}" if key in orders.index else "-"
             cells.append(" / ".join(_pct(v) for v in g[error]) + f" ({order})")
         crossing = g.ring_crossing_um.iloc[-1]
         rows.append(
-            f"| {model} | {ratio:g} | {f:g} | {cells[0]} | {cells[1]} | "
+            f"| {model} | {ratio:g} | {f:g} | {cells[0]} | {cells[1]} | {cells[2]} | "
             + (f"{crossing:+.2f} |" if np.isfinite(crossing) else "- |")
         )
     above = table[table.fraction > 1.0]
@@ -161,7 +166,7 @@ def annulus_table(table: pd.DataFrame) -> str:
         rows.append(
             f"| {model} | {ratio:g} | {g.fraction.iloc[0]:g} (exact {g.limit_kind.iloc[0]} {limit:.2f} kPa) | "
             + "; ".join(ends)
-            + " | | |"
+            + " | | | |"
         )
     return "\n".join(rows)
 
