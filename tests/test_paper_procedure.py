@@ -87,7 +87,8 @@ def test_at_the_scripts_step_counts_the_swollen_pool_is_out_of_balance(ci_config
     gag = dict(law_gag(cfg["gag"], "prescribed"), temperature_K=pp["temperature_K"])
     model = convergence.case_model(dx, cfg["bilayer"], cfg["numerics"], gag, cfg["swelling"]["cases"]["I"], "I")
     timing = {k: pp[k] for k in ("time_step", "load_update_steps")}
-    records = paper_procedure.swell(model, start.x, start.load, timing, pp["swelling"], 1, "script")
+    records, end = paper_procedure.swell(model, start.x, start.load, timing, pp["swelling"], 1, "script")
+    assert end == "complete"
     last = records[-1]
     assert last.concentration == pytest.approx(150.0)
     assert last.step == 3000 + 21000 + 45000
@@ -116,8 +117,34 @@ def test_the_procedure_holds_the_lumen_and_scales_the_hourglass_as_the_swelling_
     stages = dict(relax=stage, convert=stage, swell=dict(stage, steps=40), record_every_mEq_l=50.0,
                   max_concentration_mEq_l=100.0, stop_concentration_mEq_l=100.0)  # fmt: skip
     timing = {k: pp[k] for k in ("time_step", "load_update_steps")}
-    records = paper_procedure.swell(model, start.x, base, timing, stages, 1, "held")
+    records, end = paper_procedure.swell(model, start.x, base, timing, stages, 1, "held")
+    assert end == "complete"
     assert [r.concentration for r in records][-2:] == [50.0, 100.0]
     for r in records:
         assert r.load.pressure_kPa is None
         assert np.allclose(np.linalg.norm(r.x[model.layout.inner_surface], axis=1), r0, rtol=1e-12)
+    # a step far above the leapfrog's stable one: a particle inverts; the run ends at a named stop with what it had
+    unstable = dict(timing, time_step=1e3 * timing["time_step"])
+    records, end = paper_procedure.swell(model, start.x, base, unstable, stages, 1, "unstable")
+    assert end.startswith("stopped: particle inversion") and "mEq/l" in end
+    assert all(np.isfinite(r.residual) for r in records)
+
+
+def test_a_run_that_stopped_below_the_concentration_gives_no_number_and_says_why():
+    """The procedure's summary at 150 mEq/l: a run that reached it gives its values with their residual; one that
+    stopped below it gives none, with its end (paper_procedure.summary)."""
+    import pandas as pd
+
+    values = {k: 1.0 for k in paper_procedure.FIG4}
+    equilibrium = pd.DataFrame([dict(values, model="passive", case="I", stage="converted", concentration_mEq_l=150.0)])
+    equilibrium["residual"] = 1e-6
+    stop = "stopped: particle inversion (c = 52 mEq/l)"
+    row = dict(values, model="passive", stage="swell", residual=0.3)
+    reached = dict(row, case="I", step_factor=1, concentration_mEq_l=150.0, end="complete")
+    swelling = pd.DataFrame([reached, dict(row, case="IV", step_factor=16, concentration_mEq_l=50.0, end=stop)])
+    damage = pd.DataFrame(columns=["pool_set", "sigma_cr_kPa", "step_factor"])
+    table = paper_procedure.summary(equilibrium, swelling, damage, 150.0)
+    explicit = table[table.path == "explicit"].set_index(["pool", "quantity"])
+    assert explicit.loc[("I", "tip_radial_stress_kPa"), "value"] == 1.0
+    stopped = explicit.loc[("IV", "tip_radial_stress_kPa")]
+    assert np.isnan(stopped.value) and stopped.end == stop

@@ -14,15 +14,15 @@ with jobs.run(snakemake) as job:  # noqa: F821
     model, base = paper_procedure.controlled(model, start.x, start.load, p.lumen_control, p.hourglass_factor)
     t0 = time.perf_counter()
     timing = p.procedure["timing"]
-    records = paper_procedure.swell(model, start.x, base, timing, p.procedure["swelling"], w.factor, run)
+    records, end = paper_procedure.swell(model, start.x, base, timing, p.procedure["swelling"], w.factor, run)
     seconds, steps, step_time = time.perf_counter() - t0, records[-1].step, timing["time_step"]
     state.save_series(job.output.states, [(r.x, r.load, r.info(step_time), None) for r in records], dict(p))
     table = paper_procedure.table(model, records, artery.pool_sector(entry), p.probe_length, step_time, p.tip_probe)
-    table.assign(model=w.model, case=w.case, step_factor=w.factor, particles=model.n).to_csv(
+    table.assign(model=w.model, case=w.case, step_factor=w.factor, particles=model.n, end=end).to_csv(
         job.output.table, index=False
     )
-    job.log.info("[%s] %d particles, %d steps in %.1f s (%.3g ms per step)", run, model.n, steps, seconds,
+    job.log.info("[%s] %s: %d particles, %d steps in %.1f s (%.3g ms per step)", run, end, model.n, steps, seconds,
                  1e3 * seconds / steps)  # fmt: skip
     summary = dict(steps=steps, seconds=seconds, ms_per_step=1e3 * seconds / steps, particles=model.n,
-                   last_residual=records[-1].residual)  # fmt: skip
+                   last_residual=records[-1].residual, end=end)  # fmt: skip
     job.record(dict(p), summary)

@@ -177,11 +177,13 @@ def ramp(
     name: str,
     run: str,
     until: int | None = None,
+    records: list[Record] | None = None,
 ) -> list[Record]:
     """Leapfrog steps while the load goes linearly from ``start`` to ``end`` in ``steps`` steps, changing every
     ``every`` steps (the load of each block of steps is the one at its end), up to step ``until`` (default: the
-    ramp's end); a record every ``record_at`` steps and at the last."""
-    out, done = [], 0
+    ramp's end); a record every ``record_at`` steps and at the last, appended to ``records`` (returned; a new list
+    by default) as they are made, so that a run that fails keeps the records before it."""
+    out, done = ([] if records is None else records), 0
     until = steps if until is None else until
     while done < until:
         block = min(every, until - done, record_at - done % record_at)
@@ -205,11 +207,13 @@ def swell(
     stages: SwellingStages | dict,
     factor: int,
     run: str,
-) -> list[Record]:
+) -> tuple[list[Record], str]:
     """Figure 4's explicit procedure (module docstring) for the pool seeded in ``model`` from the pressurised wall
-    ``x0`` at ``base`` (lumen pressure held), every stage's steps times ``factor``: the records at the end of the
-    relaxation and of the conversion, then one at every ``record_every_mEq_l`` of the concentration ramp up to
-    ``stop_concentration_mEq_l`` (the ramp's rate is that of the whole stage, 0 to ``max_concentration_mEq_l``)."""
+    ``x0`` at ``base`` (its lumen held as ``base`` says), every stage's steps times ``factor``: the records at the end
+    of the relaxation and of the conversion, then one at every ``record_every_mEq_l`` of the concentration ramp up to
+    ``stop_concentration_mEq_l`` (the ramp's rate is that of the whole stage, 0 to ``max_concentration_mEq_l``); and
+    how the run ended: ``complete``, or ``stopped: <why>`` where the pseudo-dynamics failed (a particle inverted),
+    with the records before it."""
     p, s = Timing.of(timing), SwellingStages.of(stages)
     motion = dynamics.Motion.at_rest(x0)
     intact = protocols.swelling_load(base, 0.0, 0.0)
@@ -217,15 +221,21 @@ def swell(
     swollen = protocols.swelling_load(base, 1.0, s.max_concentration_mEq_l)
     every = p.load_update_steps * factor
     out = []
-    for name, stage, a, b in (("relax", s.relax, intact, intact), ("convert", s.convert, intact, converted)):
-        stepping = dynamics.Stepping(p.time_step, stage.density, stage.viscosity)
-        steps = stage.steps * factor
-        out += ramp(model, motion, a, b, steps, stepping, every, steps, name, run)[-1:]
-    steps = s.swell.steps * factor
-    per_mEq = steps / s.max_concentration_mEq_l
-    stepping = dynamics.Stepping(p.time_step, s.swell.density, s.swell.viscosity)
-    record_at, until = round(s.record_every_mEq_l * per_mEq), round(s.stop_concentration_mEq_l * per_mEq)
-    return out + ramp(model, motion, converted, swollen, steps, stepping, every, record_at, "swell", run, until)
+    try:
+        for name, stage, a, b in (("relax", s.relax, intact, intact), ("convert", s.convert, intact, converted)):
+            stepping = dynamics.Stepping(p.time_step, stage.density, stage.viscosity)
+            steps = stage.steps * factor
+            out += ramp(model, motion, a, b, steps, stepping, every, steps, name, run, records=[])[-1:]
+        steps = s.swell.steps * factor
+        per_mEq = steps / s.max_concentration_mEq_l
+        stepping = dynamics.Stepping(p.time_step, s.swell.density, s.swell.viscosity)
+        record_at, until = round(s.record_every_mEq_l * per_mEq), round(s.stop_concentration_mEq_l * per_mEq)
+        ramp(model, motion, converted, swollen, steps, stepping, every, record_at, "swell", run, until, records=out)
+    except solver.SimulationError as exc:
+        log.warning("[%s] stopped: %s", run, exc)
+        at = exc.load.material_value("concentration", 0.0) if exc.load is not None else np.nan
+        return out, f"stopped: {exc.reason} (c = {at:.4g} mEq/l)"
+    return out, "complete"
 
 
 def controlled(model: Model, x0: np.ndarray, base: Load, lumen_control: str, hourglass_factor: float):
@@ -279,9 +289,14 @@ def summary(equilibrium: pd.DataFrame, swelling: pd.DataFrame, damage: pd.DataFr
     eq = equilibrium[(equilibrium.stage == "converted") & np.isclose(equilibrium.concentration_mEq_l, concentration)]
     for _, r in eq.iterrows():
         add("4", r.model, r.case, np.nan, "equilibrium", np.nan, {k: r[k] for k in FIG4}, r.residual, "converged")
-    ramp = swelling[(swelling.stage == "swell") & np.isclose(swelling.concentration_mEq_l, concentration)]
-    for _, r in ramp.iterrows():
-        add("4", r.model, r.case, np.nan, "explicit", r.step_factor, {k: r[k] for k in FIG4}, r.residual, "fixed steps")
+    for (model, case, factor), run in swelling.groupby(["model", "case", "step_factor"], sort=False):
+        at = run[(run.stage == "swell") & np.isclose(run.concentration_mEq_l, concentration)]
+        if len(at):  # a state at the concentration, whatever its residual
+            r = at.iloc[0]
+            add("4", model, case, np.nan, "explicit", factor, {k: r[k] for k in FIG4}, r.residual, "fixed steps")
+        else:  # the run stopped below it (its end says why): no number
+            end = str(run.end.iloc[0]) if "end" in run else "no state"
+            add("4", model, case, np.nan, "explicit", factor, {k: np.nan for k in FIG4}, np.nan, end)
     for (pool_set, sigma, factor), g in damage.groupby(["pool_set", "sigma_cr_kPa", "step_factor"], sort=False):
         found = growth(g.reset_index(drop=True), sigma)
         residual = {k: found[v] for k, v in GROWTH.items()}
