@@ -62,6 +62,7 @@ class Delamination(Options):
     damage_tolerance: float
     concentration_step_mEq_l: float
     max_concentration_mEq_l: float
+    max_concentration_by_law_mEq_l: Mapping
     max_passes: int
     max_extent_deg: float
     conversion_steps: int
