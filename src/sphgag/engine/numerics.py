@@ -17,7 +17,9 @@ class Numerics(Options):
     converged state; ``max_newton_iterations`` and ``max_bisections``: Newton's method per load step and the halvings
     of a step; ``reuse_factorisation``: chord steps with the last factorisation before refactorising;
     ``stress_recovery``: how the measurements read the stress (:data:`sphgag.engine.recovery.RECOVERIES`: ``paper``,
-    the kernel stress of eq. 2.10; ``volumetric``; ``traction``), with the equilibrium unchanged."""
+    the kernel stress of eq. 2.10; ``volumetric``; ``traction``), with the equilibrium unchanged; ``lumen_load``: how
+    the lumen pressure becomes particle forces (:data:`sphgag.engine.loading.LUMEN_LOADS`: ``surface`` or
+    ``operator``)."""
 
     SECTION = "numerics"
 
@@ -29,12 +31,16 @@ class Numerics(Options):
     max_bisections: int
     reuse_factorisation: bool
     stress_recovery: str = "paper"
+    lumen_load: str = "surface"
 
     def model_options(self) -> dict:
         """The numerical keywords of a :class:`sphgag.engine.model.Model`: the hourglass control (``hourglass_alpha``,
-        ``hourglass``) and the ``stress_recovery``."""
+        ``hourglass``), the ``stress_recovery`` and the ``lumen_load``."""
         return dict(
-            hourglass_alpha=self.hourglass_alpha, hourglass=self.hourglass, stress_recovery=self.stress_recovery
+            hourglass_alpha=self.hourglass_alpha,
+            hourglass=self.hourglass,
+            stress_recovery=self.stress_recovery,
+            lumen_load=self.lumen_load,
         )
 
     def solver_options(self) -> PathOptions:
