@@ -21,7 +21,7 @@ from pathlib import Path
 import jsonschema
 import yaml
 
-from .engine import hourglass, loading, recovery
+from .engine import hourglass, lumen, recovery
 from .engine.grading import Grading
 from .engine.numerics import Numerics
 from .options import key_text
@@ -187,7 +187,7 @@ def _registries() -> dict:
     return {
         ("numerics", "hourglass"): hourglass.FORMS,
         ("numerics", "stress_recovery"): recovery.RECOVERIES,
-        ("numerics", "lumen_load"): loading.LUMEN_LOADS,
+        ("numerics", "lumen_load"): lumen.LUMEN_LOADS,
         ("gag", "charge_laws"): donnan.LAWS,
         ("gag", "volumetric"): volumetric.FORMS,
         ("swelling", "pool_models"): protocols.POOL_MODELS,

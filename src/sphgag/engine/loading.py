@@ -15,15 +15,8 @@ boundary condition of the discrete energy, so no force is applied there (the
 paper instead zeroes the normal component of P at outer particles, section
 2.4.1; we check the resulting radial stress instead).
 
-**How the pressure reaches the particles** is a registered numerical variant (:data:`LUMEN_LOADS`,
-``numerics.lumen_load``): ``surface``, the force ``P lz dA/dx`` on the inner-surface particles above; or
-``operator``, the pressure through the internal-force operator's own boundary term, ``-P f_u(x)`` on the particles
-of the inner boundary layer (:func:`inner_layer`), with ``f_u`` the internal forces (eq. 2.11) of the uniform
-Cauchy stress ``-I`` (the Donnan term ``-Pi (J - 1)`` of eq. 2.26 at ``Pi = 1``, so its tangent is the engine's).
-Nodal integration spreads a boundary traction over the rings within the kernel's reach (at x = X: 0.78, 0.41,
--0.15, -0.03 of it on the first four rings); with ``surface`` even an exact uniform state is out of balance there and
-the wall deforms to balance it, which puts the ring beside the lumen 25 % of P off at every spacing; with ``operator``
-a uniform pressure state is an exact discrete equilibrium (docs/physics.md, "Stress recovery").
+**How the pressure reaches the particles** is a registered numerical variant (:mod:`sphgag.engine.lumen`,
+``numerics.lumen_load``): these forces on the inner-surface particles, or the force operator's own boundary term.
 
 **Prescribed inner radius** (displacement control, as in the authors'
 script) places the inner-surface particles at radius ``r_in`` on their
@@ -36,8 +29,6 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 from numba import njit
-
-from ..registry import Registry, Variant
 
 MMHG_TO_KPA = 0.133322387415
 
@@ -192,32 +183,3 @@ def prescribed_inner_positions(X_inner, r_in):
     """Inner-surface particles at radius ``r_in`` on their reference rays."""
     R = np.linalg.norm(X_inner, axis=1)
     return X_inner * (r_in / R)[:, None]
-
-
-@dataclass(frozen=True)
-class LumenLoad(Variant):
-    """How the lumen pressure becomes particle forces (``numerics.lumen_load``; module docstring)."""
-
-    name: str
-    title: str
-    paper: bool = False
-
-
-#: the registry of lumen loads, by name (``numerics.lumen_load``): the paper prescribes the inner radius (section
-#: 2.4.1) and has no pressure load; ``surface`` is the one this package used first
-LUMEN_LOADS: Registry[LumenLoad] = Registry(
-    "lumen load",
-    (
-        LumenLoad("surface", "the pressure on the polygon through the inner-surface particles, P lz dA/dx"),
-        LumenLoad("operator", "the pressure through the force operator's boundary term (exact for a uniform one)"),
-    ),
-)
-
-
-def inner_layer(X: np.ndarray, inner: np.ndarray, outer: np.ndarray) -> np.ndarray:
-    """The particles of the inner boundary layer (for :data:`LUMEN_LOADS` ``operator``): those nearer, in the
-    reference configuration, to the inner surface than to the outer one (a wall's inner half; the operator's
-    boundary term of a uniform stress vanishes away from the surfaces)."""
-    R = np.hypot(X[:, 0], X[:, 1])
-    r_in, r_out = np.hypot(*X[inner].T).mean(), np.hypot(*X[outer].T).mean()
-    return np.flatnonzero(R - r_in < r_out - R)

@@ -19,15 +19,8 @@ from ..physics import materials
 from . import forces, hourglass, kernel, pool_cavity, recovery
 from .geometry import Layout
 from .kernel import Neighbours
-from .loading import (
-    LUMEN_LOADS,
-    Load,
-    add_pressure_stiffness,
-    inner_layer,
-    prescribed_inner_positions,
-    pressure_forces,
-    pressure_stiffness_blocks,
-)
+from .loading import Load, prescribed_inner_positions, pressure_stiffness_blocks
+from .lumen import LUMEN_LOADS
 
 
 @dataclass
@@ -126,7 +119,7 @@ class Model:
     hourglass: str = "paper"
     cavities: tuple = ()
     stress_recovery: str = "paper"
-    lumen_load: str = "surface"  # loading.LUMEN_LOADS: how the lumen pressure becomes particle forces
+    lumen_load: str = "surface"  # lumen.LUMEN_LOADS: how the lumen pressure becomes particle forces
     # derived data of the fields above (material tables, hourglass stencil): every model object, a replaced one too,
     # starts with its own, empty
     _cache: dict = field(default_factory=dict, init=False, repr=False, compare=False)
@@ -134,7 +127,7 @@ class Model:
     def __post_init__(self):
         hourglass.FORMS.lookup(self.hourglass)
         recovery.RECOVERIES.lookup(self.stress_recovery)
-        LUMEN_LOADS.lookup(self.lumen_load)
+        self._lumen = LUMEN_LOADS.lookup(self.lumen_load)
         self.cth = np.cos(self.layout.theta)
         self.sth = np.sin(self.layout.theta)
         indptr, indices, blockmap, map_ptr = forces.block_pattern(self.nb.ptr, self.nb.nbr)
@@ -274,7 +267,7 @@ class Model:
     # -- evaluation -----------------------------------------------------------
     def evaluate(self, x: np.ndarray, load: Load, extra_stress: np.ndarray | None = None) -> Evaluation:
         """Forces and stresses at positions ``x`` under ``load`` (``extra_stress``: (N, 4) added to P)."""
-        lay, n = self.layout, self.n
+        n = self.n
         FP = np.empty((n, 12))
         f = np.empty((n, 2))
         props, hgc, pairs = self.material(load)
@@ -288,10 +281,7 @@ class Model:
         F, P = FP[:, :4].reshape(n, 2, 2), FP[:, 4:8].reshape(n, 2, 2)
         Fh = FP[:, 8:].reshape(n, 2, 2)
         p = load.pressure_kPa or 0.0
-        if self.lumen_load == "operator":
-            f_ext = self._operator_load(x, pairs, load.axial_stretch, p)
-        else:
-            f_ext = pressure_forces(x, lay.inner_surface, p, load.axial_stretch)
+        f_ext = self._lumen.forces(self, x, pairs, load.axial_stretch, p)
         for c, (pc, contents) in zip(self.cavities, self._cache["cavity_pressures"]):
             c.add_forces(f_ext, x, pc, load.axial_stretch, contents)
         cons, target = self.constraints(load)
@@ -343,51 +333,8 @@ class Model:
         for c, blocks, (pc, contents) in zip(self.cavities, self.cavity_blocks, self._cache["cavity_pressures"]):
             net = pool_cavity.pool_pressure(c.volume_ratio(ev.x), pc, load.axial_stretch, *contents)
             c.add_stiffness(data, blocks, net, 1.0)
-        if self.lumen_load == "operator":
-            self._add_operator_stiffness(data, ev, load.pressure_kPa or 0.0)
-        else:
-            add_pressure_stiffness(data, self.pressure_blocks, load.pressure_kPa or 0.0, load.axial_stretch)
+        self._lumen.add_stiffness(self, data, ev, load.pressure_kPa or 0.0)
         return data
-
-    # -- the lumen load through the operator's boundary term (loading.LUMEN_LOADS "operator") ------------------------
-    def _unit_pressure(self):
-        """``(props, rows)``: a material table whose only stress is the uniform Cauchy stress ``-I`` (the Donnan term
-        of eq. 2.26 at ``Pi = 1``), and the particles of the inner boundary layer (:func:`loading.inner_layer`)."""
-        if "unit_pressure" not in self._cache:
-            props = np.zeros((self.n, materials.NPROP))
-            props[:, materials.PI] = 1.0
-            lay = self.layout
-            self._cache["unit_pressure"] = (props, inner_layer(lay.X, lay.inner_surface, lay.outer_surface))
-        return self._cache["unit_pressure"]
-
-    def _operator_load(self, x, pairs, lz: float, pressure_kPa: float) -> np.ndarray:
-        """``-P f_u(x)`` on the inner boundary layer: ``f_u`` the internal forces of the stress ``-I``."""
-        f_ext = np.zeros((self.n, 2))
-        if not pressure_kPa:
-            return f_ext
-        props, rows = self._unit_pressure()
-        FP, f_u = np.empty((self.n, 12)), np.empty((self.n, 2))
-        forces.evaluate_forces(x, pairs, lz, self.cth, self.sth, props, self._xe, self._fe, FP, f_u)
-        f_ext[rows] = -pressure_kPa * f_u[rows]
-        return f_ext
-
-    def _add_operator_stiffness(self, data, ev, pressure_kPa: float) -> None:
-        """Add ``d(-P f_u)/dx`` on the inner boundary layer's rows to the Jacobian blocks ``data``."""
-        if not pressure_kPa:
-            return
-        props, rows = self._unit_pressure()
-        nb, elastic = self.nb, self._cache["nb_elastic"]
-        ah, sh = self.hourglass_stencil(ev.load)
-        hgc = np.zeros_like(self.material(ev.load)[1])  # no hourglass penalty: its forces are the wall's
-        unit = np.zeros_like(data)
-        stencil = (nb.ptr, nb.nbr, nb.mirror, elastic.a, elastic.s, ah, sh, nb.R, hgc, ev.F, ev.F_hourglass)
-        frame = (ev.load.axial_stretch, self.cth, self.sth, props, self.blockmap, self.map_ptr)
-        forces.jacobian_blocks(ev.x, self.layout.volume, *stencil, *frame, unit)
-        in_layer = np.zeros(self.n, dtype=bool)
-        in_layer[rows] = True
-        block_row = np.repeat(np.arange(self.n), np.diff(self.block_indptr))
-        keep = in_layer[block_row]
-        data[keep] -= pressure_kPa * unit[keep]
 
     def lining_pressures(self, ev: Evaluation) -> list[float]:
         """The pressure [kPa] on each cavity's lining at ``ev``: the normal Cauchy traction the prescribed Pi and the

@@ -18,7 +18,7 @@ class Numerics(Options):
     of a step; ``reuse_factorisation``: chord steps with the last factorisation before refactorising;
     ``stress_recovery``: how the measurements read the stress (:data:`sphgag.engine.recovery.RECOVERIES`: ``paper``,
     the kernel stress of eq. 2.10; ``volumetric``; ``traction``), with the equilibrium unchanged; ``lumen_load``: how
-    the lumen pressure becomes particle forces (:data:`sphgag.engine.loading.LUMEN_LOADS`: ``surface`` or
+    the lumen pressure becomes particle forces (:data:`sphgag.engine.lumen.LUMEN_LOADS`: ``surface`` or
     ``operator``)."""
 
     SECTION = "numerics"
