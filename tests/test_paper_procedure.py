@@ -76,17 +76,23 @@ def test_the_viscous_explicit_path_reaches_the_quasi_static_equilibrium(coarse_m
     assert np.abs(motion.x - x_n).max() < 1e-6 * thickness
 
 
+def _case_I(cfg, pp, name):
+    """``(start, model, timing)``: the passive wall of ``cfg`` pressurised to 103 mmHg, figure 4's case I seeded in it
+    (the paper's law at the procedure's temperature) and the procedure's stepping (``pp``: paper_procedure)."""
+    wall = dict(bilayer=cfg["bilayer"], numerics=cfg["numerics"], homeostasis=cfg["homeostasis"], active=False)
+    calibration = {k: cfg["bilayer_calibration"][k] for k in ("activation_pressure_mmHg", "activation_steps")}
+    dx = cfg["bilayer"]["dx_um"]
+    start = convergence.pressurised_wall(dx, **wall, calibration=calibration, pressure_mmHg=103.0, name=name)
+    gag = dict(law_gag(cfg["gag"], "prescribed"), temperature_K=pp["temperature_K"])
+    model = convergence.case_model(dx, cfg["bilayer"], cfg["numerics"], gag, cfg["swelling"]["cases"]["I"], "I")
+    return start, model, {k: pp[k] for k in ("time_step", "load_update_steps")}
+
+
 def test_at_the_scripts_step_counts_the_swollen_pool_is_out_of_balance(ci_config, full_config):
     """Figure 4's case I by the procedure at the script's step counts (full configuration; the CI wall's spacing):
     the state at 150 mEq/l is far from equilibrium, its residual above the solver's tolerance (docs/physics.md)."""
     pp, cfg = full_config["paper_procedure"], ci_config
-    wall = dict(bilayer=cfg["bilayer"], numerics=cfg["numerics"], homeostasis=cfg["homeostasis"], active=False)
-    calibration = {k: cfg["bilayer_calibration"][k] for k in ("activation_pressure_mmHg", "activation_steps")}
-    dx = cfg["bilayer"]["dx_um"]
-    start = convergence.pressurised_wall(dx, **wall, calibration=calibration, pressure_mmHg=103.0, name="script")
-    gag = dict(law_gag(cfg["gag"], "prescribed"), temperature_K=pp["temperature_K"])
-    model = convergence.case_model(dx, cfg["bilayer"], cfg["numerics"], gag, cfg["swelling"]["cases"]["I"], "I")
-    timing = {k: pp[k] for k in ("time_step", "load_update_steps")}
+    start, model, timing = _case_I(cfg, pp, "script")
     records, end = paper_procedure.swell(model, start.x, start.load, timing, pp["swelling"], 1, "script")
     assert end == "complete"
     last = records[-1]
@@ -103,12 +109,7 @@ def test_the_procedure_holds_the_lumen_and_scales_the_hourglass_as_the_swelling_
     from sphgag.engine import measure
 
     pp, cfg = full_config["paper_procedure"], ci_config
-    wall = dict(bilayer=cfg["bilayer"], numerics=cfg["numerics"], homeostasis=cfg["homeostasis"], active=False)
-    calibration = {k: cfg["bilayer_calibration"][k] for k in ("activation_pressure_mmHg", "activation_steps")}
-    dx = cfg["bilayer"]["dx_um"]
-    start = convergence.pressurised_wall(dx, **wall, calibration=calibration, pressure_mmHg=103.0, name="held")
-    gag = dict(law_gag(cfg["gag"], "prescribed"), temperature_K=pp["temperature_K"])
-    wall_model = convergence.case_model(dx, cfg["bilayer"], cfg["numerics"], gag, cfg["swelling"]["cases"]["I"], "I")
+    start, wall_model, timing = _case_I(cfg, pp, "held")
     model, base = paper_procedure.controlled(wall_model, start.x, start.load, "radius", 0.1)
     assert model.hourglass_alpha == pytest.approx(0.1 * wall_model.hourglass_alpha)
     r0 = measure.surface_radius(model, start.x, "inner")
@@ -116,7 +117,6 @@ def test_the_procedure_holds_the_lumen_and_scales_the_hourglass_as_the_swelling_
     stage = dict(steps=20, density=50000.0, viscosity=0.0)
     stages = dict(relax=stage, convert=stage, swell=dict(stage, steps=40), record_every_mEq_l=50.0,
                   max_concentration_mEq_l=100.0, stop_concentration_mEq_l=100.0)  # fmt: skip
-    timing = {k: pp[k] for k in ("time_step", "load_update_steps")}
     records, end = paper_procedure.swell(model, start.x, base, timing, stages, 1, "held")
     assert end == "complete"
     assert [r.concentration for r in records][-2:] == [50.0, 100.0]

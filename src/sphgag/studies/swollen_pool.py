@@ -148,6 +148,7 @@ def measure_circle(model, state: solver.State, exact: cavity.CircularPool, h: fl
     ring_R = np.array([R0[lay.ring_members(k)].mean() for k in rings])
     ring_hoop = np.array([s_tt[lay.ring_members(k)].mean() for k in rings])
     lining_hoop = inclusion.tip_fit(ring_R - exact.A, ring_hoop, exact.A)
+    recovered = traction_hoop(model, ev, exact.A)
     return dict(
         volume_ratio=volume,
         volume_ratio_exact=exact.volume_ratio,
@@ -160,8 +161,8 @@ def measure_circle(model, state: solver.State, exact: cavity.CircularPool, h: fl
         lining_hoop_kPa=lining_hoop,
         lining_hoop_exact_kPa=exact.interface_hoop_kPa,
         lining_hoop_error=lining_hoop / exact.interface_hoop_kPa - 1.0,
-        lining_hoop_traction_kPa=traction_hoop(model, ev, exact.A),
-        lining_hoop_traction_error=traction_hoop(model, ev, exact.A) / exact.interface_hoop_kPa - 1.0,
+        lining_hoop_traction_kPa=recovered,
+        lining_hoop_traction_error=recovered / exact.interface_hoop_kPa - 1.0,
         ring_crossing_um=np.nan if model.cavities else ring_crossing(state.x, np.flatnonzero(pool), lining),
         pool_jacobian_spread=np.nan if model.cavities else float(J[pool].max() / J[pool].min()),
         outer_radius_um=float(r[edge].mean()),
