@@ -93,12 +93,14 @@ rule resolution:
 
 rule verification:
     """The closed-form verifications at every spacing: the swelling pool (Inglis, Lame; at large strain, the exact
-    circular pool; the pressurised annulus below and above its limit of existence) and the pressurised crack of the damage law with a fracture energy (Sneddon, Griffith).
-    """
+    circular pool; the pressurised annulus below and above its limit of existence), the walls' transmural stress
+    against the exact thick wall, and the pressurised crack of the damage law with a fracture energy (Sneddon,
+    Griffith)."""
     input:
         rules.verification_pool_figure.output,
         rules.verification_circular_pool_figure.output,
         rules.verification_annulus_figure.output,
+        rules.verification_profiles_figure.output,
         rules.verification_crack_figure.output,
 
 

@@ -7,10 +7,9 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from sphgag.engine import loading, lumen, measure, recovery
+from sphgag.engine import loading, lumen
 from sphgag.engine.loading import MMHG_TO_KPA, Load
-from sphgag.engine.numerics import Numerics
-from sphgag.studies import artery
+from sphgag.studies import wall_profiles
 
 from .test_forces import assert_jacobian_matches_fd, rng
 
@@ -54,15 +53,8 @@ def test_the_ring_beside_the_lumen_reads_the_exact_wall(full_config, lumen_load,
     exact thick wall at its material point (% of P). Measured: surface +25.6, operator -3.1 (docs/physics.md)."""
     p = dict(full_config["mean"], dx_um=7.0)
     numerics = dict(full_config["numerics"], lumen_load=lumen_load)
-    model = artery.mean_model(p, numerics)
-    lz, P = p["axial_stretch"], 103.0 * MMHG_TO_KPA
-    loads = [Load(s, 0.0) for s in np.linspace(1.0, lz, 5)[1:]] + [Load(lz, P * f) for f in (0.5, 1.0)]
-    state = Numerics.of(numerics).solver(model).follow_path(model.layout.X, Load(1.0, 0.0), loads, run="ring")[-1]
-    profile = measure.ring_profile(model, recovery.recovered(model, state.evaluation, "paper"))
-    tube = artery.mean_thick_wall(p)
-    r1 = float(tube.radius(profile.reference_radius_um.to_numpy()[1:2], tube.inner_radius(P))[0])
-    exact = tube.state(P, n_per_layer=401)
-    error = 100.0 * (profile.radial_stress_kPa.iloc[1] - np.interp(r1, exact.radius, exact.radial_stress)) / P
+    (found,) = wall_profiles.mean_states(p, numerics, full_config["calibration"], [103.0])
+    error = wall_profiles.ring_errors(*found[1:], "paper").radial_material_error_pct.iloc[1]
     if bound is None:
         assert error > 15.0
     else:

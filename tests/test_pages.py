@@ -59,3 +59,24 @@ def test_the_authors_settings_are_answered_in_a_paragraph_and_a_table():
     assert "`lumen_control` (0.77)" in text and text.index("`lumen_control`") < text.index("| configuration")
     assert "| the authors', `temperature` ours | no eq. |" in text
     assert "| ours, `lumen_control` the authors' | 150 |" in text
+
+
+def test_the_profile_verification_table_gives_every_spacing_and_the_observed_order():
+    """One row per wall, pressure, load and reading: the errors coarse to fine, the order of the finer pair."""
+    table = pd.DataFrame(
+        dict(
+            wall="mean",
+            lumen_load="operator",
+            recovery="traction",
+            pressure_mmHg=103.0,
+            dx_um=[7.0, 3.5],
+            material_inner_radial_pct=0.0,
+            material_outer_radial_pct=0.0,
+            material_radial_max_pct=[4.0, 1.0],
+            material_circ_rms_pct=[0.8, 0.4],
+            residual=1e-6,
+        )  # fmt: skip
+    )
+    text = pages.profiles_table(table)
+    assert "| mean | 103 | operator | traction | 7 / 3.5 | +0.0 / +0.0 | +0.0 / +0.0 | 4.0 / 1.0 (2.00) |" in text
+    assert text.endswith("0.8 / 0.4 (1.00) |")

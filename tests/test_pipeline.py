@@ -112,6 +112,17 @@ CONTRACT = {
         "beyond_end",
         "residual",
     ],
+    "results/verification/profiles.csv": [
+        "wall",
+        "lumen_load",
+        "recovery",
+        "pressure_mmHg",
+        "dx_um",
+        "material_inner_radial_pct",
+        "material_radial_max_pct",
+        "material_circ_rms_pct",
+        "residual",
+    ],
     "results/verification/elliptic_pool.csv": [
         "dx_um",
         "semi_axis_a_um",
@@ -234,6 +245,7 @@ FIGURES = [
         "fig4",
         "verification_pool",
         "verification_annulus",
+        "verification_profiles",
         "swelling_convergence",
         "fig5",
         "fig6",
@@ -259,6 +271,7 @@ REPORT_TABLES = [
     "results/swelling/gci.csv",
     "results/verification/elliptic_pool.csv",
     "results/verification/annulus.csv",
+    "results/verification/profiles.csv",
     "results/delamination/summary.csv",
     "results/delamination/convergence.csv",
     "results/delamination/gci.csv",
@@ -320,6 +333,7 @@ def test_outputs_follow_the_data_contracts(workdir, ci_config):
         "swelling/tip_stress.csv",
         "swelling/convergence.csv",
         "verification/elliptic_pool.csv",
+        "verification/profiles.csv",
     ):
         states = pd.read_csv(workdir / "results" / table)
         assert (states.residual < ci_config["numerics"]["tolerance"]).all(), table

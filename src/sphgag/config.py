@@ -196,6 +196,8 @@ def _registries() -> dict:
         ("delamination", "candidates"): candidates.RULES,
         ("verification", "circular_pool", "pool_models"): protocols.POOL_MODELS,
         ("verification", "annulus", "pool_models"): annulus.POOL_MODELS,
+        ("verification", "profiles", "lumen_loads"): lumen.LUMEN_LOADS,
+        ("verification", "profiles", "recoveries"): recovery.RECOVERIES,
     }
 
 

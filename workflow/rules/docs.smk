@@ -10,6 +10,7 @@ DOCS_STUDIES = dict(
     swelling_band=(lambda: [rules.swelling_gci.output.band], "resolution"),
     delamination_gci=(lambda: [rules.delamination_gci.output[0]], "resolution"),
     annulus=(lambda: [rules.verify_annulus.output.table], "verification"),
+    profiles=(lambda: [rules.verify_profiles.output.table], "verification"),
     variants=(lambda: expand(rules.variant.output.summary, form=HOURGLASS_FORMS), "variants"),
     morris=(lambda: [rules.sensitivity_tables.output.indices], "sensitivity"),
     paper_settings=(lambda: [rules.paper_settings_table.output.table], "paper_settings"),

@@ -323,3 +323,94 @@ rule verification_annulus_figure:
     threads: 1
     script:
         "../scripts/verification_annulus_figure.py"
+
+
+VPR = config["verification"]["profiles"]
+PROFILE_SECTIONS = sorted({"mean" if w == "mean" else "bilayer" for w in VPR["walls"]})
+
+
+rule verify_profiles_wall:
+    """The {section} wall at refinement level {level} under the {load} lumen load: every ring's radial and hoop stress,
+    read by each stress recovery, against the exact thick wall."""
+    input:
+        code=code_of("verify_profiles_wall"),
+    output:
+        table=JOBS.verify_profiles_wall.flat_output("verification/runs", "profiles", ".csv"),
+        provenance=JOBS.verify_profiles_wall.provenance,
+    log:
+        JOBS.verify_profiles_wall.log,
+    benchmark:
+        JOBS.verify_profiles_wall.benchmark
+    wildcard_constraints:
+        section="mean|bilayer",
+        level=r"\d+",
+        load="|".join(VPR["lumen_loads"]),
+    threads: 1
+    resources:
+        runtime=120,
+        mem_mb=6000,
+    params:
+        wall=lambda w: config[w.section],
+        walls=[w for w in VPR["walls"] if w != "mean"],
+        pressures=VPR["pressures_mmHg"],
+        recoveries=VPR["recoveries"],
+        numerics=config["numerics"],
+        calibration=config["calibration"],
+        homeostasis=config["homeostasis"],
+        bilayer_calibration=config["bilayer_calibration"],
+    script:
+        "../scripts/verify_profiles_wall.py"
+
+
+rule verify_profiles:
+    """The walls' rings at every spacing and lumen load in one table, each state's errors and their observed orders."""
+    input:
+        code=code_of("verify_profiles"),
+        tables=expand(
+            rules.verify_profiles_wall.output.table,
+            section=PROFILE_SECTIONS,
+            level=range(VPR["refinements"]),
+            load=VPR["lumen_loads"],
+        ),
+    output:
+        rings="results/verification/profiles_rings.csv",
+        table=report(
+            "results/verification/profiles.csv",
+            caption="../report/profiles.rst",
+            category="4 Verification",
+            labels={"result": "Table: the walls' transmural stress against the exact thick wall"},
+        ),
+        orders="results/verification/profiles_orders.csv",
+    log:
+        "logs/verify_profiles.log",
+    benchmark:
+        "results/benchmarks/verify_profiles.tsv"
+    threads: 1
+    script:
+        "../scripts/verify_profiles.py"
+
+
+rule verification_profiles_figure:
+    """The walls' transmural stress at the configuration's spacing beside the exact curves, raw and treated, and the
+    largest radial error against dx."""
+    input:
+        code=code_of("verification_profiles_figure"),
+        rings=rules.verify_profiles.output.rings,
+        table=rules.verify_profiles.output.table,
+    output:
+        pdf="figures/verification_profiles.pdf",
+        png=report(
+            "figures/verification_profiles.png",
+            caption="../report/verification_profiles.rst",
+            category="4 Verification",
+            labels={"result": "Figure: the walls' transmural stress against the exact thick wall"},
+        ),
+    log:
+        "logs/verification_profiles_figure.log",
+    benchmark:
+        "results/benchmarks/verification_profiles_figure.tsv"
+    threads: 1
+    params:
+        pressure=VPR["figure_pressure_mmHg"],
+    script:
+        "../scripts/verification_profiles_figure.py"

@@ -41,6 +41,7 @@ NUMBERS: Mapping[str, type] = MappingProxyType(
         "batch": int,
         "ratio": float,
         "length": float,
+        "level": int,
     }
 )
 

@@ -90,6 +90,8 @@ verify_pool_ratio = _named("verify_pool_ratio", "ab{ratio}", "verify_pool")
 verify_crack_length = _named("verify_crack_length", "a{length}", "verify_crack")
 verify_circular_pool_model = _named("verify_circular_pool_model", "{model}", "verify_circular_pool")
 verify_annulus_model = _named("verify_annulus_model", "{model}", "verify_annulus")
+# the transmural profiles: one run per wall section (mean, bilayer), refinement level and lumen load
+verify_profiles_wall = _named("verify_profiles_wall", "{section}_level{level}_{load}", "verify_profiles")
 
 # every kind above, by its rule
 register(*(value for value in tuple(globals().values()) if isinstance(value, Kind)))

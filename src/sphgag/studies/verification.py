@@ -10,13 +10,15 @@ from .annulus import AnnulusVerification
 from .crack import CrackVerification
 from .inclusion import PoolVerification
 from .swollen_pool import CircularPoolVerification
+from .wall_profiles import ProfileVerification
 
 
 @dataclass(frozen=True)
 class Verification(Options):
     """The pressurised elliptical inclusion (:class:`PoolVerification`), the pressurised crack against Sneddon and
     Griffith (:class:`CrackVerification`), the circular pool at large strain (:class:`CircularPoolVerification`) and
-    the pressurised annulus at the prescribed law's limit (:class:`AnnulusVerification`)."""
+    the pressurised annulus at the prescribed law's limit (:class:`AnnulusVerification`) and the walls' transmural
+    stress (:class:`ProfileVerification`)."""
 
     SECTION = "verification"
 
@@ -24,9 +26,10 @@ class Verification(Options):
     crack: CrackVerification
     circular_pool: CircularPoolVerification
     annulus: AnnulusVerification
+    profiles: ProfileVerification
 
     @classmethod
     def problems(cls, config) -> list[str]:
         """The problems of each check's configuration."""
         checks = (PoolVerification, CrackVerification, CircularPoolVerification, AnnulusVerification)
-        return [p for check in checks for p in check.problems(config)]
+        return [p for check in (*checks, ProfileVerification) for p in check.problems(config)]

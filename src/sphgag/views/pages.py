@@ -15,7 +15,7 @@ import numpy as np
 import pandas as pd
 
 from ..physics.donnan import PAPER_LAW, charge_law
-from ..studies import annulus, gci, paper_settings
+from ..studies import annulus, gci, paper_settings, wall_profiles
 from ..studies import claims as claims_
 from .names import LAW_FIGURES, law_figure
 
@@ -123,6 +123,35 @@ def morris_table(indices: pd.DataFrame) -> str:
 
 def _pct(value: float) -> str:
     return f"{100 * value:+.2f} %" if np.isfinite(value) else "-"
+
+
+def profiles_table(table: pd.DataFrame) -> str:
+    """The walls' transmural stress (profiles.csv): per wall, pressure, lumen load and reading, the radial error at
+    the inner and outer surfaces and the largest at any ring (% of P, at the rings' material points) and the hoop rms
+    error (%) at every spacing, with the observed order of the finer pair."""
+    orders = wall_profiles.orders(table).set_index(wall_profiles.KEYS)
+    rows = [
+        "| wall | P (mmHg) | lumen load | reading | dx (um) | inner radial (% of P) | outer radial | largest radial, "
+        "any ring (order) | hoop rms, % (order) |",
+        "|" + " --- |" * 9,
+    ]
+    for key, g in table.groupby(wall_profiles.KEYS, sort=False):
+        g = g.sort_values("dx_um", ascending=False)
+        o = orders.loc[key] if key in orders.index else pd.Series(dtype=float)
+        cells = [
+            " / ".join(f"{v:+.1f}" if signed else f"{v:.1f}" for v in g[column])
+            + (f" ({o[column + '_order']:.2f})" if np.isfinite(o.get(column + "_order", np.nan)) else "")
+            for column, signed in (
+                ("material_inner_radial_pct", True),
+                ("material_outer_radial_pct", True),
+                ("material_radial_max_pct", False),
+                ("material_circ_rms_pct", False),
+            )
+        ]
+        wall, load, reading, P = key
+        spacings = " / ".join(f"{d:g}" for d in g.dx_um)
+        rows.append(f"| {wall} | {P:g} | {load} | {reading} | {spacings} | " + " | ".join(cells) + " |")
+    return "\n".join(rows)
 
 
 def annulus_table(table: pd.DataFrame) -> str:
@@ -449,6 +478,9 @@ PAGES: dict[str, tuple[str, tuple[str, ...], tuple[Section, ...]]] = {
         ("verification_pool",),
         (
             Section("The pressurised annulus", "annulus", annulus_table, "verification"),
+            Section(
+                "The walls' transmural stress against the exact thick wall", "profiles", profiles_table, "verification"
+            ),
             Section("The hourglass control's forms on figure 5's pool", "variants", variants_table, "variants"),
             Section("Morris screening: which inputs decide the results", "morris", morris_table, "sensitivity"),
         ),

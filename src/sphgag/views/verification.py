@@ -330,3 +330,53 @@ def verification_annulus(table: pd.DataFrame, orders: pd.DataFrame, exact: pd.Da
         spare.axis("off")
     fig.tight_layout()
     return fig
+
+
+def verification_profiles(rings: pd.DataFrame, table: pd.DataFrame, pressure_mmHg: float):
+    """The walls' transmural stress against the exact thick wall (profiles_rings.csv, profiles.csv), one column per
+    wall. Top rows: the radial and the hoop stress at ``pressure_mmHg`` and the configuration's spacing against the
+    current radius, the exact curves of each layer and the SPH rings raw (the first lumen load and recovery of the
+    table: open circles) and treated (the last of each: dots). Bottom row, against dx (log-log): the largest radial
+    error at any ring (at its material point, % of P) for every lumen load (line style) and recovery (colour), with
+    the acceptance's 2 % of P."""
+    _style()
+    walls = list(dict.fromkeys(table.wall))
+    loads, recoveries = list(dict.fromkeys(table.lumen_load)), list(dict.fromkeys(table.recovery))
+    raw, treated = (loads[0], recoveries[0]), (loads[-1], recoveries[-1])
+    fig, axes = plt.subplots(3, len(walls), figsize=(3.6 * len(walls), 8.4), squeeze=False)
+    hues = dict(zip(recoveries, sns.color_palette("Dark2", len(recoveries)).as_hex()))
+    dashes = dict(zip(loads, ("--", "-", ":", "-.")))
+    for k, wall in enumerate(walls):
+        at = rings[(rings.wall == wall) & np.isclose(rings.pressure_mmHg, pressure_mmHg)]
+        coarse = at[at.dx_um == at.dx_um.max()]
+        finest = at[(at.dx_um == at.dx_um.min()) & (at.lumen_load == raw[0]) & (at.recovery == raw[1])]
+        for ax, stress, exact, name in (
+            (axes[0][k], "radial_stress_kPa", "exact_radial_kPa", "radial"),
+            (axes[1][k], "circ_stress_kPa", "exact_circ_kPa", "hoop"),
+        ):
+            for j, (_, layer) in enumerate(finest.groupby("layer", sort=False)):
+                ax.plot(layer.radius_um, layer[exact], color="k", lw=1.0, label="exact" if j == 0 else None)
+            for (load, rec), marker in ((raw, dict(mfc="none", color="0.45")), (treated, dict(color=hues[treated[1]]))):
+                g = coarse[(coarse.lumen_load == load) & (coarse.recovery == rec)].sort_values("ring")
+                ax.plot(g.radius_um, g[stress], "o", ms=3.0, label=f"{load} load, {rec} reading", **marker)
+            dx = coarse.dx_um.max()
+            ax.set(xlabel="current radius (um)", ylabel=f"{name} stress (kPa)",
+                   title=f"{wall}, {pressure_mmHg:g} mmHg, dx = {dx:g} um")  # fmt: skip
+        axes[0][k].legend(frameon=False, fontsize=6, loc="lower right")
+        ax = axes[2][k]
+        for (load, rec), g in table[table.wall == wall].groupby(["lumen_load", "recovery"], sort=False):
+            worst = g.groupby("dx_um").material_radial_max_pct.max()
+            ax.loglog(worst.index, np.maximum(worst.to_numpy(), 1e-3), dashes[load], marker="o", ms=3, lw=0.9,
+                      color=hues[rec], label=f"{load} load, {rec}")  # fmt: skip
+        ax.axhline(2.0, color="0.6", lw=0.6, ls="--")
+        spacings = sorted(table[table.wall == wall].dx_um.unique())
+        ax.set_xticks(spacings, [f"{d:.3g}" for d in spacings])
+        ticks = [t for t in (0.5, 1, 2, 5, 10, 20, 50, 100) if t <= 1.5 * table.material_radial_max_pct.max()]
+        ax.set_yticks(ticks, [f"{t:g}" for t in ticks])
+        ax.minorticks_off()
+        ax.set(xlabel="dx (um)", ylabel="largest |radial error| (% of P)", title=f"{wall}: every ring, every pressure")
+    handles, labels = axes[2][0].get_legend_handles_labels()
+    title = "bottom row: lumen load (line style) and stress reading (colour); dashed grey: 2 % of P"
+    fig.legend(handles, labels, loc="lower center", ncol=3, frameon=False, fontsize=7, title=title, title_fontsize=7)
+    fig.tight_layout(rect=(0, 0.07, 1, 1))
+    return fig
