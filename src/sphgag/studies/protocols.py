@@ -831,12 +831,13 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
     base = swelling_load(held, 0.0, 0.0)
     intact = path_solver.follow_path(start.x, base, [base], **opts)[-1]
     steps = sw["conversion_steps"]
+    held_at = (
+        f"{base.pressure_mmHg:.1f} mmHg"
+        if base.pressure_kPa is not None
+        else f"inner radius {base.inner_radius:.1f} um"
+    )
     log.info(
-        "[%s] converting %d medial particles to GAG in %d steps at %.1f mmHg",
-        run,
-        model.props.converting.size,
-        steps,
-        base.pressure_mmHg,
+        "[%s] converting %d medial particles to GAG in %d steps at %s", run, model.props.converting.size, steps, held_at
     )
     conversion = [swelling_load(base, f, 0.0) for f in np.linspace(0, 1, steps + 1)[1:]]
     conv = path_solver.follow_path(intact.x, base, conversion, **opts)[-1]
