@@ -350,14 +350,18 @@ rule verify_profiles_wall:
         runtime=120,
         mem_mb=6000,
     params:
+        # what the job's path reads: the axial stretch's steps (mean wall); the homeostasis without its reference
+        # pressure and the activation (bi-layered wall)
         wall=lambda w: config[w.section],
-        walls=[w for w in VPR["walls"] if w != "mean"],
+        walls=lambda w: [v for v in VPR["walls"] if v != "mean"] if w.section == "bilayer" else [],
         pressures=VPR["pressures_mmHg"],
         recoveries=VPR["recoveries"],
         numerics=config["numerics"],
-        calibration=config["calibration"],
-        homeostasis=config["homeostasis"],
-        bilayer_calibration=config["bilayer_calibration"],
+        calibration={"axial_stretch_steps": config["calibration"]["axial_stretch_steps"]},
+        homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
+        bilayer_calibration={
+            k: config["bilayer_calibration"][k] for k in ("activation_pressure_mmHg", "activation_steps")
+        },
     script:
         "../scripts/verify_profiles_wall.py"
 
