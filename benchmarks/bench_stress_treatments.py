@@ -13,15 +13,15 @@ from __future__ import annotations
 
 import argparse
 import sys
-import time
 from functools import partial
 from pathlib import Path
 
-import numpy as np
 import pandas as pd
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
+
+from bench_solver import median_time  # noqa: E402
 
 from sphgag import config, threads  # noqa: E402
 from sphgag.engine import lumen, recovery  # noqa: E402
@@ -29,13 +29,8 @@ from sphgag.studies import artery, protocols  # noqa: E402
 
 
 def median_ms(fn, repeats: int) -> float:
-    fn()
-    samples = []
-    for _ in range(repeats):
-        t = time.perf_counter()
-        fn()
-        samples.append(time.perf_counter() - t)
-    return 1e3 * float(np.median(samples))
+    """``fn``'s median wall time over ``repeats`` calls after one warm-up [ms]."""
+    return 1e3 * median_time(fn, repeats)
 
 
 def load_row(cfg: dict, dx: float, load_name: str):
