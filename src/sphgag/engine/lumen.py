@@ -51,7 +51,7 @@ class OperatorLoad(SurfaceLoad):
         f_ext = np.zeros((model.n, 2))
         if not pressure_kPa:
             return f_ext
-        props, rows = unit_pressure(model)
+        props, rows, _ = unit_pressure(model)
         FP, f_u = np.empty((model.n, 12)), np.empty((model.n, 2))
         forces.evaluate_forces(x, pairs, lz, model.cth, model.sth, props, model._xe, model._fe, FP, f_u)
         f_ext[rows] = -pressure_kPa * f_u[rows]
@@ -60,7 +60,7 @@ class OperatorLoad(SurfaceLoad):
     def add_stiffness(self, model, data, ev, pressure_kPa):
         if not pressure_kPa:
             return
-        props, rows = unit_pressure(model)
+        props, _, row_blocks = unit_pressure(model)
         nb, elastic = model.nb, model._cache["nb_elastic"]
         ah, sh = model.hourglass_stencil(ev.load)
         hgc = np.zeros_like(model.material(ev.load)[1])  # no hourglass penalty: its forces are the wall's
@@ -68,20 +68,22 @@ class OperatorLoad(SurfaceLoad):
         stencil = (nb.ptr, nb.nbr, nb.mirror, elastic.a, elastic.s, ah, sh, nb.R, hgc, ev.F, ev.F_hourglass)
         frame = (ev.load.axial_stretch, model.cth, model.sth, props, model.blockmap, model.map_ptr)
         forces.jacobian_blocks(ev.x, model.layout.volume, *stencil, *frame, unit)
-        in_layer = np.zeros(model.n, dtype=bool)
-        in_layer[rows] = True
-        keep = in_layer[np.repeat(np.arange(model.n), np.diff(model.block_indptr))]  # the blocks' row particles
-        data[keep] -= pressure_kPa * unit[keep]
+        data[row_blocks] -= pressure_kPa * unit[row_blocks]
 
 
-def unit_pressure(model) -> tuple[np.ndarray, np.ndarray]:
-    """``(props, rows)`` of ``model`` (cached on it): a material table whose only stress is the uniform Cauchy stress
-    ``-I`` (the Donnan term of eq. 2.26 at ``Pi = 1``), and the particles of its inner boundary layer."""
+def unit_pressure(model) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(props, rows, row_blocks)`` of ``model`` (cached on it): a material table whose only stress is the uniform
+    Cauchy stress ``-I`` (the Donnan term of eq. 2.26 at ``Pi = 1``), the particles of its inner boundary layer, and
+    which of the Jacobian's blocks are theirs (the blocks of those rows)."""
     if "unit_pressure" not in model._cache:
         props = np.zeros((model.n, materials.NPROP))
         props[:, materials.PI] = 1.0
         lay = model.layout
-        model._cache["unit_pressure"] = (props, inner_layer(lay.X, lay.inner_surface, lay.outer_surface))
+        rows = inner_layer(lay.X, lay.inner_surface, lay.outer_surface)
+        in_layer = np.zeros(model.n, dtype=bool)
+        in_layer[rows] = True
+        row_blocks = in_layer[np.repeat(np.arange(model.n), np.diff(model.block_indptr))]
+        model._cache["unit_pressure"] = (props, rows, row_blocks)
     return model._cache["unit_pressure"]
 
 

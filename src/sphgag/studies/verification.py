@@ -31,5 +31,11 @@ class Verification(Options):
     @classmethod
     def problems(cls, config) -> list[str]:
         """The problems of each check's configuration."""
-        checks = (PoolVerification, CrackVerification, CircularPoolVerification, AnnulusVerification)
-        return [p for check in (*checks, ProfileVerification) for p in check.problems(config)]
+        checks = (
+            PoolVerification,
+            CrackVerification,
+            CircularPoolVerification,
+            AnnulusVerification,
+            ProfileVerification,
+        )
+        return [p for check in checks for p in check.problems(config)]

@@ -5,8 +5,9 @@ The damage criterion (section 2.7) reads the radial stress; figure 3(c) shows it
 incompressible thick-walled tubes of the same strain energies (:mod:`sphgag.physics.analytic`): the mean-behaviour
 model's (eq. 2.18, figure 2a) and the bi-layered model's, passive and active (eqs. 2.19-2.24, figure 3).
 
-* :func:`wall_states`: the converged states of one wall at one spacing (the mean wall by figure 2a's path; the
-  bi-layered wall by homeostasis, pressure control and, for the active wall, its tone: the path of figure 3).
+* :func:`mean_states` and :func:`bilayer_states`: the converged states of one wall at one spacing (the mean wall by
+  figure 2a's path; the bi-layered wall by homeostasis, pressure control and, for the active wall, its tone: the
+  path of figure 3).
 * :func:`ring_errors`: every ring's radial error [% of the lumen pressure P] and hoop error [% of the exact], at the
   ring's current radius and at its material point (the exact tube's radius of the ring's reference radius).
 * :func:`summary` and :func:`orders`: per state, the surfaces' and the interior's largest radial error and the hoop
@@ -29,12 +30,6 @@ from . import artery, protocols
 from .inclusion import observed_order
 
 log = logging.getLogger("sphgag")
-
-#: the walls of the verification and the model section each is built from
-WALLS = {"mean": "mean", "passive": "bilayer", "active": "bilayer"}
-
-#: the error measures of :func:`summary` (at the rings' current radii; ``material_*`` at their material points)
-MEASURES = ("inner_radial_pct", "outer_radial_pct", "interior_radial_max_pct", "radial_max_pct", "circ_rms_pct")
 
 
 @dataclass(frozen=True)
@@ -108,7 +103,7 @@ def bilayer_states(p: dict, numerics: dict, homeostasis: dict, cal: dict, walls,
         start = protocols.activated(model, h.state, numerics, cal, wall == "active", path_solver=path_solver)
         states = [start]
         for loads in _pressure_loads(pressures_mmHg, start.load.pressure_mmHg, start.load.material):
-            states += path_solver.follow_path(start.x, start.load, loads, run=f"{model.name} {wall}") if loads else []
+            states += path_solver.follow_path(start.x, start.load, loads, run=f"{model.name} {wall}")
         tube = artery.bilayer_tube(p, active=wall == "active")
         out += [(wall, model, tube, s) for s in states if _pressure(s) in wanted]
     return out
