@@ -124,12 +124,20 @@ def test_orders_of_three_spacings_with_known_errors():
     """The observed order from errors e = C h^p at three spacings is p, and the GCI's extrapolated value is exact."""
     h = np.array([1.0, 1.5, 2.25])
     rows = [
-        dict(pool_model="hole", outer_ratio=2.0, fraction=0.5, state=True, dx_um=d,
-             volume_ratio=3.0 * (1 + 0.02 * d**2), volume_ratio_exact=3.0,
-             lining_hoop_kPa=50.0 * (1 - 0.03 * d), lining_hoop_exact_kPa=50.0,
-             lining_hoop_traction_kPa=50.0 * (1 + 0.01 * d**2))
+        dict(
+            pool_model="hole",
+            outer_ratio=2.0,
+            fraction=0.5,
+            state=True,
+            dx_um=d,
+            volume_ratio=3.0 * (1 + 0.02 * d**2),
+            volume_ratio_exact=3.0,
+            lining_hoop_kPa=50.0 * (1 - 0.03 * d),
+            lining_hoop_exact_kPa=50.0,
+            lining_hoop_traction_kPa=50.0 * (1 + 0.01 * d**2),
+        )
         for d in h
-    ]  # fmt: skip
+    ]
     o = annulus.orders(pd.DataFrame(rows)).set_index("quantity")
     assert o.loc["volume_ratio", "order_fine"] == pytest.approx(2.0)
     assert o.loc["volume_ratio", "order_coarse"] == pytest.approx(2.0)

@@ -223,16 +223,41 @@ def _procedure_summary():
     """A summary of target paper_procedure (sphgag.studies.paper_procedure.summary): figure 4's tip stress by the
     equilibrium and two explicit paths, figure 5's runs at two sigma_cr and a pool pair's."""
     rows = []
-    for path, factor, tips in (("equilibrium", np.nan, (120.0, 300.0)), ("explicit", 1, (60.0, 90.0)),
-                               ("explicit", 4, (40.0, 80.0))):  # fmt: skip
+    for path, factor, tips in (
+        ("equilibrium", np.nan, (120.0, 300.0)),
+        ("explicit", 1, (60.0, 90.0)),
+        ("explicit", 4, (40.0, 80.0)),
+    ):
         for case, tip in zip(("I", "IV"), tips):
-            rows.append(dict(figure="4", model="passive", pool=case, sigma_cr_kPa=np.nan, path=path, step_factor=factor,
-                             quantity="tip_radial_stress_kPa", value=tip, residual=0.5))  # fmt: skip
+            rows.append(
+                dict(
+                    figure="4",
+                    model="passive",
+                    pool=case,
+                    sigma_cr_kPa=np.nan,
+                    path=path,
+                    step_factor=factor,
+                    quantity="tip_radial_stress_kPa",
+                    value=tip,
+                    residual=0.5,
+                )
+            )
     for factor, (fast, slow) in ((1, (3.0, 1.0)), (4, (2.0, 1.5))):
         for sigma, rate, teeth in ((30.0, fast, 3), (60.0, slow, 1)):
             for quantity, value in (("growth_rate_um_per_time", rate), ("teeth", teeth)):
-                rows.append(dict(figure="5", model="passive", pool="single", sigma_cr_kPa=sigma, path="explicit",
-                                 step_factor=factor, quantity=quantity, value=value, residual=2.0))  # fmt: skip
+                rows.append(
+                    dict(
+                        figure="5",
+                        model="passive",
+                        pool="single",
+                        sigma_cr_kPa=sigma,
+                        path="explicit",
+                        step_factor=factor,
+                        quantity=quantity,
+                        value=value,
+                        residual=2.0,
+                    )
+                )
     return pd.DataFrame(rows)
 
 
@@ -242,8 +267,17 @@ def _procedure_damage():
     rows = []
     for factor, exterior in ((1, (2, 6, 9, 12)), (4, (1, 2, 3, 12))):
         for t, (interior, ext) in enumerate(zip((1, 3, 5, 5), exterior)):
-            rows.append(dict(pool_set="pair", sigma_cr_kPa=40.0, step_factor=factor, pseudo_time=100.0 * t,
-                             interior_particles=interior, exterior_particles=ext, residual=3.0))  # fmt: skip
+            rows.append(
+                dict(
+                    pool_set="pair",
+                    sigma_cr_kPa=40.0,
+                    step_factor=factor,
+                    pseudo_time=100.0 * t,
+                    interior_particles=interior,
+                    exterior_particles=ext,
+                    residual=3.0,
+                )
+            )
     return pd.DataFrame(rows)
 
 

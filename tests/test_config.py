@@ -117,7 +117,7 @@ def test_all_problems_are_reported_at_once(full_config):
             ("bilayer", "layers"),
             [dict(name="media", thickness_um=28.4), dict(name="lamina", thickness_um=1.0)],
             "missing key 'bilayer.mass_fractions.lamina'",
-        ),  # fmt: skip
+        ),
         (("delamination", "averaging_length_um"), 1.0, "the average of averaged would be a single particle's value"),
         (("bilayer", "aligned_radii_um"), [700.0], "bilayer.aligned_radii_um[0] = 700.0 is not inside the wall"),
         (("bilayer", "aligned_radii_um"), [646.9, 670.5], "the media sub-layer 646.8-646.9 um = 0.1 um is thinner"),
@@ -336,8 +336,9 @@ def test_a_laws_ramp_top_names_a_charge_law_and_is_that_laws_alone(full_config):
 
     msg = bad(full_config, ["delamination", "max_concentration_by_law_mEq_l"], {"neutral": 300.0})
     assert "delamination.max_concentration_by_law_mEq_l.neutral names no charge law (prescribed, conserved)" in msg
-    assert "max_concentration_by_law_mEq_l" in bad(full_config, ["delamination", "max_concentration_by_law_mEq_l"],
-                                                   {"conserved": -1.0})  # fmt: skip
+    assert "max_concentration_by_law_mEq_l" in bad(
+        full_config, ["delamination", "max_concentration_by_law_mEq_l"], {"conserved": -1.0}
+    )
     de = dict(full_config["delamination"], max_concentration_by_law_mEq_l={"conserved": 300.0})
     assert Settings.of_law(de, "conserved")["max_concentration_mEq_l"] == 300.0
     assert Settings.of_law(de, "prescribed")["max_concentration_mEq_l"] == de["max_concentration_mEq_l"]

@@ -44,10 +44,17 @@ def test_the_delamination_gci_table_has_a_row_per_spacing_and_the_estimate_of_th
 
     dx = [4.0, 2.83, 2.0]
     rows = [
-        dict(charge_law="prescribed", criterion="averaged", case="single", dx_um=h, onset_concentration_mEq_l=100 + h,
-             runaway_concentration_mEq_l=110 + 2 * h**2, merge_concentration_mEq_l=np.nan)
+        dict(
+            charge_law="prescribed",
+            criterion="averaged",
+            case="single",
+            dx_um=h,
+            onset_concentration_mEq_l=100 + h,
+            runaway_concentration_mEq_l=110 + 2 * h**2,
+            merge_concentration_mEq_l=np.nan,
+        )
         for h in dx
-    ]  # fmt: skip
+    ]
     table = delamination.gci_table(pd.DataFrame(rows))
     assert list(table.columns) == delamination.GCI_COLUMNS
     assert set(table.quantity) == {"onset_concentration_mEq_l", "runaway_concentration_mEq_l"}  # merge: never
@@ -83,10 +90,24 @@ def test_the_swelling_gci_table_reads_each_quantity_at_its_volume_ratio_and_conc
             dx_um=h,
             top_circ_stress_kPa=400.0,
         )
-        rows.append(dict(common, stage=volume_states.STAGE, concentration_mEq_l=120 + h**2, pool_volume_change=4.0,
-                         tip_radial_stress_kPa=50.0))  # fmt: skip
-        rows.append(dict(common, stage="converted", concentration_mEq_l=100.0, pool_volume_change=2.0 + 0.1 * h,
-                         tip_radial_stress_kPa=80 + h**4))  # fmt: skip
+        rows.append(
+            dict(
+                common,
+                stage=volume_states.STAGE,
+                concentration_mEq_l=120 + h**2,
+                pool_volume_change=4.0,
+                tip_radial_stress_kPa=50.0,
+            )
+        )
+        rows.append(
+            dict(
+                common,
+                stage="converted",
+                concentration_mEq_l=100.0,
+                pool_volume_change=2.0 + 0.1 * h,
+                tip_radial_stress_kPa=80 + h**4,
+            )
+        )
     table = convergence.gci_table(pd.DataFrame(rows), [100.0], 103.0)
     assert list(table.columns) == convergence.GCI_COLUMNS
     c = table[(table.quantity == "concentration_at_volume_mEq_l") & (table["at"] == 5.0)]
@@ -112,11 +133,19 @@ def test_figure_4s_band_gives_every_step_of_the_ramp_and_the_intact_wall_its_est
     rows = []
     for h in (1.5, 2.12, 3.0):
         common = dict(charge_law="prescribed", pool_model="particles", model="active", case="I", dx_um=h)
-        rows.append(dict(common, stage="intact", concentration_mEq_l=0.0, tip_radial_stress_kPa=-5.0,
-                         top_circ_stress_kPa=100.0))  # fmt: skip
+        rows.append(
+            dict(common, stage="intact", concentration_mEq_l=0.0, tip_radial_stress_kPa=-5.0, top_circ_stress_kPa=100.0)
+        )
         for c in (50.0, 100.0):
-            rows.append(dict(common, stage="converted", concentration_mEq_l=c, tip_radial_stress_kPa=10 * c + 4 * h,
-                             top_circ_stress_kPa=300.0 + h**2))  # fmt: skip
+            rows.append(
+                dict(
+                    common,
+                    stage="converted",
+                    concentration_mEq_l=c,
+                    tip_radial_stress_kPa=10 * c + 4 * h,
+                    top_circ_stress_kPa=300.0 + h**2,
+                )
+            )
     band = convergence.band_table(pd.DataFrame(rows), 103.0)
     assert len(band) == 3 * 2 * 3 and (band.pressure_mmHg == 103.0).all()
     tip = band[(band.quantity == "tip_radial_stress_kPa") & (band.stage == "converted")]

@@ -50,9 +50,14 @@ def test_the_authors_settings_are_answered_in_a_paragraph_and_a_table():
     has none, and the settings ranked by their share of the difference, in words and in a table."""
     from .test_paper_settings import _ablation
 
-    tips = {("none", "script", "I"): 120.0, ("none", "ours", "I"): 400.0, ("lumen_control", "from_script", "I"): 300.0,
-            ("lumen_control", "from_ours", "I"): 150.0, ("temperature", "from_script", "I"): float("nan"),
-            ("temperature", "from_ours", "I"): 399.0}  # fmt: skip
+    tips = {
+        ("none", "script", "I"): 120.0,
+        ("none", "ours", "I"): 400.0,
+        ("lumen_control", "from_script", "I"): 300.0,
+        ("lumen_control", "from_ours", "I"): 150.0,
+        ("temperature", "from_script", "I"): float("nan"),
+        ("temperature", "from_ours", "I"): 399.0,
+    }
     text = pages.authors_settings(_ablation(tips))
     assert "the authors' settings (`config/script.yaml`) give a tip radial stress of passive I 120 kPa" in text
     assert "ours (`config/config.yaml`) passive I 400 kPa" in text
@@ -75,7 +80,7 @@ def test_the_profile_verification_table_gives_every_spacing_and_the_observed_ord
             material_radial_max_pct=[4.0, 1.0],
             material_circ_rms_pct=[0.8, 0.4],
             residual=1e-6,
-        )  # fmt: skip
+        )
     )
     text = pages.profiles_table(table)
     assert "| mean | 103 | operator | traction | 7 / 3.5 | +0.0 / +0.0 | +0.0 / +0.0 | 4.0 / 1.0 (2.00) |" in text

@@ -115,8 +115,14 @@ def test_the_procedure_holds_the_lumen_and_scales_the_hourglass_as_the_swelling_
     r0 = measure.surface_radius(model, start.x, "inner")
     assert base.pressure_kPa is None and base.inner_radius == pytest.approx(r0)
     stage = dict(steps=20, density=50000.0, viscosity=0.0)
-    stages = dict(relax=stage, convert=stage, swell=dict(stage, steps=40), record_every_mEq_l=50.0,
-                  max_concentration_mEq_l=100.0, stop_concentration_mEq_l=100.0)  # fmt: skip
+    stages = dict(
+        relax=stage,
+        convert=stage,
+        swell=dict(stage, steps=40),
+        record_every_mEq_l=50.0,
+        max_concentration_mEq_l=100.0,
+        stop_concentration_mEq_l=100.0,
+    )
     records, end = paper_procedure.swell(model, start.x, base, timing, stages, 1, "held")
     assert end == "complete"
     assert [r.concentration for r in records][-2:] == [50.0, 100.0]

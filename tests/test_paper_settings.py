@@ -98,8 +98,9 @@ def test_the_radius_held_lumen_keeps_the_inner_radius_during_swelling(ci_config,
     """lumen_control = radius: every state of the protocol has every inner particle at the start's mean inner radius;
     the lumen pressure is read back from the reactions, and moves as the pool swells."""
     sector = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
-    model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], "test-ps-radius", sector,
-                                 law_gag(ci_config, "prescribed"))  # fmt: skip
+    model = artery.bilayer_model(
+        ci_config["bilayer"], ci_config["numerics"], "test-ps-radius", sector, law_gag(ci_config, "prescribed")
+    )
     sw = dict(ci_config["swelling"], lumen_control="radius", max_concentration_mEq_l=100.0, concentration_points=3)
     states = protocols.swell_pool(model, pressurised, ci_config["numerics"], sw)
     r0 = measure.surface_radius(model, pressurised.x, "inner")
@@ -150,14 +151,38 @@ def test_the_adjacent_tip_probe_selects_the_particles_just_beyond_the_pools_ends
 
 
 def test_the_ablation_gives_no_number_without_an_equilibrium():
-    base = dict(base="script", model="passive", case="I", charge_law="prescribed", particles=100, stage="converted",
-                top_circ_stress_kPa=1.0, pool_volume_change=0.5, pressure_mmHg=103.0, end_reason="")  # fmt: skip
-    runs = pd.DataFrame([
-        dict(base, setting="none", concentration_mEq_l=100.0, tip_radial_stress_kPa=40.0, residual=1e-6,
-             path_end="limit point"),
-        dict(base, setting="tip_probe", concentration_mEq_l=100.0, tip_radial_stress_kPa=50.0, residual=1e-3,
-             path_end="complete"),
-    ])  # fmt: skip
+    base = dict(
+        base="script",
+        model="passive",
+        case="I",
+        charge_law="prescribed",
+        particles=100,
+        stage="converted",
+        top_circ_stress_kPa=1.0,
+        pool_volume_change=0.5,
+        pressure_mmHg=103.0,
+        end_reason="",
+    )
+    runs = pd.DataFrame(
+        [
+            dict(
+                base,
+                setting="none",
+                concentration_mEq_l=100.0,
+                tip_radial_stress_kPa=40.0,
+                residual=1e-6,
+                path_end="limit point",
+            ),
+            dict(
+                base,
+                setting="tip_probe",
+                concentration_mEq_l=100.0,
+                tip_radial_stress_kPa=50.0,
+                residual=1e-3,
+                path_end="complete",
+            ),
+        ]
+    )
     table = paper_settings.ablation([runs], [100.0, 150.0], 1e-4)
     none = table[table.setting == "none"].set_index("concentration_mEq_l")
     assert none.loc[100.0, "tip_radial_stress_kPa"] == 40.0 and none.loc[100.0, "equilibrium"] == "converged"
@@ -167,31 +192,59 @@ def test_the_ablation_gives_no_number_without_an_equilibrium():
     assert np.isnan(switched.tip_radial_stress_kPa) and switched.equilibrium.startswith("not converged")
     assert switched.direction == "from_script"
     assert list(table.columns[:10]) == [
-        "setting", "direction", "case", "model", "charge_law", "concentration_mEq_l", "tip_radial_stress_kPa",
-        "top_hoop_stress_kPa", "volume_ratio", "residual",
-    ]  # fmt: skip
+        "setting",
+        "direction",
+        "case",
+        "model",
+        "charge_law",
+        "concentration_mEq_l",
+        "tip_radial_stress_kPa",
+        "top_hoop_stress_kPa",
+        "volume_ratio",
+        "residual",
+    ]
 
 
 def _ablation(tips: dict) -> pd.DataFrame:
     """An ablation table at 150 mEq/l: ``tips[(setting, direction, case)]`` = tip radial stress."""
     rows = [
-        dict(setting=s, direction=d, case=c, model="passive", charge_law="prescribed", concentration_mEq_l=150.0,
-             tip_radial_stress_kPa=v, top_hoop_stress_kPa=1.0, volume_ratio=2.0, residual=1e-6, equilibrium="converged",
-             pressure_mmHg=103.0, particles=100)
+        dict(
+            setting=s,
+            direction=d,
+            case=c,
+            model="passive",
+            charge_law="prescribed",
+            concentration_mEq_l=150.0,
+            tip_radial_stress_kPa=v,
+            top_hoop_stress_kPa=1.0,
+            volume_ratio=2.0,
+            residual=1e-6,
+            equilibrium="converged",
+            pressure_mmHg=103.0,
+            particles=100,
+        )
         for (s, d, c), v in tips.items()
-    ]  # fmt: skip
+    ]
     return pd.DataFrame(rows, columns=paper_settings.COLUMNS)
 
 
 def test_claim_p5_judges_the_authors_configuration_and_names_the_largest_steps():
     from sphgag.studies import claims
 
-    tips = {("none", "script", "I"): 120.0, ("none", "script", "IV"): 60.0, ("none", "ours", "I"): 400.0,
-            ("none", "ours", "IV"): 1200.0, ("lumen_control", "from_script", "I"): 300.0,
-            ("lumen_control", "from_script", "IV"): 900.0, ("lumen_control", "from_ours", "I"): 150.0,
-            ("lumen_control", "from_ours", "IV"): 100.0, ("temperature", "from_script", "I"): 121.0,
-            ("temperature", "from_script", "IV"): 61.0, ("temperature", "from_ours", "I"): 399.0,
-            ("temperature", "from_ours", "IV"): 1199.0}  # fmt: skip
+    tips = {
+        ("none", "script", "I"): 120.0,
+        ("none", "script", "IV"): 60.0,
+        ("none", "ours", "I"): 400.0,
+        ("none", "ours", "IV"): 1200.0,
+        ("lumen_control", "from_script", "I"): 300.0,
+        ("lumen_control", "from_script", "IV"): 900.0,
+        ("lumen_control", "from_ours", "I"): 150.0,
+        ("lumen_control", "from_ours", "IV"): 100.0,
+        ("temperature", "from_script", "I"): 121.0,
+        ("temperature", "from_script", "IV"): 61.0,
+        ("temperature", "from_ours", "I"): 399.0,
+        ("temperature", "from_ours", "IV"): 1199.0,
+    }
     claim = claims.p5_authors_settings(claims.Evidence(paper_settings=_ablation(tips)))
     assert claim.claim_id == "P5" and claim.holds == "yes" and claim.margin == pytest.approx(10.0)
     assert claim.our_value.index("lumen_control") < claim.our_value.index("temperature")

@@ -986,9 +986,18 @@ HEAVY = {
 }
 PAPER = {"fig1", "fig3a_mean", "fig3b", "fig3", "fig4", "fig5", "fig6", "fig7", "verification_pool_figure", "claims"}
 TARGET_RULES = (
-    "all", "resolution", "verification", "fracture_energy", "sensitivity", "variants", "paper_procedure",
-    "paper_settings", "views", "docs", "everything",
-)  # fmt: skip
+    "all",
+    "resolution",
+    "verification",
+    "fracture_energy",
+    "sensitivity",
+    "variants",
+    "paper_procedure",
+    "paper_settings",
+    "views",
+    "docs",
+    "everything",
+)
 
 
 def planned(out: str) -> set:

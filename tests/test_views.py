@@ -456,7 +456,7 @@ def test_the_verification_figures_draw_their_panels():
                 )
             )
             for n in (4.0, 8.0)
-        ]  # fmt: skip
+        ]
         + [
             pd.DataFrame(
                 dict(
@@ -467,7 +467,7 @@ def test_the_verification_figures_draw_their_panels():
                     hoop_exact_kPa=pressure * ratio,
                     hoop_sph_kPa=pressure * ratio * 0.9,
                 )
-            )  # fmt: skip
+            )
             for ratio in (1.0, 2.0, 3.0)
             for n in (4.0, 8.0)
         ]
@@ -628,8 +628,15 @@ def test_figures_5_to_7_draw_three_onset_criteria_one_law_a_figure():
     assert [t.get_text() for t in key.get_texts()][:3] == ["intact media", "intact lamina", "intact adventitia"]
     assert overlap.overlaps(fig) == []
 
-    fig = views.fig6(growth, summary, {(case, c): snap for case in ("low", "high") for c in criteria},
-                     ["low", "high"], criteria, "prescribed", WALL_LAYERS)  # fmt: skip
+    fig = views.fig6(
+        growth,
+        summary,
+        {(case, c): snap for case in ("low", "high") for c in criteria},
+        ["low", "high"],
+        criteria,
+        "prescribed",
+        WALL_LAYERS,
+    )
     titles = _titles(fig)
     assert "(c) low: converted particles" in titles and "(c) high: converted particles" in titles
     assert sum(t.startswith("(b) high, strain: last\n") for t in titles) == 1  # the last state of the third criterion
@@ -680,9 +687,19 @@ def test_the_sensitivity_figures_draw_a_panel_per_output_method_and_law():
                     for index in indices:
                         v = 0.1 * (k + 1)
                         rows.append(
-                            dict(charge_law=law, output=output, method=method, input=name, index=index, value=v,
-                                 conf_low=0.8 * v, conf_high=1.2 * v, samples_used=8, samples_missing=0)
-                        )  # fmt: skip
+                            dict(
+                                charge_law=law,
+                                output=output,
+                                method=method,
+                                input=name,
+                                index=index,
+                                value=v,
+                                conf_low=0.8 * v,
+                                conf_high=1.2 * v,
+                                samples_used=8,
+                                samples_missing=0,
+                            )
+                        )
     fig = views.sensitivity(pd.DataFrame(rows), laws)
     assert len(fig.axes) == 2 * 2 * len(laws)
     assert _titles(fig)[:3] == ["Morris: prescribed Pi(c), paper", "Morris: conserved charge, c/J", "Morris: ideal"]

@@ -27,7 +27,7 @@ def _rings(dx: float, surface: float, interior: float) -> pd.DataFrame:
             circ_error_pct=0.5 * e,
             circ_material_error_pct=0.5 * e,
             residual=1e-6,
-        )  # fmt: skip
+        )
     )
 
 

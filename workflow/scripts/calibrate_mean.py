@@ -3,7 +3,7 @@
 from sphgag import jobs
 from sphgag.studies import artery, protocols, wall
 
-with jobs.run(snakemake, name="calibrate_mean") as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     p, numerics, calibration = dict(job.params.mean), dict(job.params.numerics), dict(job.params.calibration)
     model = artery.mean_model(p, numerics, name=job.name)
     result = protocols.mean_pressure_diameter(model, artery.mean_thick_wall(p), p, numerics, calibration)

@@ -8,7 +8,7 @@ import pandas as pd
 from sphgag import jobs
 from sphgag.studies import claims, delamination
 
-with jobs.run(snakemake, name="claims") as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     p = job.params
     t = {
         k: pd.read_csv(job.input[k])

@@ -9,7 +9,7 @@ from sphgag.studies import delamination
 from sphgag.views import delamination as views
 from sphgag.views import style
 
-with jobs.run(snakemake, name=snakemake.rule) as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     p = job.params
     # the paper's damage law (eq. 2.28 as printed); the fracture-energy runs are rows of the tables, not of the figure
     growth, summary = (delamination.paper_law(pd.read_csv(path)) for path in (job.input.growth, job.input.summary))

@@ -5,7 +5,7 @@ import pandas as pd
 from sphgag import jobs
 from sphgag.studies import delamination
 
-with jobs.run(snakemake, name="delamination_gci") as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     table = delamination.gci_table(pd.read_csv(job.input.convergence))
     table.to_csv(job.output[0], index=False)
     for r in table.drop_duplicates(["charge_law", "criterion", "case", "quantity"]).itertuples():

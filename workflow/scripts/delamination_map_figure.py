@@ -5,7 +5,7 @@ import pandas as pd
 from sphgag import jobs
 from sphgag.views import sensitivity, style
 
-with jobs.run(snakemake, name="delamination_map_figure") as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     table = pd.read_csv(job.input.map)
     fig = sensitivity.delamination_map(
         table,

@@ -8,7 +8,7 @@ from sphgag import jobs
 from sphgag.records import provenance
 from sphgag.views import pages
 
-with jobs.run(snakemake, name="docs_pages") as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     tables = {k: pd.read_csv(job.input[k]) for k in ("claims", "tips", "delamination")}
     for name, evidence in job.params.studies.items():  # a study's table where this run or an earlier one made it
         made = [pd.read_csv(e["path"]) for e in evidence if e["state"] != "not run"]

@@ -5,7 +5,7 @@ import pandas as pd
 from sphgag import jobs
 from sphgag.views import style, wall
 
-with jobs.run(snakemake, name="fig3") as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     tables = {
         k: pd.read_csv(job.input[k])
         for k in ("mean_states", "mean_exact", "bilayer", "passive_exact", "active_exact", "profiles")

@@ -5,7 +5,7 @@ import pandas as pd
 from sphgag import jobs
 from sphgag.views import style, wall
 
-with jobs.run(snakemake, name="fig3a_mean") as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     states = pd.read_csv(job.input.states)
     exact = pd.read_csv(job.input.exact)
     style.finite_or_raise(states, ["outer_diameter_um", "pressure_mmHg", "mean_circ_stretch"], "fig3a_mean")

@@ -6,7 +6,7 @@ import pandas as pd
 from sphgag import jobs
 from sphgag.views import style, swelling
 
-with jobs.run(snakemake, name="fig4") as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     tips = pd.read_csv(job.input.tips)
     style.finite_or_raise(tips, ["tip_radial_stress_kPa", "top_circ_stress_kPa", "concentration_mEq_l"], "fig4")
     p = job.params

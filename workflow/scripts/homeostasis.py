@@ -5,7 +5,7 @@ from sphgag.engine.numerics import Numerics
 from sphgag.records import state
 from sphgag.studies import artery, protocols, wall
 
-with jobs.run(snakemake, name="homeostasis") as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     cfg = job.params.slice
     p, numerics, homeo = cfg["bilayer"], cfg["numerics"], cfg["homeostasis"]
     model = artery.bilayer_model(p, numerics, name=job.name)

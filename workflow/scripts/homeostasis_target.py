@@ -4,7 +4,7 @@ import pandas as pd
 
 from sphgag import jobs
 
-with jobs.run(snakemake, name="homeostasis_target") as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     summary = pd.read_csv(job.input.summary)
     target = float(job.params.target_pressure)
     out = summary[["model", "carried_pressure_mmHg", "semi_analytical_pressure_mmHg"]].assign(

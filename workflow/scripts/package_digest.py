@@ -9,6 +9,6 @@ from pathlib import Path
 
 from sphgag import jobs
 
-with jobs.run(snakemake, name="package_digest") as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     lines = [f"{hashlib.sha256(Path(path).read_bytes()).hexdigest()}  {path}" for path in job.input]
     Path(job.output[0]).write_text("\n".join(lines) + "\n")

@@ -10,8 +10,8 @@ with jobs.run(snakemake) as job:  # noqa: F821
     for case, g in table.groupby("case", sort=False):
         last = g.iloc[-1]
         job.log.info(
-            "[%s] case %s, %d particles: at %g mEq/l tip %.1f kPa, top %.1f kPa, J %.3g (end: %s)",
-            job.name, case, int(last.particles), last.concentration_mEq_l, last.tip_radial_stress_kPa,
-            last.top_circ_stress_kPa, last.pool_volume_change + 1.0, last.path_end,
-        )  # fmt: skip
+            "[%(run)s] case %(case)s, %(particles)d particles: at %(concentration_mEq_l)g mEq/l tip "
+            "%(tip_radial_stress_kPa).1f kPa, top %(top_circ_stress_kPa).1f kPa, J %(J).3g (end: %(path_end)s)",
+            dict(last, run=job.name, case=case, J=last.pool_volume_change + 1.0),
+        )
     job.record(dict(job.params), dict(max_residual=float(table.residual.max())))

@@ -5,7 +5,7 @@ import pandas as pd
 from sphgag import jobs
 from sphgag.studies import paper_settings
 
-with jobs.run(snakemake, name="paper_settings_table") as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     p = job.params
     table = paper_settings.ablation([pd.read_csv(f) for f in job.input.runs], p.concentrations, p.tolerance)
     table.to_csv(job.output.table, index=False)
@@ -13,5 +13,7 @@ with jobs.run(snakemake, name="paper_settings_table") as job:  # noqa: F821
     steps.to_csv(job.output.steps, index=False)
     top = max(p.concentrations)
     for r in paper_settings.ranked(table, top).itertuples():
-        job.log.info("[paper_settings] %s: median share %.2f of ours - authors' at %g mEq/l (|step| %.1f kPa)",
-                     r.setting, r.share, top, r.abs_step_kPa)  # fmt: skip
+        job.log.info(
+            f"[paper_settings] {r.setting}: median share {r.share:.2f} of ours - authors' at {top:g} mEq/l "
+            f"(|step| {r.abs_step_kPa:.1f} kPa)"
+        )

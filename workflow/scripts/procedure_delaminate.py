@@ -14,13 +14,13 @@ with jobs.run(snakemake) as job:  # noqa: F821
     sectors = [artery.pool_sector(s) for s in p.pools]
     timing, stage = p.procedure["timing"], p.procedure["damage"]
     t0 = time.perf_counter()
-    rows, saved = paper_procedure.delaminate(model, start.x, start.load, sectors, settings, p.gag, timing, stage,
-                                             w.factor, run)  # fmt: skip
+    procedure = (sectors, settings, p.gag, timing, stage, w.factor, run)
+    rows, saved = paper_procedure.delaminate(model, start.x, start.load, *procedure)
     seconds, step_time = time.perf_counter() - t0, timing["time_step"]
     state.save_series(job.output.states, [(r.x, r.load, r.info(step_time), None) for r in saved], dict(p))
     rows.assign(pool_set=w.poolset, sigma_cr_kPa=w.sigma, step_factor=w.factor).to_csv(job.output.table, index=False)
     steps = int(rows.step.iloc[-1]) if len(rows) else 0
-    job.log.info("[%s] %d steps in %.1f s (%.3g ms per step); end: %s", run, steps, seconds,
-                 1e3 * seconds / max(steps, 1), rows.end.iloc[-1] if len(rows) else "no step")  # fmt: skip
     summary = dict(steps=steps, seconds=seconds, ms_per_step=1e3 * seconds / max(steps, 1), particles=model.n)
+    end = rows.end.iloc[-1] if len(rows) else "no step"
+    job.log.info(f"[{run}] {steps} steps in {seconds:.1f} s ({summary['ms_per_step']:.3g} ms per step); end: {end}")
     job.record(dict(p), summary)

@@ -10,12 +10,26 @@ with jobs.run(snakemake) as job:  # noqa: F821
     saved = state.load(job.input.start, wall)
     start = solver.State(saved.load, saved.x, None, None)
     states = {
-        case: protocols.swell_pool(convergence.case_model(wall["dx"], wall["bilayer"], wall["numerics"], p.gag, entry,
-                                                          f"{run}_{case}"), start, wall["numerics"], p.settings)
+        case: protocols.swell_pool(
+            convergence.case_model(wall["dx"], wall["bilayer"], wall["numerics"], p.gag, entry, f"{run}_{case}"),
+            start,
+            wall["numerics"],
+            p.settings,
+        )
         for case, entry in p.cases.items()
-    }  # fmt: skip
-    table = convergence.measure(wall["dx"], wall["bilayer"], wall["numerics"], p.gag, p.cases, states, p.probe_length,
-                                job.w.model, run, tip_probe=p.tip_probe)  # fmt: skip
+    }
+    table = convergence.measure(
+        wall["dx"],
+        wall["bilayer"],
+        wall["numerics"],
+        p.gag,
+        p.cases,
+        states,
+        p.probe_length,
+        job.w.model,
+        run,
+        tip_probe=p.tip_probe,
+    )
     table.to_csv(job.output.table, index=False)
     job.log.info("[%s] %d particles; equilibrium paths of %s", run, int(table.particles.iloc[0]), ", ".join(p.cases))
     job.record(dict(p), dict(max_residual=float(table.residual.max())))

@@ -21,8 +21,8 @@ with jobs.run(snakemake) as job:  # noqa: F821
     table.assign(model=w.model, case=w.case, step_factor=w.factor, particles=model.n, end=end).to_csv(
         job.output.table, index=False
     )
-    job.log.info("[%s] %s: %d particles, %d steps in %.1f s (%.3g ms per step)", run, end, model.n, steps, seconds,
-                 1e3 * seconds / steps)  # fmt: skip
-    summary = dict(steps=steps, seconds=seconds, ms_per_step=1e3 * seconds / steps, particles=model.n,
-                   last_residual=records[-1].residual, end=end)  # fmt: skip
+    ms = 1e3 * seconds / steps
+    job.log.info(f"[{run}] {end}: {model.n} particles, {steps} steps in {seconds:.1f} s ({ms:.3g} ms per step)")
+    summary = dict(steps=steps, seconds=seconds, ms_per_step=ms, particles=model.n, end=end)
+    summary.update(last_residual=records[-1].residual)
     job.record(dict(p), summary)

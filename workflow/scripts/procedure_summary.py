@@ -5,7 +5,7 @@ import pandas as pd
 from sphgag import jobs
 from sphgag.studies import paper_procedure
 
-with jobs.run(snakemake, name="procedure_summary") as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     runs = pd.concat([pd.read_csv(f) for f in job.input.runs], ignore_index=True)
     runs.to_csv(job.output.runs, index=False)
     # no damage run where paper_procedure.pool_sets is empty

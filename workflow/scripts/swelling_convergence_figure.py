@@ -5,7 +5,7 @@ import pandas as pd
 from sphgag import jobs
 from sphgag.views import style, swelling
 
-with jobs.run(snakemake, name="swelling_convergence_figure") as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     table = pd.read_csv(job.input.table)
     table = table[table.stage == "converted"]  # the path (the states at a volume ratio are in results/swelling/gci.csv)
     style.finite_or_raise(table, ["tip_radial_stress_kPa", "pool_volume_change"], "swelling_convergence")

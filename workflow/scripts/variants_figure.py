@@ -5,7 +5,7 @@ import pandas as pd
 from sphgag import jobs
 from sphgag.views import style, variants
 
-with jobs.run(snakemake, name="variants_figure") as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     tables = {
         k: pd.concat([pd.read_csv(p) for p in job.input[k]], ignore_index=True)
         for k in ("swelling", "growth", "summary")

@@ -5,7 +5,7 @@ import pandas as pd
 from sphgag import jobs
 from sphgag.views import style, verification
 
-with jobs.run(snakemake, name="verification_circular_pool_figure") as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     table = pd.read_csv(job.input.table)
     reached = table[table.path_end == "complete"]  # a path that ended early has no numbers beyond it (drawn as such)
     style.finite_or_raise(reached, ["volume_error", "lining_error"], "verification_circular_pool")

@@ -5,7 +5,7 @@ import pandas as pd
 from sphgag import jobs
 from sphgag.views import style, verification
 
-with jobs.run(snakemake, name="verification_crack_figure") as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     table = pd.read_csv(job.input.table)
     style.finite_or_raise(table, ["opening_area_um2", "sneddon_um2", "griffith_kPa"], "verification_crack_figure")
     first = table.iloc[0]

@@ -5,7 +5,7 @@ import pandas as pd
 from sphgag import jobs
 from sphgag.views import style, verification
 
-with jobs.run(snakemake, name="verification_profiles_figure") as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     rings, table = pd.read_csv(job.input.rings), pd.read_csv(job.input.table)
     fig = verification.verification_profiles(rings, table, job.params.pressure)
     style.save(fig, [job.output.pdf, job.output.png], "Verification of the walls' transmural stress, sphgag")

@@ -5,7 +5,7 @@ import pandas as pd
 from sphgag import jobs
 from sphgag.studies import annulus
 
-with jobs.run(snakemake, name="verify_annulus") as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     p = job.params
     table = pd.concat([pd.read_csv(path) for path in job.input.tables], ignore_index=True)
     table.to_csv(job.output.table, index=False)
@@ -14,6 +14,7 @@ with jobs.run(snakemake, name="verify_annulus") as job:  # noqa: F821
     annulus.exact_curves(table, p.radius, p.matrix, p.gag).to_csv(job.output.exact, index=False)
     for r in orders.itertuples():
         job.log.info(
-            "%s B/A=%g at %.2f of the limit: %s %+.2f %% at dx = %g um, observed order %.2f (finer pair), %.2f",
-            r.pool_model, r.outer_ratio, r.fraction, r.quantity, 100 * r.error, r.dx_um, r.order_fine, r.order_coarse,
-        )  # fmt: skip
+            "%(pool_model)s B/A=%(outer_ratio)g at %(fraction).2f of the limit: %(quantity)s %(pct)+.2f %% at dx = "
+            "%(dx_um)g um, observed order %(order_fine).2f (finer pair), %(order_coarse).2f",
+            dict(r._asdict(), pct=100 * r.error),
+        )

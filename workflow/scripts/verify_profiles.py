@@ -5,7 +5,7 @@ import pandas as pd
 from sphgag import jobs
 from sphgag.studies import wall_profiles
 
-with jobs.run(snakemake, name="verify_profiles") as job:  # noqa: F821
+with jobs.run(snakemake) as job:  # noqa: F821
     rings = pd.concat([pd.read_csv(path) for path in job.input.tables], ignore_index=True)
     rings.to_csv(job.output.rings, index=False)
     table = wall_profiles.summary(rings)

@@ -52,24 +52,28 @@ def viscous_stress(F, F_old, dt, eta, out):
 
 
 @njit(cache=True, error_model="numpy")
-def _deformation_gradient_rows(x, pair_ptr, pair_j, pair_a, solo_ptr, solo_j, solo_a, owner, mirror, xe, FP, out):
-    """``F`` of every particle (eq. 2.9) as (N, 4) rows into ``out`` (the first pass of the force kernel)."""
+def _deformation_gradient_rows(x, pd, xe, FP, out):
+    """``F`` of every particle (eq. 2.9) as (N, 4) rows into ``out`` (the first pass of the force kernel; ``pd``: the
+    packed pair data, :attr:`sphgag.engine.forces.PairData.arrays`)."""
     n = x.shape[0]
-    forces.extend(x, owner, mirror, xe)
-    forces._deformation_gradients(xe, pair_ptr, pair_j, pair_a, solo_ptr, solo_j, solo_a, False, FP, n)
+    forces.extend(x, pd[11], pd[12], xe)
+    forces._deformation_gradients(xe, pd[0], pd[1], pd[3], pd[5], pd[6], pd[8], False, FP, n)
     for i in range(n):
         for k in range(4):
             out[i, k] = FP[i, k]
 
 
 @njit(cache=True, error_model="numpy")
-def _net_forces(x, pd, lz, cth, sth, props, extra, xe, fe, FP, f, hg_ptr, hg_idx, hg_val, X, inner, pressure, g):
-    """``f_int + f_ext`` at ``x`` into ``f``: elastic and eq. (2.14) forces, ``-K (x - X)`` of the energy hourglass
-    form (CSR ``hg_*``, empty under eq. 2.14) and the lumen pressure ``p lz dA/dx``; returns the smallest det F."""
-    dmin = forces.forces_and_stresses(
-        x, pd[0], pd[1], pd[2], pd[3], pd[4], pd[5], pd[6], pd[7], pd[8], pd[9], pd[10], pd[11], pd[12],
-        lz, cth, sth, props, extra, xe, fe, FP, f,
-    )  # fmt: skip
+def _net_forces(x, pd, material, extra, hg, lumen, work):
+    """``f_int + f_ext`` at ``x`` into ``f`` (of ``work = (xe, fe, FP, f, g)``): elastic and eq. (2.14) forces
+    (``material = (lz, cth, sth, props)``), ``-K (x - X)`` of the energy hourglass form (``hg = (CSR of K, X)``,
+    empty under eq. 2.14) and the lumen pressure ``p lz dA/dx`` (``lumen = (inner surface, p)``); returns the
+    smallest det F."""
+    lz = material[0]
+    hg_ptr, hg_idx, hg_val, X = hg
+    inner, pressure = lumen
+    xe, fe, FP, f, g = work
+    dmin = forces.forces_and_stresses(x, *pd, *material, extra, xe, fe, FP, f)
     if hg_ptr.shape[0] > 1:
         u, ff = (x - X).reshape(-1), f.reshape(-1)
         for row in range(hg_ptr.shape[0] - 1):
@@ -86,23 +90,23 @@ def _net_forces(x, pd, lz, cth, sth, props, extra, xe, fe, FP, f, hg_ptr, hg_idx
 
 
 @njit(cache=True, error_model="numpy")
-def leapfrog(
-    x, v, inv_m, held, held_x, pd, lz, cth, sth, props, hg_ptr, hg_idx, hg_val, X, inner, pressure,
-    dt, eta, damping, steps, F_old, extra, xe, fe, FP, f, g,
-):  # fmt: skip
+def leapfrog(x, v, inv_m, held, held_x, pd, material, hg, lumen, stepping, steps, F_old, extra, work):
     """``steps`` leapfrog steps (eq. 2.13) in place: ``v^(t+1/2) = v^(t-1/2) + dt f(x^t) / m``,
-    ``x^(t+1) = x^t + dt v^(t+1/2)``, the ``held`` particles at ``held_x``. With ``eta > 0`` the viscous stress of
+    ``x^(t+1) = x^t + dt v^(t+1/2)``, the ``held`` particles at ``held_x``; the forces of :func:`_net_forces` (``pd,
+    material, hg, lumen, work``), ``stepping = (dt, eta, damping)``. With ``eta > 0`` the viscous stress of
     :func:`viscous_stress` (``F_old``: the previous step's F rows, updated) is added to P; with ``damping`` the
     velocities are zeroed whenever the kinetic energy falls (kinetic damping). Returns ``(kinetic energy
     1/2 sum m v^2 of the last half step, smallest det F, steps done)``; it stops early at an inversion or a
     non-finite force."""
     n = x.shape[0]
+    dt, eta, damping = stepping
+    xe, FP, f = work[0], work[2], work[3]
     kinetic_prev = 0.0
     kinetic = 0.0
     dmin = np.inf
     for step in range(steps):
         if eta > 0.0:
-            _deformation_gradient_rows(x, pd[0], pd[1], pd[3], pd[5], pd[6], pd[8], pd[11], pd[12], xe, FP, extra)
+            _deformation_gradient_rows(x, pd, xe, FP, extra)
             for i in range(n):
                 for k in range(4):
                     F_new = extra[i, k]
@@ -110,8 +114,7 @@ def leapfrog(
                     F_old[i, k] = F_new
             # extra holds F^(t-1) and F_old holds F^t: P_visc from them, into extra
             viscous_stress(F_old, extra, dt, eta, extra)
-        dmin = _net_forces(x, pd, lz, cth, sth, props, extra, xe, fe, FP, f, hg_ptr, hg_idx, hg_val, X, inner,
-                           pressure, g)  # fmt: skip
+        dmin = _net_forces(x, pd, material, extra, hg, lumen, work)
         if not dmin > 0.0:
             return kinetic, dmin, step
         kinetic = 0.0
@@ -171,21 +174,21 @@ def advance(model: Model, motion: Motion, load: Load, steps: int, stepping: Step
     K = model.hourglass_matrix(load)
     hg = (np.zeros(1, np.int32), np.zeros(0, np.int32), np.zeros(0)) if K is None else (K.indptr, K.indices, K.data)
     held, held_x = model.constraints(load)
-    n = model.n
+    n, pd = model.n, pairs.arrays
     if motion.F_old is None:
         motion.F_old = np.empty((n, 4))
-        _deformation_gradient_rows(motion.x, pairs.pair_ptr, pairs.pair_j, pairs.pair_a, pairs.solo_ptr,
-                                   pairs.solo_j, pairs.solo_a, pairs.ghost_owner, pairs.ghost_mirror, model._xe,
-                                   np.empty((n, 12)), motion.F_old)  # fmt: skip
-    pd = pairs.arrays
+        _deformation_gradient_rows(motion.x, pd, model._xe, np.empty((n, 12)), motion.F_old)
     inner = model.layout.inner_surface
     extra = np.zeros((n, 4)) if stepping.eta > 0.0 else forces.NO_EXTRA_STRESS
+    fixed = (np.asarray(held, np.int64), np.ascontiguousarray(held_x, dtype=float).reshape(-1, 2))
+    inv_m = 1.0 / (stepping.density * model.layout.volume)
+    material = (load.axial_stretch, model.cth, model.sth, props)
+    loads = (material, (*hg, model.layout.X), (inner, load.pressure_kPa or 0.0))
+    work = (model._xe, model._fe, np.empty((n, 12)), np.empty((n, 2)), np.empty((inner.size, 2)))
+    steps_of = (stepping.dt, stepping.eta, stepping.damping)
     kinetic, dmin, done = leapfrog(
-        motion.x, motion.v, 1.0 / (stepping.density * model.layout.volume), np.asarray(held, np.int64),
-        np.ascontiguousarray(held_x, dtype=float).reshape(-1, 2), pd, load.axial_stretch, model.cth, model.sth, props,
-        *hg, model.layout.X, inner, load.pressure_kPa or 0.0, stepping.dt, stepping.eta, stepping.damping, steps,
-        motion.F_old, extra, model._xe, model._fe, np.empty((n, 12)), np.empty((n, 2)), np.empty((inner.size, 2)),
-    )  # fmt: skip
+        motion.x, motion.v, inv_m, *fixed, pd, *loads, steps_of, steps, motion.F_old, extra, work
+    )
     motion.step += done
     if done < steps:
         what = "particle inversion" if not dmin > 0.0 else "non-finite velocities"

@@ -159,11 +159,11 @@ class Job:
 
 @contextmanager
 def run(sm, name: str | None = None):
-    """Enter the job of the Snakemake object ``sm``: its rule's threads, its log and its name (its kind's,
-    :func:`kind`, unless ``name`` is given, e.g. a rule that draws one figure). Yields the :class:`Job`."""
+    """Enter the job of the Snakemake object ``sm``: its rule's threads, its log and its name: ``name`` if given, else
+    its kind's (:func:`kind`), else, for a rule with no wildcards and no kind, the rule's. Yields the :class:`Job`."""
     started = time.time()
     threads.use(sm.threads)
-    name = name or kind(sm.rule).name(sm.wildcards)
+    name = name or (KINDS[sm.rule].name(sm.wildcards) if sm.rule in KINDS else sm.rule)
     with runlog.run(name, sm.log[0]) as log:
         yield Job(sm, name, typed(sm.wildcards), log, started)
 

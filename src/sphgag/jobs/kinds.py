@@ -1,7 +1,7 @@
 """The kinds of job of the pipeline, by rule (:class:`sphgag.jobs.Kind`): each rule's run key, from which its
 outputs, log, benchmark, provenance record and run name follow. The rules read them (``JOBS.<rule>``); the scripts
 find theirs by their rule's name (:func:`sphgag.jobs.run`). A rule with no wildcards has no kind: its files are
-named once in its rule, and its script names its run (``jobs.run(snakemake, name=...)``)."""
+named once in its rule, and its run is named after it."""
 
 from __future__ import annotations
 

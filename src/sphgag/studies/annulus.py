@@ -207,10 +207,17 @@ def annulus_study(va: dict, matrix: dict, gag: dict, numerics, pool_model: str, 
                         log.info(
                             "[%s B/A=%g] %.2f of the limit (%.2f kPa): volume ratio %.3f (exact %.3f, %+.2f %%), "
                             "hoop at the hole %+.2f %%, GAG outside the lining by %.2f um, residual %.1e",
-                            model.name, ratio, f, p, row["volume_ratio"], row["volume_ratio_exact"],
-                            100 * row["volume_error"], 100 * row["lining_hoop_error"], row["ring_crossing_um"],
+                            model.name,
+                            ratio,
+                            f,
+                            p,
+                            row["volume_ratio"],
+                            row["volume_ratio_exact"],
+                            100 * row["volume_error"],
+                            100 * row["lining_hoop_error"],
+                            row["ring_crossing_um"],
                             row["residual"],
-                        )  # fmt: skip
+                        )
                 rows.append(row)
             if end != "complete" or not pressures:
                 continue

@@ -688,7 +688,7 @@ def p1_magnitudes(e: Evidence) -> list[Claim]:
     for path, g in _by_path(_read(e, "4", "tip_radial_stress_kPa")):
         v = g.value.to_numpy(dtype=float)
         margin = float(min(v.min() - 50.0, 150.0 - v.max()))
-        out.append(Claim(
+        claim = Claim(
             "P1",
             p1_magnitudes.__doc__.splitlines()[0],
             '"typically exceeding approximately 50 kPa" above 100 mEq/l; about 50-150 kPa at 150 mEq/l (figure 4)',
@@ -698,7 +698,8 @@ def p1_magnitudes(e: Evidence) -> list[Claim]:
             "temperature (paper_procedure)",
             margin=margin,
             path=path,
-        ))  # fmt: skip
+        )
+        out.append(claim)
     return out
 
 
@@ -711,7 +712,7 @@ def p2_sawtooth(e: Evidence) -> list[Claim]:
     out = []
     for path, g in _by_path(_damage_rows(e, "teeth")):
         teeth = ", ".join(f"{r.sigma_cr_kPa:g} kPa {r.value:.0f} teeth" for r in g.itertuples())
-        out.append(Claim(
+        claim = Claim(
             "P2",
             p2_sawtooth.__doc__.splitlines()[0],
             "figure 5b (C14)",
@@ -720,7 +721,8 @@ def p2_sawtooth(e: Evidence) -> list[Claim]:
             "at least two ruptures, each followed by a drop of the tip stress by > 10 % of sigma_cr before the next, "
             "in every run of figure 5's pool",
             path=path,
-        ))  # fmt: skip
+        )
+        out.append(claim)
     return out
 
 
@@ -731,7 +733,7 @@ def p3_rate_ratio(e: Evidence) -> list[Claim]:
         lo, hi = g.iloc[0], g.iloc[-1]
         ratio = lo.value / hi.value if hi.value > 0 else np.inf
         rates = ", ".join(f"{r.sigma_cr_kPa:g} kPa {r.value:.3g} um" for r in g.itertuples())
-        out.append(Claim(
+        claim = Claim(
             "P3",
             p3_rate_ratio.__doc__.splitlines()[0],
             '"increases from sigma_cr = 30 kPa to 60 kPa reduce the rate of GAG propagation by more than two-fold" '
@@ -742,7 +744,8 @@ def p3_rate_ratio(e: Evidence) -> list[Claim]:
             "over that at the highest exceeds 2",
             margin=float(ratio - 2.0) if len(g) > 1 else np.nan,
             path=path,
-        ))  # fmt: skip
+        )
+        out.append(claim)
     return out
 
 
@@ -762,7 +765,7 @@ def p4_exterior_faster(e: Evidence) -> list[Claim]:
             f"pseudo-time {at.pseudo_time:.0f} (residual {at.residual:.2g})"
             for p, s, at in found
         )
-        out.append(Claim(
+        claim = Claim(
             "P4",
             p4_exterior_faster.__doc__.splitlines()[0],
             '"the rate of the exterior growth is faster" (figure 6; C16)',
@@ -771,7 +774,8 @@ def p4_exterior_faster(e: Evidence) -> list[Claim]:
             "more exterior than interior converted particles where the interior side stops growing (the pools merge, "
             "as C16 reads it), in every pool-pair run",
             path=f"explicit x{factor:g}",
-        ))  # fmt: skip
+        )
+        out.append(claim)
     return out
 
 
@@ -819,8 +823,11 @@ def p5_authors_settings(e: Evidence) -> Claim:
         "ranked by the median share of the difference ours - authors' that their step makes (both directions, cases "
         "and walls of the ablation)"
     )
-    bare = Claim("P5", p5_authors_settings.__doc__.splitlines()[0], '"typically exceeding approximately 50 kPa" above '
-                 "100 mEq/l; about 50-150 kPa at 150 mEq/l (figure 4, as P1 reads it)", "", "", criterion)  # fmt: skip
+    paper = (
+        '"typically exceeding approximately 50 kPa" above 100 mEq/l; about 50-150 kPa at 150 mEq/l '
+        "(figure 4, as P1 reads it)"
+    )
+    bare = Claim("P5", p5_authors_settings.__doc__.splitlines()[0], paper, "", "", criterion)
     if e.paper_settings is None:
         return e.not_run(bare, "paper_settings")
     t = e.paper_settings
@@ -828,8 +835,8 @@ def p5_authors_settings(e: Evidence) -> Claim:
     script = at[(at.setting == paper_settings.NONE) & (at.direction == "script")]
     ours = at[(at.setting == paper_settings.NONE) & (at.direction == "ours")]
     if not len(script):
-        return replace(bare, our_value=f"n/a: no state of the authors' configuration at {P5_CONCENTRATION:g} mEq/l",
-                       holds="n/a")  # fmt: skip
+        missing = f"n/a: no state of the authors' configuration at {P5_CONCENTRATION:g} mEq/l"
+        return replace(bare, our_value=missing, holds="n/a")
     v = script.tip_radial_stress_kPa.to_numpy(dtype=float)
     missing = int(np.isnan(v).sum())
     margin = float(min(np.nanmin(v) - P5_RANGE[0], P5_RANGE[1] - np.nanmax(v))) if missing < len(v) else np.nan

@@ -81,8 +81,12 @@ def series(states: dict[str, list[protocols.PoolState]], run: str) -> list:
         held = ", ".join(f"{s.concentration:.4g}" for s in ss if s.stage == "at volume") or "none"
         log.info(
             "[%s] case %s: path up to %g mEq/l (end: %s); concentrations at the volume ratios: %s",
-            run, case, path[-1].concentration, ss[-1].path_end, held,
-        )  # fmt: skip
+            run,
+            case,
+            path[-1].concentration,
+            ss[-1].path_end,
+            held,
+        )
     return out
 
 
@@ -161,9 +165,15 @@ def measure_saved(
         last = g.iloc[-1]
         log.info(
             "[%s] case %s, %d particles: at %g mEq/l tip %.1f kPa (peak %.1f), top %.1f kPa, pool volume change %+.3f",
-            name, case, int(last.particles), last.concentration_mEq_l, last.tip_radial_stress_kPa,
-            last.tip_peak_radial_stress_kPa, last.top_circ_stress_kPa, last.pool_volume_change,
-        )  # fmt: skip
+            name,
+            case,
+            int(last.particles),
+            last.concentration_mEq_l,
+            last.tip_radial_stress_kPa,
+            last.tip_peak_radial_stress_kPa,
+            last.top_circ_stress_kPa,
+            last.pool_volume_change,
+        )
     return table
 
 

@@ -194,8 +194,14 @@ def ramp(
             out.append(_record(model, motion, load, name, kinetic))
             log.info(
                 "[%s] %s: step %d of %d, c = %.4g mEq/l, residual %.3g, kinetic energy %.3g",
-                run, name, done, until, out[-1].concentration, out[-1].residual, kinetic,
-            )  # fmt: skip
+                run,
+                name,
+                done,
+                until,
+                out[-1].concentration,
+                out[-1].residual,
+                kinetic,
+            )
     return out
 
 
@@ -283,8 +289,20 @@ def summary(equilibrium: pd.DataFrame, swelling: pd.DataFrame, damage: pd.DataFr
     def add(figure, model, pool, sigma, path, factor, values: dict, residual, end=""):
         for quantity, value in values.items():
             res = residual[quantity] if isinstance(residual, dict) else residual
-            rows.append(dict(figure=figure, model=model, pool=pool, sigma_cr_kPa=sigma, path=path, step_factor=factor,
-                             quantity=quantity, value=value, residual=res, end=end))  # fmt: skip
+            rows.append(
+                dict(
+                    figure=figure,
+                    model=model,
+                    pool=pool,
+                    sigma_cr_kPa=sigma,
+                    path=path,
+                    step_factor=factor,
+                    quantity=quantity,
+                    value=value,
+                    residual=res,
+                    end=end,
+                )
+            )
 
     eq = equilibrium[(equilibrium.stage == "converted") & np.isclose(equilibrium.concentration_mEq_l, concentration)]
     for _, r in eq.iterrows():
@@ -300,8 +318,17 @@ def summary(equilibrium: pd.DataFrame, swelling: pd.DataFrame, damage: pd.DataFr
     for (pool_set, sigma, factor), g in damage.groupby(["pool_set", "sigma_cr_kPa", "step_factor"], sort=False):
         found = growth(g.reset_index(drop=True), sigma)
         residual = {k: found[v] for k, v in GROWTH.items()}
-        add("5" if np.isnan(found["interior_particles"]) else "6", "passive", pool_set, sigma, "explicit", factor,
-            {k: found[k] for k in GROWTH}, residual, found["end"])  # fmt: skip
+        add(
+            "5" if np.isnan(found["interior_particles"]) else "6",
+            "passive",
+            pool_set,
+            sigma,
+            "explicit",
+            factor,
+            {k: found[k] for k in GROWTH},
+            residual,
+            found["end"],
+        )
     return pd.DataFrame(rows)
 
 
@@ -329,8 +356,9 @@ class Delamination:
         material = artery.seeding(model.props, model.layout, sectors, gag).settled()
         n = model.n
         load = protocols.swelling_load(base_load, 1.0, 0.0)
-        return cls(model, Front.of(model, sectors, settings), settings, gag, material, load, np.zeros(n),
-                   np.full(n, -1))  # fmt: skip
+        return cls(
+            model, Front.of(model, sectors, settings), settings, gag, material, load, np.zeros(n), np.full(n, -1)
+        )
 
     @property
     def hist(self):
@@ -413,20 +441,36 @@ def delaminate(
             )
         tip, ruptured = run_.update(ev, motion.step, d, factor)
         total_converted, interior, exterior = run_.front.converted(run_.hist)
-        rows.append(dict(step=motion.step, pseudo_time=motion.step * p.time_step,
-                         pool_concentration_mEq_l=float(run_.concentration[seeded].mean()),
-                         tip_radial_stress_kPa=tip, ruptured=ruptured, converted_particles=total_converted,
-                         interior_particles=interior, exterior_particles=exterior,
-                         delaminated_length_um=run_.front.delaminated_length(run_.hist), relaxing=relaxing,
-                         residual=residual, kinetic_energy=kinetic))  # fmt: skip
+        rows.append(
+            dict(
+                step=motion.step,
+                pseudo_time=motion.step * p.time_step,
+                pool_concentration_mEq_l=float(run_.concentration[seeded].mean()),
+                tip_radial_stress_kPa=tip,
+                ruptured=ruptured,
+                converted_particles=total_converted,
+                interior_particles=interior,
+                exterior_particles=exterior,
+                delaminated_length_um=run_.front.delaminated_length(run_.hist),
+                relaxing=relaxing,
+                residual=residual,
+                kinetic_energy=kinetic,
+            )
+        )
         capped = float(run_.front.extent_deg(run_.hist).max()) >= settings.max_extent_deg
         if motion.step in save_at or capped:
             c = rows[-1]["pool_concentration_mEq_l"]
             saved.append(Record("damage", motion.step, c, motion.x.copy(), run_.load, residual, kinetic))
             log.info(
                 "[%s] damage: step %d of %d, pool c = %.4g mEq/l, %d converted, residual %.3g, kinetic energy %.3g",
-                run, motion.step, total, c, total_converted, residual, kinetic,
-            )  # fmt: skip
+                run,
+                motion.step,
+                total,
+                c,
+                total_converted,
+                residual,
+                kinetic,
+            )
         if capped:  # the quasi-static runs' growth limit ends the explicit runs too
             end = f"a pool reached the runs' cap, delamination.max_extent_deg = {settings.max_extent_deg:g} deg"
             log.info("[%s] the explicit run ends: %s", run, end)
@@ -442,12 +486,24 @@ def growth(rows: pd.DataFrame, sigma_cr: float) -> dict:
     (two pools), and the residuals: at the first rupture, the median over the run and the largest."""
     rup = rows.index[rows.ruptured > 0]
     last = rows.iloc[-1]
-    out = dict(end=last.end, final_pseudo_time=last.pseudo_time, final_length_um=last.delaminated_length_um,
-               interior_particles=last.interior_particles, exterior_particles=last.exterior_particles,
-               median_residual=float(rows.residual.median()), max_residual=float(rows.residual.max()))  # fmt: skip
+    out = dict(
+        end=last.end,
+        final_pseudo_time=last.pseudo_time,
+        final_length_um=last.delaminated_length_um,
+        interior_particles=last.interior_particles,
+        exterior_particles=last.exterior_particles,
+        median_residual=float(rows.residual.median()),
+        max_residual=float(rows.residual.max()),
+    )
     if not len(rup):
-        return dict(out, onset_time=np.nan, onset_concentration_mEq_l=np.nan, onset_residual=np.nan,
-                    growth_rate_um_per_time=0.0, teeth=0)  # fmt: skip
+        return dict(
+            out,
+            onset_time=np.nan,
+            onset_concentration_mEq_l=np.nan,
+            onset_residual=np.nan,
+            growth_rate_um_per_time=0.0,
+            teeth=0,
+        )
     first = rows.loc[rup[0]]
     tip = rows.tip_radial_stress_kPa.to_numpy()
     teeth = 0
@@ -456,5 +512,11 @@ def growth(rows: pd.DataFrame, sigma_cr: float) -> dict:
         teeth += bool(after.size and np.nanmin(after) < tip[a] - 0.1 * sigma_cr)
     span = last.pseudo_time - first.pseudo_time
     rate = last.delaminated_length_um / span if span > 0 else np.nan
-    return dict(out, onset_time=first.pseudo_time, onset_concentration_mEq_l=first.pool_concentration_mEq_l,
-                onset_residual=first.residual, growth_rate_um_per_time=rate, teeth=teeth)  # fmt: skip
+    return dict(
+        out,
+        onset_time=first.pseudo_time,
+        onset_concentration_mEq_l=first.pool_concentration_mEq_l,
+        onset_residual=first.residual,
+        growth_rate_um_per_time=rate,
+        teeth=teeth,
+    )

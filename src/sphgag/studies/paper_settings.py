@@ -201,14 +201,31 @@ def run(params: Mapping, active: bool, name: str) -> pd.DataFrame:
     the tips of ``tip_probe``)."""
     p = params
     states = convergence.swell_cases(
-        p["dx"], p["bilayer"], p["numerics"], p["homeostasis"], p["swelling"], p["gag"], p["cases"],
-        p["pressure_mmHg"], p["calibration"], active, name,
-    )  # fmt: skip
+        p["dx"],
+        p["bilayer"],
+        p["numerics"],
+        p["homeostasis"],
+        p["swelling"],
+        p["gag"],
+        p["cases"],
+        p["pressure_mmHg"],
+        p["calibration"],
+        active,
+        name,
+    )
     wall = "active" if active else "passive"
     return convergence.measure(
-        p["dx"], p["bilayer"], p["numerics"], p["gag"], p["cases"], states, p["probe_length"], wall, name,
+        p["dx"],
+        p["bilayer"],
+        p["numerics"],
+        p["gag"],
+        p["cases"],
+        states,
+        p["probe_length"],
+        wall,
+        name,
         tip_probe=p["tip_probe"],
-    ).assign(charge_law=p["gag"]["charge_law"])  # fmt: skip
+    ).assign(charge_law=p["gag"]["charge_law"])
 
 
 def ablation(tables: list[pd.DataFrame], concentrations, tolerance: float) -> pd.DataFrame:
@@ -224,11 +241,22 @@ def ablation(tables: list[pd.DataFrame], concentrations, tolerance: float) -> pd
             direction = base if setting == NONE else DIRECTIONS[base]
             for c in concentrations:
                 at = path[np.isclose(path.concentration_mEq_l, c)]
-                row = dict(setting=setting, direction=direction, case=case, model=model,
-                           charge_law=last.charge_law, concentration_mEq_l=float(c),
-                           particles=int(last.particles))  # fmt: skip
-                values = dict(tip_radial_stress_kPa=np.nan, top_hoop_stress_kPa=np.nan, volume_ratio=np.nan,
-                              residual=np.nan, pressure_mmHg=np.nan)  # fmt: skip
+                row = dict(
+                    setting=setting,
+                    direction=direction,
+                    case=case,
+                    model=model,
+                    charge_law=last.charge_law,
+                    concentration_mEq_l=float(c),
+                    particles=int(last.particles),
+                )
+                values = dict(
+                    tip_radial_stress_kPa=np.nan,
+                    top_hoop_stress_kPa=np.nan,
+                    volume_ratio=np.nan,
+                    residual=np.nan,
+                    pressure_mmHg=np.nan,
+                )
                 if not len(at):
                     reason = f"the path ends below it: {last.path_end}" + (
                         f", {last.end_reason}" if isinstance(last.end_reason, str) and last.end_reason else ""
@@ -239,10 +267,17 @@ def ablation(tables: list[pd.DataFrame], concentrations, tolerance: float) -> pd
                 if not s.residual <= tolerance:
                     rows.append(dict(row, **values, equilibrium=f"not converged (residual {s.residual:.2g})"))
                     continue
-                rows.append(dict(row, tip_radial_stress_kPa=s.tip_radial_stress_kPa,
-                                 top_hoop_stress_kPa=s.top_circ_stress_kPa, volume_ratio=s.pool_volume_change + 1.0,
-                                 residual=s.residual, pressure_mmHg=s.pressure_mmHg,
-                                 equilibrium="converged"))  # fmt: skip
+                rows.append(
+                    dict(
+                        row,
+                        tip_radial_stress_kPa=s.tip_radial_stress_kPa,
+                        top_hoop_stress_kPa=s.top_circ_stress_kPa,
+                        volume_ratio=s.pool_volume_change + 1.0,
+                        residual=s.residual,
+                        pressure_mmHg=s.pressure_mmHg,
+                        equilibrium="converged",
+                    )
+                )
     return pd.DataFrame(rows, columns=COLUMNS)
 
 
@@ -261,10 +296,20 @@ def steps(table: pd.DataFrame, concentration: float, quantity: str = "tip_radial
             for b, direction in DIRECTIONS.items():
                 switched_value = value.get((setting, direction, model, case), np.nan)
                 step = switched_value - base[b] if b == "script" else base[b] - switched_value
-                rows.append(dict(setting=setting, direction=direction, model=model, case=case,
-                                 concentration_mEq_l=float(concentration), quantity=quantity, step=step,
-                                 share=step / whole if whole else np.nan, script=base["script"],
-                                 ours=base["ours"]))  # fmt: skip
+                rows.append(
+                    dict(
+                        setting=setting,
+                        direction=direction,
+                        model=model,
+                        case=case,
+                        concentration_mEq_l=float(concentration),
+                        quantity=quantity,
+                        step=step,
+                        share=step / whole if whole else np.nan,
+                        script=base["script"],
+                        ours=base["ours"],
+                    )
+                )
     return pd.DataFrame(rows)
 
 

@@ -934,8 +934,14 @@ def run_table(
     log.info(
         "[%s] %d pool particles; tip radial stress %.1f kPa intact, %.1f converted, %.1f at %g mEq/l; "
         "top hoop stress %.1f -> %.1f -> %.1f kPa",
-        run, int(last.pool_particles), table.tip_radial_stress_kPa.iloc[0], first.tip_radial_stress_kPa,
-        last.tip_radial_stress_kPa, last.concentration_mEq_l, table.top_circ_stress_kPa.iloc[0],
-        first.top_circ_stress_kPa, last.top_circ_stress_kPa,
-    )  # fmt: skip
+        run,
+        int(last.pool_particles),
+        table.tip_radial_stress_kPa.iloc[0],
+        first.tip_radial_stress_kPa,
+        last.tip_radial_stress_kPa,
+        last.concentration_mEq_l,
+        table.top_circ_stress_kPa.iloc[0],
+        first.top_circ_stress_kPa,
+        last.top_circ_stress_kPa,
+    )
     return table

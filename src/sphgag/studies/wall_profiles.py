@@ -214,7 +214,15 @@ def log_summary(table: pd.DataFrame) -> None:
         log.info(
             "%s %g mmHg, %s load, %s reading, dx = %g um: inner %+.1f, outer %+.1f, interior max %.1f %% of P; hoop "
             "rms %.2f %% (material point %.2f %%); residual %.1e",
-            r.wall, r.pressure_mmHg, r.lumen_load, r.recovery, r.dx_um, r.material_inner_radial_pct,
-            r.material_outer_radial_pct, r.material_interior_radial_max_pct, r.circ_rms_pct,
-            r.material_circ_rms_pct, r.residual,
-        )  # fmt: skip
+            r.wall,
+            r.pressure_mmHg,
+            r.lumen_load,
+            r.recovery,
+            r.dx_um,
+            r.material_inner_radial_pct,
+            r.material_outer_radial_pct,
+            r.material_interior_radial_max_pct,
+            r.circ_rms_pct,
+            r.material_circ_rms_pct,
+            r.residual,
+        )

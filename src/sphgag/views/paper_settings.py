@@ -20,8 +20,12 @@ from . import style
 WALL_COLOURS = {"passive": "#3b6fb6", "active": "#d1352b"}
 DIRECTION_MARKERS = {"from_script": ("o", "from the authors' configuration"), "from_ours": ("s", "from ours")}
 #: the small vertical offset of each (wall, direction) so that no two markers of a row hide each other
-OFFSETS = {("passive", "from_script"): -0.24, ("passive", "from_ours"): -0.08,
-           ("active", "from_script"): 0.08, ("active", "from_ours"): 0.24}  # fmt: skip
+OFFSETS = {
+    ("passive", "from_script"): -0.24,
+    ("passive", "from_ours"): -0.08,
+    ("active", "from_script"): 0.08,
+    ("active", "from_ours"): 0.24,
+}
 
 
 def figure(steps: pd.DataFrame):
@@ -32,17 +36,30 @@ def figure(steps: pd.DataFrame):
     cases = list(dict.fromkeys(at.case))
     settings = list(dict.fromkeys(at.setting))
     reach = 2.0 * max(float(np.nanmax(np.abs(at.step))) if at.step.notna().any() else 10.0, 10.0)  # every marker in
-    fig, axes = plt.subplots(1, len(cases), figsize=(4.6 * len(cases) + 1.6, 0.45 * len(settings) + 2.2),
-                             sharey=True, squeeze=False, layout="constrained")  # fmt: skip
+    fig, axes = plt.subplots(
+        1,
+        len(cases),
+        figsize=(4.6 * len(cases) + 1.6, 0.45 * len(settings) + 2.2),
+        sharey=True,
+        squeeze=False,
+        layout="constrained",
+    )
     for ax, case in zip(axes[0], cases):
         g = at[at.case == case]
         titles = []
         for (model, direction), rows in g.groupby(["model", "direction"], sort=False):
             y = np.array([settings.index(s) for s in rows.setting]) + OFFSETS.get((model, direction), 0.0)
             marker, label = DIRECTION_MARKERS[direction]
-            ax.scatter(rows.step, y, marker=marker, s=28, color=WALL_COLOURS.get(model, "k"),
-                       facecolor="none" if direction == "from_ours" else WALL_COLOURS.get(model, "k"),
-                       label=f"{model}, {label}", zorder=3)  # fmt: skip
+            ax.scatter(
+                rows.step,
+                y,
+                marker=marker,
+                s=28,
+                color=WALL_COLOURS.get(model, "k"),
+                facecolor="none" if direction == "from_ours" else WALL_COLOURS.get(model, "k"),
+                label=f"{model}, {label}",
+                zorder=3,
+            )
         for model, rows in g.groupby("model", sort=False):
             r = rows.iloc[0]
             titles.append(f"{model}: {r.script:.0f} (authors') -> {r.ours:.0f} kPa (ours)")

@@ -64,8 +64,16 @@ def _damage(fig, groups, colours, tolerance):
                 ax.plot(r.pseudo_time / factor, r[column], color=colours[factor], lw=0.8, label=f"explicit x{factor:g}")
             if column == "tip_radial_stress_kPa":
                 ax.axhline(sigma, color="k", lw=0.8, ls="--", label="sigma_cr")
-            _dress(axes, row, col, column, label, f"{pool_set}\nsigma_cr = {sigma:g} kPa", "pseudo-time / step factor",
-                   tolerance)  # fmt: skip
+            _dress(
+                axes,
+                row,
+                col,
+                column,
+                label,
+                f"{pool_set}\nsigma_cr = {sigma:g} kPa",
+                "pseudo-time / step factor",
+                tolerance,
+            )
     axes[0, -1].legend(fontsize=6, frameon=False, loc="upper left", bbox_to_anchor=(1.0, 1.0))
 
 
@@ -95,12 +103,25 @@ def _swelling(fig, cases, equilibrium, runs, colours, tolerance, concentration):
             for wall, line in WALL_LINES.items():
                 g = eq[(eq.case == case) & (eq.model == wall)]
                 if len(g):
-                    ax.plot(g.concentration_mEq_l, g[column], "k" + line, marker="o", ms=3, lw=1.2,
-                            label=f"equilibrium, {wall}")  # fmt: skip
+                    ax.plot(
+                        g.concentration_mEq_l,
+                        g[column],
+                        "k" + line,
+                        marker="o",
+                        ms=3,
+                        lw=1.2,
+                        label=f"equilibrium, {wall}",
+                    )
                 for factor in colours:
                     r = ramp[(ramp.case == case) & (ramp.model == wall) & (ramp.step_factor == factor)]
                     if len(r):
-                        ax.plot(r.concentration_mEq_l, r[column], line, color=colours[factor], lw=1.0,
-                                label=f"explicit x{factor:g}, {wall}")  # fmt: skip
+                        ax.plot(
+                            r.concentration_mEq_l,
+                            r[column],
+                            line,
+                            color=colours[factor],
+                            lw=1.0,
+                            label=f"explicit x{factor:g}, {wall}",
+                        )
             _dress(axes, row, col, column, label, f"case {case}", style.GAG_CONCENTRATION, tolerance)
     axes[-1, -1].legend(fontsize=6, frameon=False, loc="upper left", bbox_to_anchor=(1.0, 1.0))

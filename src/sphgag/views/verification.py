@@ -283,11 +283,15 @@ def verification_annulus(table: pd.DataFrame, orders: pd.DataFrame, exact: pd.Da
             ylim=(0.0, 1.15),
         )
         ax.text(
-            0.03, 0.97,
+            0.03,
+            0.97,
             f"at {beyond.fraction.max():.2f} x the limit: {states} state{'' if states == 1 else 's'}\n"
-            + "; ".join(sorted(set(beyond.beyond_end.astype(str)))) + " (<: the largest Pi held)",
-            transform=ax.transAxes, fontsize=6, va="top",
-        )  # fmt: skip
+            + "; ".join(sorted(set(beyond.beyond_end.astype(str))))
+            + " (<: the largest Pi held)",
+            transform=ax.transAxes,
+            fontsize=6,
+            va="top",
+        )
     axes[0][0].legend(frameon=False, fontsize=6, loc="lower right")
     markers = dict(zip(sorted(orders.fraction.unique()), "os^vDP"))
     styles = {"hole": "--", "particles": "-"}
@@ -302,8 +306,16 @@ def verification_annulus(table: pd.DataFrame, orders: pd.DataFrame, exact: pd.Da
             o = orders[(orders.pool_model == model) & (orders.outer_ratio == ratio) & (orders.fraction == f)]
             o = o.set_index("quantity").order_fine
             label = f"{model}, B/A {ratio:g}, {f:g} of the limit: order " + " / ".join(f"{v:.2f}" for v in o)
-            ax.loglog(g.dx_um, np.maximum(g[error].abs(), 1e-5), styles.get(model, "-"), marker=markers[f], ms=3,
-                      color=hues[ratio], lw=0.8, label=label)  # fmt: skip
+            ax.loglog(
+                g.dx_um,
+                np.maximum(g[error].abs(), 1e-5),
+                styles.get(model, "-"),
+                marker=markers[f],
+                ms=3,
+                color=hues[ratio],
+                lw=0.8,
+                label=label,
+            )
         ax.axhline(0.01, color="0.6", lw=0.6, ls="--")
         ax.set(xlabel="dx (um)", ylabel="|relative error|", title=title)
         ax.set_xticks(spacings, [f"{d:g}" for d in spacings])
@@ -321,8 +333,16 @@ def verification_annulus(table: pd.DataFrame, orders: pd.DataFrame, exact: pd.Da
     crossing = below[below.pool_model.isin([annulus.POOL_MODELS.paper.name])]  # the paper's particles only
     for (ratio, dx), g in crossing.groupby(["outer_ratio", "dx_um"]):
         style = "-" if ratio == ratios[0] else "--"
-        ax.plot(g.fraction, g.ring_crossing_um, style, marker="o", ms=3, lw=0.8, color=colours[dx],
-                label=f"B/A {ratio:g}, dx {dx:g}")  # fmt: skip
+        ax.plot(
+            g.fraction,
+            g.ring_crossing_um,
+            style,
+            marker="o",
+            ms=3,
+            lw=0.8,
+            color=colours[dx],
+            label=f"B/A {ratio:g}, dx {dx:g}",
+        )
     ax.axhline(0.0, color="0.6", lw=0.6)
     ax.set(xlabel="Pi / largest exact Pi", ylabel="GAG beyond the lining (um)", title="(c) order of the rings")
     ax.legend(frameon=False, fontsize=5.5)
@@ -360,14 +380,25 @@ def verification_profiles(rings: pd.DataFrame, table: pd.DataFrame, pressure_mmH
                 g = coarse[(coarse.lumen_load == load) & (coarse.recovery == rec)].sort_values("ring")
                 ax.plot(g.radius_um, g[stress], "o", ms=3.0, label=f"{load} load, {rec} reading", **marker)
             dx = coarse.dx_um.max()
-            ax.set(xlabel="current radius (um)", ylabel=f"{name} stress (kPa)",
-                   title=f"{wall}, {pressure_mmHg:g} mmHg, dx = {dx:g} um")  # fmt: skip
+            ax.set(
+                xlabel="current radius (um)",
+                ylabel=f"{name} stress (kPa)",
+                title=f"{wall}, {pressure_mmHg:g} mmHg, dx = {dx:g} um",
+            )
         axes[0][k].legend(frameon=False, fontsize=6, loc="lower right")
         ax = axes[2][k]
         for (load, rec), g in table[table.wall == wall].groupby(["lumen_load", "recovery"], sort=False):
             worst = g.groupby("dx_um").material_radial_max_pct.max()
-            ax.loglog(worst.index, np.maximum(worst.to_numpy(), 1e-3), dashes[load], marker="o", ms=3, lw=0.9,
-                      color=hues[rec], label=f"{load} load, {rec}")  # fmt: skip
+            ax.loglog(
+                worst.index,
+                np.maximum(worst.to_numpy(), 1e-3),
+                dashes[load],
+                marker="o",
+                ms=3,
+                lw=0.9,
+                color=hues[rec],
+                label=f"{load} load, {rec}",
+            )
         ax.axhline(2.0, color="0.6", lw=0.6, ls="--")
         spacings = sorted(table[table.wall == wall].dx_um.unique())
         ax.set_xticks(spacings, [f"{d:.3g}" for d in spacings])

@@ -303,8 +303,9 @@ class GrowthRun:
             return DamageUpdate(None, onsets=onsets, begun=begun)
         changed = dmg.D > hist.D  # W_0 of a GAG particle need not be finite (its base material is not its own)
         released = float(np.sum((dmg.D[changed] - hist.D[changed]) * W0[changed] * lay.volume[changed]))
-        new = with_ruptures(hist.with_damage(dmg.D, dmg.onset_stretch, dmg.onset_energy), ruptured, cand, pools,
-                            self.step + 1)  # fmt: skip
+        new = with_ruptures(
+            hist.with_damage(dmg.D, dmg.onset_stretch, dmg.onset_energy), ruptured, cand, pools, self.step + 1
+        )
         return DamageUpdate(new, released, begun=begun)
 
     def take_onsets(self, update: DamageUpdate) -> None:
