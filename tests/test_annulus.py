@@ -5,7 +5,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from sphgag.studies import annulus
+from sphgag.studies import annulus, resolution
 
 
 @pytest.fixture(scope="module")
@@ -138,7 +138,7 @@ def test_orders_of_three_spacings_with_known_errors():
         )
         for d in h
     ]
-    o = annulus.orders(pd.DataFrame(rows)).set_index("quantity")
+    o = resolution.annulus_orders(pd.DataFrame(rows)).set_index("quantity")
     assert o.loc["volume_ratio", "order_fine"] == pytest.approx(2.0)
     assert o.loc["volume_ratio", "order_coarse"] == pytest.approx(2.0)
     assert o.loc["lining_hoop_kPa", "order_fine"] == pytest.approx(1.0)

@@ -198,10 +198,10 @@ def test_a_figure_4_claim_holds_only_if_it_holds_at_every_spacing_and_extrapolat
     """C9 (smaller pools, higher tip stress) holds on figure 4's runs and at each spacing of the study (case IV's
     tip 80, 88.8 and 95 kPa below case I's 100), but not for the extrapolated values (110): it does not hold. C6
     holds everywhere. Without the study, the row says how to run it."""
-    from sphgag.studies import convergence
+    from sphgag.studies.resolution import swelling_band
 
     resolution = resolution_table("prescribed")
-    band = convergence.band_table(resolution, 103.0)
+    band = swelling_band(resolution, 103.0)
     tips = tips_table("prescribed").assign(pool_model="particles")
     e = claims.Evidence(tips=tips, cases=CASES, max_concentration=150.0, resolution=resolution, band=band)
     e = replace(e, study_pressure=103.0)

@@ -209,3 +209,30 @@ def test_editing_the_explicit_dynamics_reruns_only_the_rules_whose_jobs_import_i
     assert {"procedure_explicit", "procedure_delaminate", "procedure_summary"} <= set(jobs), jobs
     assert not {"procedure_start", "procedure_equilibrium"} & set(jobs), jobs
     assert not SIMULATIONS & set(jobs), jobs
+
+
+# every rule whose job computes an equilibrium or a pseudo-dynamic path (a simulation), the verification's and the
+# explicit procedure's included
+EVERY_SIMULATION = SIMULATIONS | {
+    "procedure_start",
+    "procedure_equilibrium",
+    "procedure_explicit",
+    "procedure_delaminate",
+    "paper_settings_run",
+    "verify_pool_ratio",
+    "verify_crack_length",
+    "verify_circular_pool_model",
+    "verify_annulus_model",
+    "verify_profiles_wall",
+}
+
+
+def test_editing_the_gci_reruns_no_simulation_and_editing_the_damage_law_reruns_the_delamination(finished, code):
+    """studies/gci.py (the grid convergence index) is read by the resolution tables only (studies/resolution.py): its
+    edit re-tabulates, and no simulation's digest changes. physics/damage.py (eq. 2.28) is a code input of every
+    delamination run."""
+    jobs, digests = replan(finished[0], "studies/gci.py", '"""', '"""An edit. ')
+    assert digests == importers(code, "studies/gci.py")
+    assert {"swelling_gci", "delamination_gci"} <= set(jobs), jobs
+    assert not EVERY_SIMULATION & set(jobs), jobs
+    assert {"delaminate", "delamination_convergence", "delamination_map_point"} <= importers(code, "physics/damage.py")

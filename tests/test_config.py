@@ -332,7 +332,7 @@ def test_the_configuration_module_imports_at_its_top_only():
 def test_a_laws_ramp_top_names_a_charge_law_and_is_that_laws_alone(full_config):
     """delamination.max_concentration_by_law_mEq_l: a key that names no charge law, or a top out of range, is refused
     naming the key; the runs of a law it names ramp to its top, every other law's to max_concentration_mEq_l."""
-    from sphgag.studies.delamination import Settings
+    from sphgag.studies.delamination.settings import Settings
 
     msg = bad(full_config, ["delamination", "max_concentration_by_law_mEq_l"], {"neutral": 300.0})
     assert "delamination.max_concentration_by_law_mEq_l.neutral names no charge law (prescribed, conserved)" in msg

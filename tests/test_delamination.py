@@ -12,7 +12,13 @@ from sphgag.engine.history import DAMAGED, SEEDED, HistoryMaterial, ParticleHist
 from sphgag.engine.loading import Load
 from sphgag.physics import materials
 from sphgag.records import state
-from sphgag.studies import artery, delamination, protocols
+from sphgag.studies import artery, protocols
+from sphgag.studies.delamination import growth
+from sphgag.studies.delamination.front import Front
+from sphgag.studies.delamination.growth import DamageUpdate, GrowthRun, seeded_only
+from sphgag.studies.delamination.settings import Settings
+from sphgag.studies.delamination.snapshots import load_snapshot, save_snapshots
+from sphgag.studies.delamination.tables import GROWTH_COLUMNS, Stop, labelled
 
 from .conftest import law_gag
 
@@ -28,16 +34,14 @@ def settings(ci_config, **changes):
     starts damage at once (sigma_cr = -100 kPa: at the CI spacing, 6 um, the particles touching a case I pool are in
     radial compression up to 300 mEq/l under the conserved law) and ruptures after the authors' early increment of
     radial stretch (0.5 %), so that the pools grow a column at each end per level of the ramp (50, 100, 150 mEq/l)."""
-    base = delamination.Settings.from_config(ci_config["delamination"], -100.0, "particle")
+    base = Settings.from_config(ci_config["delamination"], -100.0, "particle")
     quick = dict(max_passes=3, concentration_step_mEq_l=50.0, rupture_stretch_increment=0.005, candidates="contact")
     return dataclasses.replace(base, **dict(quick, **changes))
 
 
 def grow(ci_config, wall, sectors, st, **kwargs):
     model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-grow")
-    result = delamination.grow(
-        model, wall, sectors, st, ci_config["numerics"], law_gag(ci_config), model.props, **kwargs
-    )
+    result = growth.grow(model, wall, sectors, st, ci_config["numerics"], law_gag(ci_config), model.props, **kwargs)
     return model, result
 
 
@@ -138,7 +142,7 @@ def test_a_run_that_ends_where_its_pools_are_seeded_is_a_row_and_a_summary(ci_co
     c = 0, a summary that says why, no growth."""
     model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-seeded")
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
-    result = delamination.seeded_only(
+    result = seeded_only(
         model, wall, [pool], settings(ci_config), ci_config["numerics"], law_gag(ci_config), model.props, "no G_c"
     )
     assert len(result.growth) == 1 and result.growth.concentration_mEq_l.iloc[0] == 0.0
@@ -186,10 +190,10 @@ def test_a_run_restarted_from_a_snapshot_reaches_the_same_end_state(ci_config, w
     st = settings(ci_config)
     model, full = grow(ci_config, wall, [sector(51.5)], st)
     path = tmp_path / "snapshots.npz"
-    delamination.save_snapshots(path, model, full.snapshots, {"run": "test"})
+    save_snapshots(path, model, full.snapshots, {"run": "test"})
     steps = [s[0] for s in full.snapshots]
     k = next(i for i, s in enumerate(full.snapshots) if 0 < s[0] < steps[-1])
-    resumed_state, resumed_hist, step = delamination.load_snapshot(path, k, {"run": "test"})
+    resumed_state, resumed_hist, step = load_snapshot(path, k, {"run": "test"})
     assert resumed_hist.equals(full.snapshots[k][2]) and np.array_equal(resumed_state.x, full.snapshots[k][1].x)
     _, again = grow(ci_config, wall, [sector(51.5)], st, resume=(resumed_state, resumed_hist, step))
     assert again.final[1].equals(full.final[1])
@@ -208,7 +212,7 @@ def layout(ci_config):
 
 
 def front(layout, sectors, rule, window_deg=5.0):
-    return delamination.Front(SimpleNamespace(layout=layout), sectors, window_deg, rule)
+    return Front(SimpleNamespace(layout=layout), sectors, window_deg, rule)
 
 
 def seeded(layout, sectors):
@@ -312,7 +316,7 @@ def test_contact_candidates_touch_their_pool_and_window_candidates_are_the_autho
 
 
 def test_a_settings_candidate_rule_must_be_a_registered_one(ci_config):
-    assert "candidates" in delamination.Settings.config_keys()  # a run-level setting in the rules' params
+    assert "candidates" in Settings.config_keys()  # a run-level setting in the rules' params
     with pytest.raises(ValueError, match="candidates must be one of contact, window, got 'foo'"):
         settings(ci_config, candidates="foo")
 
@@ -329,8 +333,8 @@ def test_growth_by_contact_leaves_no_island_and_the_window_does(ci_config, wall)
     assert g.converted_particles.iloc[-1] >= 4 and result.summary["islands"] == 0
     damaged = result.final[1].origin == DAMAGED
     assert g.delaminated_length_um.iloc[-1] == pytest.approx(model.layout.volume[damaged].sum() / 15.0)
-    growth, summary = delamination.labelled(result, "single", st, model.layout.dx)
-    assert list(growth.columns) == delamination.GROWTH_COLUMNS and (growth.candidates == "contact").all()
+    growth, summary = labelled(result, "single", st, model.layout.dx)
+    assert list(growth.columns) == GROWTH_COLUMNS and (growth.candidates == "contact").all()
     assert {"islands", "island_particles", "island_distance_um", "candidates"} <= set(summary.columns)
 
     _, window = grow(ci_config, wall, [sector(51.5)], dataclasses.replace(st, candidates="window"))
@@ -397,9 +401,9 @@ def test_a_pair_that_merges_is_merged_with_its_merge_concentration(ci_config, wa
 
 
 def test_a_stop_kind_must_be_a_known_one():
-    assert delamination.Stop("edge", "x", 1.0).kind == "edge"
+    assert Stop("edge", "x", 1.0).kind == "edge"
     with pytest.raises(ValueError, match="stop kind must be one of arrested, merged"):
-        delamination.Stop("no stable state", "x", 1.0)
+        Stop("no stable state", "x", 1.0)
 
 
 def test_a_pool_that_grows_into_a_symmetry_edge_stops_there(ci_config, wall):
@@ -452,7 +456,7 @@ def test_a_pool_past_the_limit_point_of_its_frozen_state_ends_at_that_limit_poin
     not."""
     model, start, gag = soft_wall(ci_config, 1.0)
     st = settings(ci_config, critical_stress_kPa=1e6, max_concentration_mEq_l=40.0, concentration_step_mEq_l=10.0)
-    result = delamination.grow(model, start, [sector(45.0, 12.0)], st, ci_config["numerics"], gag, model.props)
+    result = growth.grow(model, start, [sector(45.0, 12.0)], st, ci_config["numerics"], gag, model.props)
     s = result.summary
     assert s["stop_kind"] == "limit point" and s["stop_level_mEq_l"] == 40.0, s["stop"]
     own = contents_limit(gag)
@@ -470,11 +474,11 @@ def test_a_damage_pass_past_the_limit_point_of_its_history_ends_at_that_limit_po
     level = 30.6
     model, start, gag = soft_wall(ci_config, 10.0)
     st = settings(ci_config, critical_stress_kPa=1e6, max_concentration_mEq_l=level, concentration_step_mEq_l=level)
-    run = delamination.GrowthRun.seed(model, start, [sector(45.0, 12.0)], st, ci_config["numerics"], gag, model.props)
+    run = GrowthRun.seed(model, start, [sector(45.0, 12.0)], st, ci_config["numerics"], gag, model.props)
     hist = run.hist
     weakened = hist.with_damage(np.where(hist.gag, hist.D, 0.9), hist.onset_stretch, hist.onset_energy)
-    updates = iter([delamination.DamageUpdate(weakened)])
-    run.next_history = lambda: next(updates, delamination.DamageUpdate(None))  # the one pass, then no change
+    updates = iter([DamageUpdate(weakened)])
+    run.next_history = lambda: next(updates, DamageUpdate(None))  # the one pass, then no change
     kind, what = run.settle_level(level)
     assert kind == "limit point" and "pass 1, whose snap came to rest at no equilibrium" in what, what
     assert contents_limit(gag) < run.limit_c < level

@@ -40,7 +40,8 @@ def test_equal_fine_values_have_no_error_and_bad_inputs_are_refused():
 def test_the_delamination_gci_table_has_a_row_per_spacing_and_the_estimate_of_the_three_finest():
     import pandas as pd
 
-    from sphgag.studies import delamination
+    from sphgag.studies.resolution import DELAMINATION_GCI_COLUMNS as GCI_COLUMNS
+    from sphgag.studies.resolution import delamination_gci as gci_table
 
     dx = [4.0, 2.83, 2.0]
     rows = [
@@ -55,8 +56,8 @@ def test_the_delamination_gci_table_has_a_row_per_spacing_and_the_estimate_of_th
         )
         for h in dx
     ]
-    table = delamination.gci_table(pd.DataFrame(rows))
-    assert list(table.columns) == delamination.GCI_COLUMNS
+    table = gci_table(pd.DataFrame(rows))
+    assert list(table.columns) == GCI_COLUMNS
     assert set(table.quantity) == {"onset_concentration_mEq_l", "runaway_concentration_mEq_l"}  # merge: never
     onset = table[table.quantity == "onset_concentration_mEq_l"]
     assert sorted(onset.dx_um) == sorted(dx) and onset.observed_order.iloc[0] == pytest.approx(1.0)
@@ -78,7 +79,7 @@ def test_the_swelling_gci_table_reads_each_quantity_at_its_volume_ratio_and_conc
     second order, the tip stress at 100 mEq/l at fourth (outside 0.5-3: Roache's cautious GCI, flagged)."""
     import pandas as pd
 
-    from sphgag.studies import convergence, volume_states
+    from sphgag.studies import resolution, volume_states
 
     rows = []
     for h in (1.5, 2.12, 3.0):
@@ -108,8 +109,8 @@ def test_the_swelling_gci_table_reads_each_quantity_at_its_volume_ratio_and_conc
                 tip_radial_stress_kPa=80 + h**4,
             )
         )
-    table = convergence.gci_table(pd.DataFrame(rows), [100.0], 103.0)
-    assert list(table.columns) == convergence.GCI_COLUMNS
+    table = resolution.swelling_gci(pd.DataFrame(rows), [100.0], 103.0)
+    assert list(table.columns) == resolution.SWELLING_GCI_COLUMNS
     c = table[(table.quantity == "concentration_at_volume_mEq_l") & (table["at"] == 5.0)]
     assert (
         len(c) == 3 and c.observed_order.iloc[0] == pytest.approx(2.0) and c.extrapolated.iloc[0] == pytest.approx(120)
@@ -128,7 +129,7 @@ def test_figure_4s_band_gives_every_step_of_the_ramp_and_the_intact_wall_its_est
     kPa, the intact wall's is exact (no error: GCI 0); one row per spacing, quantity and state."""
     import pandas as pd
 
-    from sphgag.studies import convergence
+    from sphgag.studies import resolution
 
     rows = []
     for h in (1.5, 2.12, 3.0):
@@ -146,7 +147,7 @@ def test_figure_4s_band_gives_every_step_of_the_ramp_and_the_intact_wall_its_est
                     top_circ_stress_kPa=300.0 + h**2,
                 )
             )
-    band = convergence.band_table(pd.DataFrame(rows), 103.0)
+    band = resolution.swelling_band(pd.DataFrame(rows), 103.0)
     assert len(band) == 3 * 2 * 3 and (band.pressure_mmHg == 103.0).all()
     tip = band[(band.quantity == "tip_radial_stress_kPa") & (band.stage == "converted")]
     assert tip.observed_order.to_numpy() == pytest.approx(1.0)

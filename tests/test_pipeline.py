@@ -15,10 +15,12 @@ import pandas as pd
 import pytest
 import yaml
 
-from sphgag.studies import convergence, delamination, pool_response
+from sphgag.studies import pool_response
 from sphgag.studies.claims import COLUMNS as CLAIMS_COLUMNS
 from sphgag.studies.claims import PAPER_POOL
+from sphgag.studies.delamination.tables import LEVEL_CLASSES
 from sphgag.studies.protocols import POOL_MODELS
+from sphgag.studies.resolution import BAND_KEYS, DELAMINATION_GCI_COLUMNS, SWELLING_GCI_COLUMNS
 
 from .conftest import ROOT, project_copy, snakemake
 
@@ -209,9 +211,9 @@ CONTRACT = {
         "final_length_um",
         "max_residual",
     ],
-    "results/delamination/gci.csv": delamination.GCI_COLUMNS,
-    "results/swelling/gci.csv": convergence.GCI_COLUMNS,
-    "results/swelling/gci_band.csv": [*convergence.BAND_KEYS, "dx_um", "value", "extrapolated", "gci_fine"],
+    "results/delamination/gci.csv": DELAMINATION_GCI_COLUMNS,
+    "results/swelling/gci.csv": SWELLING_GCI_COLUMNS,
+    "results/swelling/gci_band.csv": [*BAND_KEYS, "dx_um", "value", "extrapolated", "gci_fine"],
     "results/sensitivity/indices.csv": [
         "method",
         "charge_law",
@@ -957,7 +959,7 @@ def test_the_sensitivity_study_accounts_for_every_sample_and_maps_every_level(wo
         len(table)
         == len(laws) * len(se["map"]["angular_extents_deg"]) * len(se["map"]["critical_stresses_kPa"]) * levels
     )
-    assert set(table.state) <= set(delamination.LEVEL_CLASSES)
+    assert set(table.state) <= set(LEVEL_CLASSES)
     assert set(table.charge_law) == set(laws)
 
 

@@ -15,7 +15,8 @@ from sphgag.engine.loading import Load
 from sphgag.engine.model import Model
 from sphgag.physics import damage, donnan
 from sphgag.registry import Registry, Variant
-from sphgag.studies import annulus, candidates, delamination, inclusion, onset, protocols, swollen_pool
+from sphgag.studies import annulus, candidates, inclusion, onset, protocols, swollen_pool
+from sphgag.studies.delamination.settings import Settings
 
 from .conftest import ROOT, Lattice, isotropic_props
 
@@ -153,7 +154,7 @@ def test_the_configuration_accepts_a_plugin_by_name_and_refuses_an_unknown_one(p
     name = plugin.VARIANT.name
     assert name in plugin.REGISTRY and plugin.REGISTRY.lookup(name) is plugin.VARIANT
     if plugin.REGISTRY is damage.LAWS:  # a damage law is a run's setting (the pipeline's runs), not a listed key
-        base = delamination.Settings.from_config(ci_config["delamination"], 40.0, "particle")
+        base = Settings.from_config(ci_config["delamination"], 40.0, "particle")
         settings = dataclasses.replace(base, damage_law=name)
         assert isinstance(settings.law, plugin.VARIANT)
         with pytest.raises(ValueError, match="damage_law must be one of paper, fracture_energy, linear, got 'bubble'"):

@@ -11,8 +11,8 @@ import pytest
 
 from sphgag import jobs
 from sphgag.jobs import kinds
-from sphgag.studies import delamination
-from sphgag.studies.delamination import Settings
+from sphgag.studies.delamination.runs import fracture_energy
+from sphgag.studies.delamination.settings import MATCHED, Settings
 
 from .conftest import ROOT
 
@@ -189,11 +189,11 @@ def test_a_delamination_job_has_one_shape_of_settings(ci_config, tmp_path):
         study, study["critical_stress_kPa"], "particle"
     )
     # G_c: none, a number, or the energy the paper's law dissipated in the matched run
-    assert delamination.fracture_energy(None) == (None, "")
-    assert delamination.fracture_energy("51") == (51.0, "")
+    assert fracture_energy(None) == (None, "")
+    assert fracture_energy("51") == (51.0, "")
     summary = tmp_path / "matched.csv"
     summary.write_text("dissipated_energy_J_m2\n12.5\n")
-    assert delamination.fracture_energy(delamination.MATCHED, str(summary)) == (12.5, "")
+    assert fracture_energy(MATCHED, str(summary)) == (12.5, "")
     summary.write_text("dissipated_energy_J_m2\nnan\n")
-    gc, unmatched = delamination.fracture_energy(delamination.MATCHED, str(summary))
+    gc, unmatched = fracture_energy(MATCHED, str(summary))
     assert np.isnan(gc) and "no G_c to match" in unmatched

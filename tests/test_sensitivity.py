@@ -5,7 +5,8 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from sphgag.studies import delamination, pool_response, sensitivity
+from sphgag.studies import pool_response, sensitivity
+from sphgag.studies.delamination.tables import level_classes
 
 LINEAR = np.array([2.0, -3.0, 0.5, 0.0])
 PROBLEM = sensitivity.Problem(("a", "b", "c", "d"), (0.0, 1.0, -1.0, 5.0), (1.0, 3.0, 1.0, 6.0))
@@ -174,7 +175,7 @@ def test_the_swelling_ramp_is_cut_at_the_stated_concentration_on_the_pipelines_s
 def run(rows, stop_kind, stop_level, onset):
     growth = pd.DataFrame(rows, columns=["concentration_mEq_l", "delaminated_length_um"])
     summary = dict(stop_kind=stop_kind, stop_level_mEq_l=stop_level, onset_concentration_mEq_l=onset)
-    return delamination.level_classes(growth, summary, [10.0, 20.0, 30.0, 40.0]).state.tolist()
+    return level_classes(growth, summary, [10.0, 20.0, 30.0, 40.0]).state.tolist()
 
 
 def test_map_classes_of_a_run_that_arrests_at_the_top_of_the_ramp():

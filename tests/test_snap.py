@@ -9,7 +9,10 @@ import pytest
 from sphgag.engine import geometry, pool_volume, snap, solver
 from sphgag.engine.history import DAMAGED, HistoryMaterial
 from sphgag.engine.numerics import Numerics
-from sphgag.studies import artery, delamination, protocols
+from sphgag.studies import artery, protocols
+from sphgag.studies.delamination.growth import grow
+from sphgag.studies.delamination.settings import Settings
+from sphgag.studies.delamination.snapshots import load_snapshot, save_snapshots
 
 from .conftest import law_gag
 from .test_delamination import mirror_map
@@ -31,7 +34,7 @@ SNAP_PASS = 3
 @pytest.fixture(scope="module")
 def through_a_snap(ci_config, ci_wall, tmp_path_factory):
     """``(model, result, snapshot file)`` of that run, to one pass beyond the snap, with a snapshot at every pass."""
-    base = delamination.Settings.from_config(ci_config["delamination"], 1.0, "particle")
+    base = Settings.from_config(ci_config["delamination"], 1.0, "particle")
     st = dataclasses.replace(
         base,
         max_passes=SNAP_PASS + 1,
@@ -44,15 +47,15 @@ def through_a_snap(ci_config, ci_wall, tmp_path_factory):
     sectors = [geometry.Sector(663.0, 45.0, 15.0, 3.0)]
     gag = dict(prescribed(ci_config), volumetric="log_squared")
     args = (sectors, st, numerics, gag, model.props)
-    result = delamination.grow(model, ci_wall, *args, snapshot_steps=range(SNAP_PASS + 2))
+    result = grow(model, ci_wall, *args, snapshot_steps=range(SNAP_PASS + 2))
     path = tmp_path_factory.mktemp("snap") / "snapshots.npz"
-    delamination.save_snapshots(path, model, result.snapshots, {"run": "test-snap"})
+    save_snapshots(path, model, result.snapshots, {"run": "test-snap"})
 
     def resume(step):
         k = next(i for i, s in enumerate(result.snapshots) if s[0] == step)
         again = artery.bilayer_model(ci_config["bilayer"], numerics, name="test-snap-resumed")
-        snapshot = delamination.load_snapshot(path, k, {"run": "test-snap"})
-        return delamination.grow(again, ci_wall, *args[:-1], again.props, resume=snapshot)
+        snapshot = load_snapshot(path, k, {"run": "test-snap"})
+        return grow(again, ci_wall, *args[:-1], again.props, resume=snapshot)
 
     return model, result, resume
 

@@ -9,7 +9,9 @@ import pytest
 from sphgag.engine import geometry, measure
 from sphgag.engine.history import HistoryMaterial
 from sphgag.records import state
-from sphgag.studies import artery, delamination
+from sphgag.studies import artery
+from sphgag.studies.delamination.growth import grow
+from sphgag.studies.delamination.snapshots import save_snapshots
 from sphgag.views import paraview
 
 from .conftest import law_gag
@@ -23,11 +25,11 @@ def grown(ci_config, ci_wall, tmp_path_factory):
     st = settings(ci_config)
     model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-views")
     gag = law_gag(ci_config)
-    result = delamination.grow(
+    result = grow(
         model, ci_wall, [geometry.Sector(663.0, 45.0, 15.0, 3.0)], st, ci_config["numerics"], gag, model.props
     )
     path = tmp_path_factory.mktemp("views") / "snapshots.npz"
-    delamination.save_snapshots(path, model, result.snapshots, {"run": "test"})
+    save_snapshots(path, model, result.snapshots, {"run": "test"})
     return gag, path, result
 
 
@@ -389,7 +391,7 @@ def test_figure_4_draws_the_resolution_bands_and_the_tip_stress_against_pool_vol
     plots the tip stress against the pool volume per spacing; without it the figure says the study has not run."""
     from matplotlib.collections import PolyCollection
 
-    from sphgag.studies import convergence
+    from sphgag.studies.resolution import swelling_band
     from sphgag.views import swelling
 
     variants = [("prescribed", "particles")]
@@ -402,7 +404,7 @@ def test_figure_4_draws_the_resolution_bands_and_the_tip_stress_against_pool_vol
             for h in (3.0, 2.12, 1.5)
         ]
     )
-    band = convergence.band_table(resolution, 103.0)
+    band = swelling_band(resolution, 103.0)
     cases = {name: SWELLING_CASES[name] for name in dict.fromkeys(tips.case)}
     args = (tips, _particles(), cases, 10.0, "prescribed", 150.0, WALL_PRESSURES)
     fig = swelling.fig4(*args, pool_layers=["media"], band=band, resolution=resolution)

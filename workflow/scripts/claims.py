@@ -6,7 +6,8 @@ claims on the pool sets of their figures (``params.figures``, i.e. ``delaminatio
 import pandas as pd
 
 from sphgag import jobs
-from sphgag.studies import claims, delamination
+from sphgag.studies import claims
+from sphgag.studies.delamination.tables import paper_law
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p = job.params
@@ -15,7 +16,7 @@ with jobs.run(snakemake) as job:  # noqa: F821
         for k in ("mean", "bilayer", "activation", "layers", "transmural", "tips", "growth", "delamination")
     }
     # the paper's claims are about its damage law (eq. 2.28 as printed)
-    t["growth"], t["delamination"] = delamination.paper_law(t["growth"]), delamination.paper_law(t["delamination"])
+    t["growth"], t["delamination"] = paper_law(t["growth"]), paper_law(t["delamination"])
     # the evidence of other targets: read where this run or an earlier one made it, else the claim says "not run"
     studies = {name: pd.read_csv(p[name]["path"]) if p[name]["state"] != "not run" else None for name in claims.TARGETS}
     evidence = claims.Evidence(

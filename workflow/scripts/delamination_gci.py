@@ -3,10 +3,10 @@
 import pandas as pd
 
 from sphgag import jobs
-from sphgag.studies import delamination
+from sphgag.studies.resolution import delamination_gci
 
 with jobs.run(snakemake) as job:  # noqa: F821
-    table = delamination.gci_table(pd.read_csv(job.input.convergence))
+    table = delamination_gci(pd.read_csv(job.input.convergence))
     table.to_csv(job.output[0], index=False)
     for r in table.drop_duplicates(["charge_law", "criterion", "case", "quantity"]).itertuples():
         job.log.info(

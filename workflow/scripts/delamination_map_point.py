@@ -1,18 +1,20 @@
 """Rule delamination_map_point: figure 5's pool at one angular extent and sigma_cr, grown over the concentration ramp
-by eq. (2.28); what it does at each level (sphgag.studies.delamination.map_point)."""
+by eq. (2.28); what it does at each level (sphgag.studies.delamination.runs.map_point)."""
 
 from sphgag import jobs
 from sphgag.engine import solver
 from sphgag.records import state
-from sphgag.studies import artery, delamination
+from sphgag.studies import artery
+from sphgag.studies.delamination.runs import map_point
+from sphgag.studies.delamination.settings import Settings
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p, cfg, w = job.params, job.params.state_slice, job.w
     model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=job.name)
     saved = state.load(job.input.state, job.params.state_slice)
-    settings = delamination.Settings.from_config(p.delamination, w.sigma, p.criterion)
+    settings = Settings.from_config(p.delamination, w.sigma, p.criterion)
     start, sector = solver.State(saved.load, saved.x, None, None), artery.pool_sector(p.pool)
-    table, s = delamination.map_point(model, start, sector, settings, cfg["numerics"], p.gag, w.width, run=job.name)
+    table, s = map_point(model, start, sector, settings, cfg["numerics"], p.gag, w.width, run=job.name)
     table.to_csv(job.output.table, index=False)
     job.log.info(
         "[%s] %s; stopped in level %g mEq/l (%s)",

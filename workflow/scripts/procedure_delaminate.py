@@ -4,13 +4,14 @@ import time
 
 from sphgag import jobs
 from sphgag.records import state
-from sphgag.studies import artery, delamination, paper_procedure
+from sphgag.studies import artery, paper_procedure
+from sphgag.studies.delamination.settings import Settings
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p, w, wall, run = job.params, job.w, job.params.wall, job.name
     model = artery.bilayer_model(dict(wall["bilayer"], dx_um=wall["dx"]), wall["numerics"], name=run)
     start = state.load(job.input.start[0], wall)
-    settings = delamination.Settings.from_config(p.delamination, w.sigma, p.criterion)
+    settings = Settings.from_config(p.delamination, w.sigma, p.criterion)
     sectors = [artery.pool_sector(s) for s in p.pools]
     timing, stage = p.procedure["timing"], p.procedure["damage"]
     t0 = time.perf_counter()

@@ -4,14 +4,14 @@ study's table."""
 import pandas as pd
 
 from sphgag import jobs
-from sphgag.studies import convergence
+from sphgag.studies import resolution
 
 with jobs.run(snakemake) as job:  # noqa: F821
     table = pd.read_csv(job.input.table)
-    out = convergence.gci_table(table, job.params.concentrations, job.params.pressure)
+    out = resolution.swelling_gci(table, job.params.concentrations, job.params.pressure)
     out.to_csv(job.output.table, index=False)
-    convergence.band_table(table, job.params.pressure).to_csv(job.output.band, index=False)
-    finest = out.sort_values("dx_um").groupby(convergence.GCI_KEYS, sort=False).head(1)
+    resolution.swelling_band(table, job.params.pressure).to_csv(job.output.band, index=False)
+    finest = out.sort_values("dx_um").groupby(resolution.GCI_KEYS, sort=False).head(1)
     for r in finest.itertuples():
         note = "" if r.order_in_range else " (order outside 0.5-3: safety factor 3)"
         job.log.info(

@@ -3,13 +3,13 @@
 import pandas as pd
 
 from sphgag import jobs
-from sphgag.studies import annulus
+from sphgag.studies import annulus, resolution
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p = job.params
     table = pd.concat([pd.read_csv(path) for path in job.input.tables], ignore_index=True)
     table.to_csv(job.output.table, index=False)
-    orders = annulus.orders(table)
+    orders = resolution.annulus_orders(table)
     orders.to_csv(job.output.orders, index=False)
     annulus.exact_curves(table, p.radius, p.matrix, p.gag).to_csv(job.output.exact, index=False)
     for r in orders.itertuples():

@@ -41,7 +41,7 @@ from ..engine.numerics import Numerics
 from ..options import Options
 from ..physics import cavity
 from ..registry import Registry, Variant
-from . import gci, inclusion, swollen_pool
+from . import inclusion, swollen_pool
 
 
 @dataclass(frozen=True)
@@ -252,44 +252,6 @@ def exact_curves(table: pd.DataFrame, radius_um: float, matrix: dict, gag: dict,
                     volume_ratio=J,
                     pressure_kPa=cavity.pressure_for_volume_ratio(J, A, B, m, g),
                     incompressible_kPa=float(cavity.annulus_pressure_incompressible(np.sqrt(J), A, B, mat.mu)),
-                )
-            )
-    return pd.DataFrame(rows)
-
-
-def orders(table: pd.DataFrame) -> pd.DataFrame:
-    """The observed order of each measure's error at three spacings (the finest three of each case): per
-    (``pool_model``, ``outer_ratio``, ``fraction``, ``quantity``) the finest spacing's value, the exact value, its
-    relative error, the observed order of the errors (:func:`sphgag.studies.inclusion.observed_order`) of the two
-    finer spacings and of the two coarser ones, and the grid convergence index estimate of the three values
-    (:func:`sphgag.studies.gci.estimate`, which does not know the exact value: its extrapolated value is checked
-    against it)."""
-    rows = []
-    below = table[(table.fraction < 1.0) & table.state]
-    for (model, ratio, f), case in below.groupby(["pool_model", "outer_ratio", "fraction"], sort=True):
-        case = case.sort_values("dx_um").head(3)
-        if len(case) < 3:
-            continue
-        h = case.dx_um.to_numpy()
-        for q, exact_column in MEASURES.items():
-            value, exact = case[q].to_numpy(), case[exact_column].to_numpy()
-            err = value / exact - 1.0
-            est = gci.estimate(h, value)
-            rows.append(
-                dict(
-                    pool_model=model,
-                    outer_ratio=ratio,
-                    fraction=f,
-                    quantity=q,
-                    dx_um=h[0],
-                    value=value[0],
-                    exact=exact[0],
-                    error=value[0] / exact[0] - 1.0,
-                    order_fine=inclusion.observed_order(h[:2], err[:2]),
-                    order_coarse=inclusion.observed_order(h[1:], err[1:]),
-                    extrapolated=est.extrapolated,
-                    extrapolated_error=est.extrapolated / exact[0] - 1.0,
-                    gci_fine=est.gci_fine,
                 )
             )
     return pd.DataFrame(rows)

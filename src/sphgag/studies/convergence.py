@@ -19,7 +19,7 @@ import pandas as pd
 
 from ..engine import solver
 from ..engine.numerics import Numerics
-from . import artery, gci, protocols, volume_states
+from . import artery, protocols, volume_states
 
 log = logging.getLogger("sphgag")
 
@@ -175,60 +175,6 @@ def measure_saved(
             last.pool_volume_change,
         )
     return table
-
-
-GCI_KEYS = ["charge_law", "pool_model", "model", "case", "pressure_mmHg", "quantity", "at"]
-GCI_COLUMNS = GCI_KEYS[:-1] + ["at", "dx_um", "value", "observed_order", "extrapolated", "gci_fine", "order_in_range"]
-AT_VOLUME = {  # quantity at a given volume ratio J <- its column
-    "concentration_at_volume_mEq_l": "concentration_mEq_l",
-    "tip_radial_stress_at_volume_kPa": "tip_radial_stress_kPa",
-    "top_circ_stress_at_volume_kPa": "top_circ_stress_kPa",
-}
-AT_CONCENTRATION = {  # quantity at a given concentration <- its column
-    "tip_radial_stress_kPa": "tip_radial_stress_kPa",
-    "top_circ_stress_kPa": "top_circ_stress_kPa",
-    "volume_ratio": "pool_volume_change",
-}
-
-
-def gci_table(table: pd.DataFrame, concentrations, pressure_mmHg: float) -> pd.DataFrame:
-    """``results/swelling/gci.csv`` from the resolution study's table: per charge law, pool model, wall (column
-    ``model``), case and quantity,
-    at each volume ratio of the study (``at`` = J: the concentration that holds it, the tip radial and top hoop
-    stresses there) and at each of ``concentrations`` (``at`` in mEq/l: the tip radial and top hoop stresses and the
-    volume ratio J), its value at every spacing with the observed order, the extrapolated value and the GCI of the
-    three finest (:func:`sphgag.studies.gci.tidy`). ``pressure_mmHg``: the study's lumen pressure."""
-    base = table.assign(pressure_mmHg=float(pressure_mmHg), volume_ratio=table.pool_volume_change + 1.0)
-    rows = []
-    at_volume = base[base.stage == volume_states.STAGE]
-    for quantity, column in AT_VOLUME.items():
-        rows.append(at_volume.assign(quantity=quantity, at=at_volume.volume_ratio.round(6), value=at_volume[column]))
-    on_path = base[(base.stage == "converted") & base.concentration_mEq_l.isin([float(c) for c in concentrations])]
-    for quantity, column in AT_CONCENTRATION.items():
-        value = on_path[column] + (1.0 if column == "pool_volume_change" else 0.0)
-        rows.append(on_path.assign(quantity=quantity, at=on_path.concentration_mEq_l, value=value))
-    values = pd.concat(rows, ignore_index=True)[GCI_KEYS + ["dx_um", "value"]]
-    values = values.sort_values(["charge_law", "pool_model", "model", "case", "quantity", "at", "dx_um"], kind="stable")
-    return gci.tidy(values, GCI_KEYS)[GCI_COLUMNS]
-
-
-BAND_KEYS = ["charge_law", "pool_model", "model", "case", "pressure_mmHg", "stage", "concentration_mEq_l", "quantity"]
-BAND_QUANTITIES = ["tip_radial_stress_kPa", "top_circ_stress_kPa"]
-
-
-def band_table(table: pd.DataFrame, pressure_mmHg: float) -> pd.DataFrame:
-    """``results/swelling/gci_band.csv``, figure 4's bands: the GCI of the tip radial and top hoop stresses
-    (``quantity``) of the resolution study's intact wall and of every converted state on the concentration ramp,
-    per charge law, pool model, wall and case; one row per spacing with the estimate of the three finest
-    (:func:`sphgag.studies.gci.tidy`). ``pressure_mmHg``: the study's lumen pressure."""
-    on_ramp = table[table.stage.isin(["intact", "converted"])].assign(pressure_mmHg=float(pressure_mmHg))
-    values = on_ramp.melt(
-        id_vars=[k for k in BAND_KEYS if k != "quantity"] + ["dx_um"],
-        value_vars=BAND_QUANTITIES,
-        var_name="quantity",
-    )
-    values = values.sort_values(BAND_KEYS + ["dx_um"], kind="stable")
-    return gci.tidy(values[BAND_KEYS + ["dx_um", "value"]], BAND_KEYS)
 
 
 def bar(table: pd.DataFrame, concentration: float, columns=("tip_radial_stress_kPa", "pool_volume_change")):

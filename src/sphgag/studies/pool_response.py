@@ -32,7 +32,10 @@ import pandas as pd
 
 from ..engine import solver
 from ..options import Options, key_text
-from . import artery, delamination, protocols
+from . import artery, protocols
+from .delamination.growth import grow
+from .delamination.settings import Settings
+from .delamination.tables import labelled
 
 log = logging.getLogger("sphgag")
 
@@ -286,10 +289,10 @@ def respond(scenario: dict, name: str = "pool_response") -> Response:
     model = artery.bilayer_model(bl, numerics, name=f"{name}_swell", pool=pool, gag=gag)
     states = protocols.swell_pool(model, start, numerics, swelling_settings(s))
     swelling = protocols.pool_table(model, states, pool, s["probe_length_um"], gag)
-    settings = delamination.Settings.at_section(de, s["criterion"])
+    settings = Settings.at_section(de, s["criterion"])
     model = artery.bilayer_model(bl, numerics, name=f"{name}_delaminate")
-    result = delamination.grow(model, start, [pool], settings, numerics, gag, model.props, run=f"{name}_delaminate")
-    growth, summary = delamination.labelled(result, s["pool_set"], settings, bl["dx_um"])
+    result = grow(model, start, [pool], settings, numerics, gag, model.props, run=f"{name}_delaminate")
+    growth, summary = labelled(result, s["pool_set"], settings, bl["dx_um"])
     return Response(s, swelling, growth, summary)
 
 

@@ -5,7 +5,7 @@ Each variant builds its own wall (homeostasis, figure 2b, and pressure control t
 the numerics change every state from the first. It then runs figure 4's protocol for the first pool of
 ``swelling.cases`` in that passive wall (GAG particles, the paper's charge law;
 :func:`sphgag.studies.protocols.swell_pool`, measured as rule pool_stresses measures) and grows figure 5's pool at
-``delamination.critical_stress_kPa`` with the default onset criterion (:func:`sphgag.studies.delamination.grow`).
+``delamination.critical_stress_kPa`` with the default onset criterion (:func:`sphgag.studies.delamination.growth.grow`).
 """
 
 from __future__ import annotations
@@ -15,7 +15,10 @@ from dataclasses import dataclass
 import pandas as pd
 
 from ..engine.model import Model
-from . import artery, delamination, protocols
+from . import artery, protocols
+from .delamination.growth import grow
+from .delamination.settings import Settings
+from .delamination.tables import labelled
 
 
 @dataclass
@@ -48,10 +51,10 @@ def run_variant(
     states = protocols.swell_pool(model, start, numerics, dict(settings, pool_model="particles"))
     table = protocols.pool_table(model, states, pool, swelling["probe_length_um"], gag)
     table.insert(0, "case", swelling["case"])
-    st = delamination.Settings.at_section(de, de["criterion"])
+    st = Settings.at_section(de, de["criterion"])
     grower: Model = artery.bilayer_model(bilayer, numerics, name=f"{name}_grow")
-    result = delamination.grow(
+    result = grow(
         grower, start, [artery.pool_sector(s) for s in de["pools"]], st, numerics, gag, grower.props, run=f"{name}_grow"
     )
-    growth, summary = delamination.labelled(result, de["case"], st, bilayer["dx_um"])
+    growth, summary = labelled(result, de["case"], st, bilayer["dx_um"])
     return Variant(table, growth, summary)

@@ -15,8 +15,8 @@ import numpy as np
 import pandas as pd
 
 from ..physics.donnan import PAPER_LAW, charge_law
-from ..studies import annulus, gci, paper_settings, wall_profiles
 from ..studies import claims as claims_
+from ..studies import gci, paper_settings, resolution, wall_profiles
 from .names import LAW_FIGURES, law_figure
 
 
@@ -159,7 +159,7 @@ def annulus_table(table: pd.DataFrame) -> str:
     of the hoop stress at the hole at every spacing with the observed order of the finer pair, how far the GAG reach
     outside the lining; and, above the limit, how each spacing's run ended."""
     spacings = sorted(table.dx_um.unique(), reverse=True)
-    orders = annulus.orders(table).set_index(["pool_model", "outer_ratio", "fraction", "quantity"])
+    orders = resolution.annulus_orders(table).set_index(["pool_model", "outer_ratio", "fraction", "quantity"])
     head = (
         "| pool | B/A | Pi / limit | volume ratio error: "
         + " / ".join(f"dx {d:g}" for d in spacings)

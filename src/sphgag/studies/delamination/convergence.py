@@ -1,32 +1,17 @@
 """The resolution study of delamination (``results/delamination/convergence.csv``): the study's pool sets (figure 5's
 pool and a pair) grown from the passive wall pressurised at each particle spacing, under every onset criterion (eq.
 2.28, section 2.7), and the discretisation error of the concentrations of their events (``gci.csv``,
-:func:`gci_table`)."""
+:func:`sphgag.studies.resolution.delamination_gci`)."""
 
 from __future__ import annotations
 
 import pandas as pd
 
 from ...engine.numerics import Numerics
-from .. import artery, gci, protocols
+from .. import artery, protocols
 from .growth import grow
 from .settings import Settings
 from .tables import labelled
-
-#: the concentrations of a run's events whose convergence the study measures (summary.csv columns)
-CONVERGED_QUANTITIES = ("onset_concentration_mEq_l", "runaway_concentration_mEq_l", "merge_concentration_mEq_l")
-GCI_COLUMNS = [
-    "charge_law",
-    "criterion",
-    "case",
-    "quantity",
-    "dx_um",
-    "value",
-    "observed_order",
-    "extrapolated",
-    "gci_fine",
-    "order_in_range",
-]
 
 
 def convergence_study(
@@ -51,20 +36,3 @@ def convergence_study(
             result = grow(model, start, sectors, settings, numerics, gag, model.props)
             rows.append(labelled(result, case, settings, dx)[1].assign(particles=model.n))
     return pd.concat(rows, ignore_index=True)
-
-
-def gci_table(convergence: pd.DataFrame) -> pd.DataFrame:
-    """``results/delamination/gci.csv``: per charge law, criterion, case and event concentration
-    (:data:`CONVERGED_QUANTITIES`), its value at every spacing of the resolution study, and, where there are three
-    spacings, the observed order, the extrapolated value and the fine-grid convergence index of the three finest
-    (:func:`sphgag.studies.gci.tidy`; NaN where the event did not happen at all three)."""
-    keys = ["charge_law", "criterion", "case"]
-    present = [q for q in CONVERGED_QUANTITIES if q in convergence and convergence[q].notna().any()]
-    values = [
-        runs[keys + ["dx_um"]].assign(quantity=q, value=runs[q].astype(float))
-        for _, runs in convergence.groupby(keys, sort=False)
-        for q in present
-    ]
-    if not values:
-        return pd.DataFrame(columns=GCI_COLUMNS)
-    return gci.tidy(pd.concat(values, ignore_index=True), keys + ["quantity"])[GCI_COLUMNS]
