@@ -73,7 +73,7 @@ def _net_forces(x, pd, material, extra, hg, lumen, work):
     hg_ptr, hg_idx, hg_val, X = hg
     inner, pressure = lumen
     xe, fe, FP, f, g = work
-    dmin = forces.forces_and_stresses(x, *pd, *material, extra, xe, fe, FP, f)
+    dmin = forces.forces_and_stresses(x, pd, *material, extra, xe, fe, FP, f)
     if hg_ptr.shape[0] > 1:
         u, ff = (x - X).reshape(-1), f.reshape(-1)
         for row in range(hg_ptr.shape[0] - 1):

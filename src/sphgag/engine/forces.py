@@ -107,7 +107,7 @@ def evaluate_forces(x, pd: PairData, lz, cth, sth, props, xe, fe, FP, f, extra=N
     ``extra`` (N, 4), if given, is added to every particle's P before the forces
     are formed (the viscous stress of section 2.3 in :mod:`sphgag.engine.dynamics`).
     """
-    return forces_and_stresses(x, *pd.arrays, lz, cth, sth, props, extra, xe, fe, FP, f)
+    return forces_and_stresses(x, pd.arrays, lz, cth, sth, props, extra, xe, fe, FP, f)
 
 
 @njit(cache=True, error_model="numpy")
@@ -207,32 +207,9 @@ def _stresses(lz, cth, sth, props, extra, FP, n):
 
 
 @njit(cache=True, error_model="numpy")
-def forces_and_stresses(
-    x,
-    pair_ptr,
-    pair_j,
-    pair_geo,
-    pair_a,
-    pair_hgc,
-    solo_ptr,
-    solo_j,
-    solo_geo,
-    solo_a,
-    solo_hgc,
-    split,
-    ghost_owner,
-    ghost_mirror,
-    lz,
-    cth,
-    sth,
-    props,
-    extra,
-    xe,
-    fe,
-    FP,
-    f,
-):
-    """One force evaluation: F (eq. 2.9), P (eq. 2.10) and the forces of eqs. (2.11), (2.14).
+def forces_and_stresses(x, pd, lz, cth, sth, props, extra, xe, fe, FP, f):
+    """One force evaluation: F (eq. 2.9), P (eq. 2.10) and the forces of eqs. (2.11), (2.14); ``pd``: the packed pair
+    data (:attr:`PairData.arrays`).
 
     Pass 1: ``F_i = sum_j (x_j - x_i) (x) a_ij`` and the hourglass deformation gradient
     ``F~_i`` of the weighted stencil ``ah`` (:func:`sphgag.engine.kernel.hourglass_gradients`;
@@ -248,6 +225,8 @@ def forces_and_stresses(
     (eq. 2.15 with ``n = r/|r|``). Returns the smallest det(F_2D); a particle
     with det <= 0 gets NaN stress.
     """
+    pair_ptr, pair_j, pair_geo, pair_a, pair_hgc, solo_ptr, solo_j, solo_geo, solo_a, solo_hgc = pd[:10]
+    split, ghost_owner, ghost_mirror = pd[10], pd[11], pd[12]
     n = x.shape[0]
     extend(x, ghost_owner, ghost_mirror, xe)
     _deformation_gradients(xe, pair_ptr, pair_j, pair_a, solo_ptr, solo_j, solo_a, split, FP, n)
@@ -405,56 +384,63 @@ def jacobian_blocks(x, V, ptr, nbr, mir, a, s, ah, sh, R, hgc, F, Fh, lz, cth, s
                         v = b[p, 0] * T[q, c, d, 0] + b[p, 1] * T[q, c, d, 1]
                         data[blk, c, d] -= Vi * M[p, c] * M[q, d] * v
 
-        # hourglass pairs: node vectors of F~_i
-        b[0, 0], b[0, 1] = -sh[i, 0], -sh[i, 1]
-        for k in range(1, m):
-            b[k, 0], b[k, 1] = ah[e0 + k - 1, 0], ah[e0 + k - 1, 1]
-        F00, F01, F10, F11 = Fh[i, 0, 0], Fh[i, 0, 1], Fh[i, 1, 0], Fh[i, 1, 1]
-        for k in range(1, m):
-            e = e0 + k - 1
-            c = hgc[e]
-            if c == 0.0:  # no penalty across a GAG/tissue interface
-                continue
-            j = nbr[e]
-            sx, sy = M[k, 0], M[k, 1]
-            r0 = sx * x[j, 0] - x[i, 0]
-            r1 = sy * x[j, 1] - x[i, 1]
-            d = np.sqrt(r0 * r0 + r1 * r1)
-            n0, n1 = r0 / d, r1 / d
-            q0 = F00 * R[e, 0] + F01 * R[e, 1]
-            q1 = F10 * R[e, 0] + F11 * R[e, 1]
-            qn = q0 * n0 + q1 * n1
-            delta = qn - d
-            # d delta / d r = (q - (n.q) n)/d - n
-            u0 = (q0 - qn * n0) / d - n0
-            u1 = (q1 - qn * n1) / d - n1
-            # H = c [n (x) u + delta (I - n n)/d]
-            h00 = c * (n0 * u0 + delta * (1.0 - n0 * n0) / d)
-            h01 = c * (n0 * u1 - delta * n0 * n1 / d)
-            h10 = c * (n1 * u0 - delta * n1 * n0 / d)
-            h11 = c * (n1 * u1 + delta * (1.0 - n1 * n1) / d)
-            for p in range(m):
-                coef = c * (b[p, 0] * R[e, 0] + b[p, 1] * R[e, 1])
-                mn0, mn1 = M[p, 0] * n0, M[p, 1] * n1
-                g00, g01 = coef * n0 * mn0, coef * n0 * mn1
-                g10, g11 = coef * n1 * mn0, coef * n1 * mn1
-                if p == 0:
-                    g00 -= h00
-                    g01 -= h01
-                    g10 -= h10
-                    g11 -= h11
-                if p == k:
-                    g00 += h00 * sx
-                    g01 += h01 * sy
-                    g10 += h10 * sx
-                    g11 += h11 * sy
-                bi = blockmap[base + p]  # (node 0, node p)
-                data[bi, 0, 0] -= g00
-                data[bi, 0, 1] -= g01
-                data[bi, 1, 0] -= g10
-                data[bi, 1, 1] -= g11
-                bj = blockmap[base + k * m + p]  # (node k, node p)
-                data[bj, 0, 0] += sx * g00
-                data[bj, 0, 1] += sx * g01
-                data[bj, 1, 0] += sy * g10
-                data[bj, 1, 1] += sy * g11
+        _hourglass_blocks(i, x, nbr, R, hgc, ah, sh, Fh, M, b, e0, m, blockmap[base:], data)
+
+
+@njit(cache=True, error_model="numpy")
+def _hourglass_blocks(i, x, nbr, R, hgc, ah, sh, Fh, M, b, e0, m, blockmap, data):
+    """The hourglass pairs' part of :func:`jacobian_blocks` for particle ``i`` (its ``m`` nodes from entry ``e0``,
+    mirror diagonals ``M``, the blocks of its stencil ``blockmap``): derivative of the pair vectors ``c delta n``
+    through ``F~_i`` (node vectors ``-sh_i``, ``ah_ik``; ``b`` is overwritten with them), ``r`` and ``n``."""
+    b[0, 0], b[0, 1] = -sh[i, 0], -sh[i, 1]
+    for k in range(1, m):
+        b[k, 0], b[k, 1] = ah[e0 + k - 1, 0], ah[e0 + k - 1, 1]
+    F00, F01, F10, F11 = Fh[i, 0, 0], Fh[i, 0, 1], Fh[i, 1, 0], Fh[i, 1, 1]
+    for k in range(1, m):
+        e = e0 + k - 1
+        c = hgc[e]
+        if c == 0.0:  # no penalty across a GAG/tissue interface
+            continue
+        j = nbr[e]
+        sx, sy = M[k, 0], M[k, 1]
+        r0 = sx * x[j, 0] - x[i, 0]
+        r1 = sy * x[j, 1] - x[i, 1]
+        d = np.sqrt(r0 * r0 + r1 * r1)
+        n0, n1 = r0 / d, r1 / d
+        q0 = F00 * R[e, 0] + F01 * R[e, 1]
+        q1 = F10 * R[e, 0] + F11 * R[e, 1]
+        qn = q0 * n0 + q1 * n1
+        delta = qn - d
+        # d delta / d r = (q - (n.q) n)/d - n
+        u0 = (q0 - qn * n0) / d - n0
+        u1 = (q1 - qn * n1) / d - n1
+        # H = c [n (x) u + delta (I - n n)/d]
+        h00 = c * (n0 * u0 + delta * (1.0 - n0 * n0) / d)
+        h01 = c * (n0 * u1 - delta * n0 * n1 / d)
+        h10 = c * (n1 * u0 - delta * n1 * n0 / d)
+        h11 = c * (n1 * u1 + delta * (1.0 - n1 * n1) / d)
+        for p in range(m):
+            coef = c * (b[p, 0] * R[e, 0] + b[p, 1] * R[e, 1])
+            mn0, mn1 = M[p, 0] * n0, M[p, 1] * n1
+            g00, g01 = coef * n0 * mn0, coef * n0 * mn1
+            g10, g11 = coef * n1 * mn0, coef * n1 * mn1
+            if p == 0:
+                g00 -= h00
+                g01 -= h01
+                g10 -= h10
+                g11 -= h11
+            if p == k:
+                g00 += h00 * sx
+                g01 += h01 * sy
+                g10 += h10 * sx
+                g11 += h11 * sy
+            bi = blockmap[p]  # (node 0, node p)
+            data[bi, 0, 0] -= g00
+            data[bi, 0, 1] -= g01
+            data[bi, 1, 0] -= g10
+            data[bi, 1, 1] -= g11
+            bj = blockmap[k * m + p]  # (node k, node p)
+            data[bj, 0, 0] += sx * g00
+            data[bj, 0, 1] += sx * g01
+            data[bj, 1, 0] += sy * g10
+            data[bj, 1, 1] += sy * g11

@@ -351,14 +351,9 @@ def continue_path(
                 return Path(states, "no equilibrium", np.nan, reason), reached
             continue
         states.append(s)
+        held = f"{name} = {s.concentration:.4g} {unit} (residual {s.convergence.residual:.2e})"
         log.info(
-            "[%s] volume control: pool at %.3g times its reference volume holds %s = %.4g %s (residual %.2e)",
-            run,
-            s.volume / reference,
-            name,
-            s.concentration,
-            unit,
-            s.convergence.residual,
+            "[%s] volume control: pool at %.3g times its reference volume holds %s", run, s.volume / reference, held
         )
         points.append((s.volume, s.concentration))
         if s.concentration < c:  # past the largest concentration: a limit point

@@ -108,20 +108,11 @@ def _follow(path_solver, x0, load, run, max_steps, handoff, damping) -> solver.S
                 rel, ev = best
                 m = max(m, damping) * 10.0**attempts
             else:
-                conv = solver.Convergence(
-                    conv.residual,
-                    k + conv.iterations,
-                    n_eval + conv.force_evaluations,
-                    n_jac + conv.jacobians,
-                    time.perf_counter() - t0,
-                )
+                counts = (k + conv.iterations, n_eval + conv.force_evaluations, n_jac + conv.jacobians)
+                conv = solver.Convergence(conv.residual, *counts, time.perf_counter() - t0)
+                moved = f"moved {float(np.abs(x - x0).max()):.3g} um at most, residual {conv.residual:.2e}"
                 log.info(
-                    "[%s] snap at %s: at rest after %d pseudo-time steps, moved %.3g um at most, residual %.2e",
-                    run,
-                    solver.describe(load),
-                    k,
-                    float(np.abs(x - x0).max()),
-                    conv.residual,
+                    "[%s] snap at %s: at rest after %d pseudo-time steps, %s", run, solver.describe(load), k, moved
                 )
                 return solver.State(load, x, ev_n, conv)
         data = model.jacobian(ev)
@@ -149,14 +140,8 @@ def _follow(path_solver, x0, load, run, max_steps, handoff, damping) -> solver.S
             raise NoStableState(
                 run, load, f"the pseudo-dynamics came to rest at no equilibrium (lowest residual {best[0]:.3g})"
             )
-        log.debug(
-            "[%s] snap step %d: residual %.3e, damping %.2e, moved %.3g um at most",
-            run,
-            k,
-            rel,
-            m,
-            float(np.abs(ev.x - x0).max()),
-        )
+        moved = float(np.abs(ev.x - x0).max())
+        log.debug("[%s] snap step %d: residual %.3e, damping %.2e, moved %.3g um at most", run, k, rel, m, moved)
     raise NoStableState(
         run,
         load,

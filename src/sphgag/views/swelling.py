@@ -237,32 +237,55 @@ def fig4(
     levels = sorted(tips.pressure_mmHg.unique())
     colours = pressure_colours([*pressures, *levels])
     hues = {f"{p:g} mmHg": pressure_colour(colours, p) for p in levels}
-    long = long_measures(
-        tips.assign(pressure=tips.pressure_mmHg.map("{:g} mmHg".format)),
-        {c: POOL_MEASURES[c] for c in ("tip_radial_stress_kPa", "tip_peak_radial_stress_kPa", "top_circ_stress_kPa")},
-        ["pool_model", "model", "case", "stage", "pressure", "concentration_mEq_l"],
-    )
-    long = long[(long.stage == "converted") | (long.statistic == "region mean")]  # no peak of the intact wall
+    long = _tip_and_top(tips)
     blocks = [(pool, m) for pool in pools for m in models]
-    long["panel"] = long.pool_model + "|" + long.model + "|" + long.quantity  # a row's key: the block and stress
     panels = [(pool, m, q) for pool, m in blocks for q in (TIP, TOP)]
     rows = ["(a)", *("|".join(p) for p in panels), *(["volume"] if resolution is not None else [])]
-    grid = sns.FacetGrid(
-        long,
-        row="panel",
-        col="case",
-        row_order=rows,
-        col_order=names,
-        sharex=False,
-        sharey="row",
-        height=1.9,
-        aspect=2.5 / 1.9,
-    )
+    facets = dict(row="panel", col="case", row_order=rows, col_order=names, sharex=False, sharey="row")
+    grid = sns.FacetGrid(long, **facets, height=1.9, aspect=2.5 / 1.9)
     grid.map_dataframe(swelling_lines, colours=hues, max_concentration=max_concentration)
     grid.set_titles("")
     grid.set_axis_labels(GAG_CONCENTRATION, "")
     for ax in grid.axes[1 : 1 + len(panels)].flat:  # one concentration axis: a run that ended early ends short
         ax.set_xlim(-0.04 * max_concentration, 1.04 * max_concentration)
+    _block_headings(grid, blocks, panels, max_concentration)
+    for ax, name in zip(grid.axes[0], names):
+        pool_geometry_panel(
+            ax,
+            particles,
+            cases[name],
+            probe_length,
+            f"(a) case {name}: {cases[name]['angular_extent_deg']:g} deg",
+            pool_layers,
+        )
+    grid.axes[0, 0].set_ylabel("radius (um)")
+    legend = dict(grid._legend_data)
+    legend[PAPER_TIP_LABEL] = Line2D([], [], **PAPER_TIP_STYLE)
+    _resolution_panels(grid, legend, panels, names, law, len(blocks), band, resolution)
+    grid.add_legend(legend_data=legend, label_order=list(legend), fontsize=7)
+    title = textwrap.fill(f"Figure 4: {law_title(law)}", 75)
+    grid.tight_layout()
+    fig = grid.figure
+    fig.suptitle(title, x=0.01, y=1.0, ha="left", va="top", fontsize=10, fontweight="bold")
+    fig.subplots_adjust(top=fig.subplotpars.top - (0.2 + 0.17 * title.count("\n")) / fig.get_figheight())
+    return grid.figure
+
+
+def _tip_and_top(tips: pd.DataFrame) -> pd.DataFrame:
+    """Figure 4's measures of ``tips`` in long form, each row keyed by its panel (``panel``: the pool model, the wall
+    and the stress); no peak of the intact wall."""
+    long = long_measures(
+        tips.assign(pressure=tips.pressure_mmHg.map("{:g} mmHg".format)),
+        {c: POOL_MEASURES[c] for c in ("tip_radial_stress_kPa", "tip_peak_radial_stress_kPa", "top_circ_stress_kPa")},
+        ["pool_model", "model", "case", "stage", "pressure", "concentration_mEq_l"],
+    )
+    long = long[(long.stage == "converted") | (long.statistic == "region mean")]
+    return long.assign(panel=long.pool_model + "|" + long.model + "|" + long.quantity)
+
+
+def _block_headings(grid, blocks, panels, max_concentration):
+    """Figure 4's block letters and walls above their rows (as the paper's (b) and (c)), the paper's tip mark, the
+    stresses' labels, and the concentration axis labelled below each block only (:func:`fig4`)."""
     for k, (pool, m) in enumerate(blocks):  # the block's letter and wall above its rows, as the paper's (b) and (c)
         top = 1 + 2 * k
         heading = f"({'bcdefghijklmnopqrstuvwxyz'[k]}) {m} model"
@@ -277,18 +300,12 @@ def fig4(
     for k in range(len(blocks) - 1):
         for ax in grid.axes[1 + 2 * k + 1]:
             ax.set_xlabel(GAG_CONCENTRATION)
-    for ax, name in zip(grid.axes[0], names):
-        pool_geometry_panel(
-            ax,
-            particles,
-            cases[name],
-            probe_length,
-            f"(a) case {name}: {cases[name]['angular_extent_deg']:g} deg",
-            pool_layers,
-        )
-    grid.axes[0, 0].set_ylabel("radius (um)")
-    legend = dict(grid._legend_data)
-    legend[PAPER_TIP_LABEL] = Line2D([], [], **PAPER_TIP_STYLE)
+
+
+def _resolution_panels(grid, legend, panels, names, law, n_blocks, band, resolution):
+    """Figure 4's resolution study (:func:`fig4`): the GCI band and extrapolated curve on its pools' panels, the last
+    row of the tip radial stress at every spacing, and their legend entries (into ``legend``); or the note that it
+    was not run."""
     if band is not None:
         converted = band[(band.stage == "converted") & (band.charge_law == law)]
         quantity = {TIP: "tip_radial_stress_kPa", TOP: "top_circ_stress_kPa"}
@@ -313,16 +330,9 @@ def fig4(
         for dx, colour in shades.items():
             legend[f"resolution study: dx = {dx:g} um"] = Line2D([], [], color=colour, marker="o", ms=2.5, lw=1.0)
         grid.axes[-1, 0].set_ylabel(TIP)
-        grid.axes[-1, 0].set_title(f"({'bcdefghijklmnopqrstuvwxyz'[len(blocks)]}) every dx", loc="left")
+        grid.axes[-1, 0].set_title(f"({'bcdefghijklmnopqrstuvwxyz'[n_blocks]}) every dx", loc="left")
         for wall, dashes in (("passive", "-"), ("active", "--")):
             legend[f"resolution study: {wall} (every dx)"] = Line2D([], [], color="0.3", ls=dashes, lw=1.0)
-    grid.add_legend(legend_data=legend, label_order=list(legend), fontsize=7)
-    title = textwrap.fill(f"Figure 4: {law_title(law)}", 75)
-    grid.tight_layout()
-    fig = grid.figure
-    fig.suptitle(title, x=0.01, y=1.0, ha="left", va="top", fontsize=10, fontweight="bold")
-    fig.subplots_adjust(top=fig.subplotpars.top - (0.2 + 0.17 * title.count("\n")) / fig.get_figheight())
-    return grid.figure
 
 
 def swelling_convergence(table: pd.DataFrame, laws=None):

@@ -24,57 +24,8 @@ def verification_pool(table: pd.DataFrame, profiles: pd.DataFrame):
     _style()
     fig, axes = plt.subplots(1, 4, figsize=(16.0, 3.1))
     Pi = float(table.pressure_kPa.iloc[0])
-    colour = lambda r: RATIO_COLOURS.get(float(r), "k")  # noqa: E731
-    ax = axes[0]
-    rings = profiles[profiles.profile == "rings"]
-    if len(rings):
-        b = float(table[table.aspect_ratio == 1.0].semi_axis_b_um.iloc[0])
-        for k, (res, g) in enumerate(sorted(rings.groupby("b_over_dx"), key=lambda t: t[0])[-2:]):
-            mk = "os"[k]
-            ax.plot(
-                g.radius_um / b, g.radial_sph_kPa / Pi, mk, ms=3, mfc="none", color="C0", label=f"SPH b/dx = {res:g}"
-            )
-            ax.plot(g.radius_um / b, g.circ_sph_kPa / Pi, mk, ms=3, mfc="none", color="C3")
-        g = rings[rings.b_over_dx == rings.b_over_dx.max()].sort_values("radius_um")
-        ax.plot(g.radius_um / b, g.radial_exact_kPa / Pi, "-", color="C0", lw=1, label=r"Lamé $\sigma_{rr}$")
-        ax.plot(g.radius_um / b, g.circ_exact_kPa / Pi, "-", color="C3", lw=1, label=r"Lamé $\sigma_{\theta\theta}$")
-        ax.axvline(1.0, color="0.7", lw=0.6)
-    ax.set(xlabel="r / R", ylabel="stress / Pi", title="(a) circular inclusion: ring means")
-    ax.legend(frameon=False, fontsize=6.5)
-    ax = axes[1]
-    for ratio, g in table.groupby("aspect_ratio"):
-        finest = g.b_over_dx.max()
-        p = profiles[(profiles.profile == "axis") & (profiles.aspect_ratio == ratio) & (profiles.b_over_dx == finest)]
-        b = float(g.semi_axis_b_um.iloc[0])
-        ax.plot(p.s_um / b, p.hoop_exact_kPa / Pi, "-", color=colour(ratio), lw=1)
-        ax.plot(
-            p.s_um / b,
-            p.hoop_sph_kPa / Pi,
-            "o",
-            ms=2.5,
-            mfc="none",
-            color=colour(ratio),
-            label=f"a/b = {ratio:g} (b/dx = {finest:g})",
-        )
-        row = g[g.b_over_dx == finest].iloc[0]
-        ax.plot([0], [row.tip_stress_kPa / Pi], "*", ms=8, color=colour(ratio))
-        ax.plot([0], [row.reference_kPa / Pi], "_", ms=14, mew=1.5, color="k")
-    ax.set(
-        xlim=(0, None),
-        xlabel="distance ahead of the tip / b",
-        ylabel="hoop stress / Pi",
-        title="(b) ahead of the tip: SPH (o), Inglis (-)",
-    )
-    ax.text(
-        0.98,
-        0.97,
-        f"* fit of the first {TIP_PARTICLES} particles\n- Inglis Pi (2a/b - 1)",
-        transform=ax.transAxes,
-        ha="right",
-        va="top",
-        fontsize=6.5,
-    )
-    ax.legend(frameon=False, fontsize=6.5, loc="center right")
+    _lame_panel(axes[0], table, profiles, Pi)
+    _inglis_panel(axes[1], table, profiles, Pi)
     ratios = sorted(table.aspect_ratio.unique())
     errors = table.assign(
         tip=table.rel_error.abs(),
@@ -100,6 +51,62 @@ def verification_pool(table: pd.DataFrame, profiles: pd.DataFrame):
     axes[3].set(ylabel="/ Pi", title="(d) field rms error, traction jump")
     fig.tight_layout()
     return fig
+
+
+def _lame_panel(ax, table, profiles, Pi):
+    """(a) of :func:`verification_pool`: the circular inclusion's ring means against Lamé's field."""
+    rings = profiles[profiles.profile == "rings"]
+    if len(rings):
+        b = float(table[table.aspect_ratio == 1.0].semi_axis_b_um.iloc[0])
+        for k, (res, g) in enumerate(sorted(rings.groupby("b_over_dx"), key=lambda t: t[0])[-2:]):
+            mk = "os"[k]
+            ax.plot(
+                g.radius_um / b, g.radial_sph_kPa / Pi, mk, ms=3, mfc="none", color="C0", label=f"SPH b/dx = {res:g}"
+            )
+            ax.plot(g.radius_um / b, g.circ_sph_kPa / Pi, mk, ms=3, mfc="none", color="C3")
+        g = rings[rings.b_over_dx == rings.b_over_dx.max()].sort_values("radius_um")
+        ax.plot(g.radius_um / b, g.radial_exact_kPa / Pi, "-", color="C0", lw=1, label=r"Lamé $\sigma_{rr}$")
+        ax.plot(g.radius_um / b, g.circ_exact_kPa / Pi, "-", color="C3", lw=1, label=r"Lamé $\sigma_{\theta\theta}$")
+        ax.axvline(1.0, color="0.7", lw=0.6)
+    ax.set(xlabel="r / R", ylabel="stress / Pi", title="(a) circular inclusion: ring means")
+    ax.legend(frameon=False, fontsize=6.5)
+
+
+def _inglis_panel(ax, table, profiles, Pi):
+    """(b) of :func:`verification_pool`: the hoop stress ahead of the tip against Inglis, per aspect ratio."""
+    for ratio, g in table.groupby("aspect_ratio"):
+        finest = g.b_over_dx.max()
+        p = profiles[(profiles.profile == "axis") & (profiles.aspect_ratio == ratio) & (profiles.b_over_dx == finest)]
+        b = float(g.semi_axis_b_um.iloc[0])
+        ax.plot(p.s_um / b, p.hoop_exact_kPa / Pi, "-", color=RATIO_COLOURS.get(float(ratio), "k"), lw=1)
+        ax.plot(
+            p.s_um / b,
+            p.hoop_sph_kPa / Pi,
+            "o",
+            ms=2.5,
+            mfc="none",
+            color=RATIO_COLOURS.get(float(ratio), "k"),
+            label=f"a/b = {ratio:g} (b/dx = {finest:g})",
+        )
+        row = g[g.b_over_dx == finest].iloc[0]
+        ax.plot([0], [row.tip_stress_kPa / Pi], "*", ms=8, color=RATIO_COLOURS.get(float(ratio), "k"))
+        ax.plot([0], [row.reference_kPa / Pi], "_", ms=14, mew=1.5, color="k")
+    ax.set(
+        xlim=(0, None),
+        xlabel="distance ahead of the tip / b",
+        ylabel="hoop stress / Pi",
+        title="(b) ahead of the tip: SPH (o), Inglis (-)",
+    )
+    ax.text(
+        0.98,
+        0.97,
+        f"* fit of the first {TIP_PARTICLES} particles\n- Inglis Pi (2a/b - 1)",
+        transform=ax.transAxes,
+        ha="right",
+        va="top",
+        fontsize=6.5,
+    )
+    ax.legend(frameon=False, fontsize=6.5, loc="center right")
 
 
 def round_log_ticks(axis):
@@ -254,52 +261,63 @@ def verification_annulus(table: pd.DataFrame, orders: pd.DataFrame, exact: pd.Da
     spacings = sorted(table.dx_um.unique(), reverse=True)
     colours = dict(zip(spacings, sns.color_palette("viridis", len(spacings)).as_hex()))
     for ax, (model, ratio) in zip(axes[0], cases):
-        case = table[(table.pool_model == model) & (table.outer_ratio == ratio)]
-        top = float(case.limit_pressure_kPa.iloc[0])
-        curve = exact[(exact.pool_model == model) & (exact.outer_ratio == ratio)]
-        ax.plot(curve.volume_ratio, curve.pressure_kPa / top, color="k", lw=1.0, label="exact (engine's laws)")
-        if annulus.POOL_MODELS[model].empty:  # the incompressible closed form is the empty hole's
-            ax.plot(
-                curve.volume_ratio, curve.incompressible_kPa / top, color="0.5", lw=0.8, ls=":", label="incompressible"
-            )
-        ax.axhline(1.0, color="0.6", lw=0.6, ls="--")
-        for dx, g in case.groupby("dx_um"):
-            below = g[(g.fraction < 1.0) & g.state]
-            ax.plot(
-                below.volume_ratio, below.fraction, "o", ms=3.5, mfc="none", color=colours[dx], label=f"dx = {dx:g} um"
-            )
-            above = g[g.fraction > 1.0]
-            for r in above.itertuples():
-                held = r.discrete_limit_kPa if r.beyond_end == "limit point" else r.largest_held_kPa
-                ax.plot([ax.get_xlim()[1]], [held / top], "<", ms=4, color=colours[dx], clip_on=False)
-        beyond = case[case.fraction > 1.0]
-        states = int(beyond.state.sum())
-        kind = case.limit_kind.iloc[0]
-        ax.set(
-            xscale="log",
-            xlabel="pool volume ratio J",
-            ylabel="Pi / largest exact Pi",
-            title=f"{model}, B/A = {ratio:g} ({kind} {top:.1f} kPa)",
-            ylim=(0.0, 1.15),
-        )
-        ax.text(
-            0.03,
-            0.97,
-            f"at {beyond.fraction.max():.2f} x the limit: {states} state{'' if states == 1 else 's'}\n"
-            + "; ".join(sorted(set(beyond.beyond_end.astype(str))))
-            + " (<: the largest Pi held)",
-            transform=ax.transAxes,
-            fontsize=6,
-            va="top",
-        )
+        _annulus_path(ax, table, exact, model, ratio, colours)
     axes[0][0].legend(frameon=False, fontsize=6, loc="lower right")
+    ratios = sorted(table.outer_ratio.unique())
+    below = table[(table.fraction < 1.0) & table.state]
+    _annulus_errors(axes[1], below, orders, ratios, spacings)
+    _annulus_rings(axes[1][3], below, ratios, colours)
+    for spare in axes[1][4:]:
+        spare.axis("off")
+    fig.tight_layout()
+    return fig
+
+
+def _annulus_path(ax, table, exact, model, ratio, colours):
+    """One top panel of :func:`verification_annulus`: the pool model ``model`` at B/A ``ratio``."""
+    case = table[(table.pool_model == model) & (table.outer_ratio == ratio)]
+    top = float(case.limit_pressure_kPa.iloc[0])
+    curve = exact[(exact.pool_model == model) & (exact.outer_ratio == ratio)]
+    ax.plot(curve.volume_ratio, curve.pressure_kPa / top, color="k", lw=1.0, label="exact (engine's laws)")
+    if annulus.POOL_MODELS[model].empty:  # the incompressible closed form is the empty hole's
+        ax.plot(curve.volume_ratio, curve.incompressible_kPa / top, color="0.5", lw=0.8, ls=":", label="incompressible")
+    ax.axhline(1.0, color="0.6", lw=0.6, ls="--")
+    for dx, g in case.groupby("dx_um"):
+        below = g[(g.fraction < 1.0) & g.state]
+        ax.plot(below.volume_ratio, below.fraction, "o", ms=3.5, mfc="none", color=colours[dx], label=f"dx = {dx:g} um")
+        above = g[g.fraction > 1.0]
+        for r in above.itertuples():
+            held = r.discrete_limit_kPa if r.beyond_end == "limit point" else r.largest_held_kPa
+            ax.plot([ax.get_xlim()[1]], [held / top], "<", ms=4, color=colours[dx], clip_on=False)
+    beyond = case[case.fraction > 1.0]
+    states = int(beyond.state.sum())
+    kind = case.limit_kind.iloc[0]
+    ax.set(
+        xscale="log",
+        xlabel="pool volume ratio J",
+        ylabel="Pi / largest exact Pi",
+        title=f"{model}, B/A = {ratio:g} ({kind} {top:.1f} kPa)",
+        ylim=(0.0, 1.15),
+    )
+    ax.text(
+        0.03,
+        0.97,
+        f"at {beyond.fraction.max():.2f} x the limit: {states} state{'' if states == 1 else 's'}\n"
+        + "; ".join(sorted(set(beyond.beyond_end.astype(str))))
+        + " (<: the largest Pi held)",
+        transform=ax.transAxes,
+        fontsize=6,
+        va="top",
+    )
+
+
+def _annulus_errors(row, below, orders, ratios, spacings):
+    """The bottom row's error panels of :func:`verification_annulus` and their legend (``row[2]``)."""
     markers = dict(zip(sorted(orders.fraction.unique()), "os^vDP"))
     styles = {"hole": "--", "particles": "-"}
-    ratios = sorted(table.outer_ratio.unique())
     hues = dict(zip(ratios, sns.color_palette("Dark2", len(ratios)).as_hex()))
-    below = table[(table.fraction < 1.0) & table.state]
     for ax, (error, title) in zip(
-        axes[1], (("volume_error", "(a) pool volume ratio"), ("lining_hoop_error", "(b) hoop stress at the hole"))
+        row, (("volume_error", "(a) pool volume ratio"), ("lining_hoop_error", "(b) hoop stress at the hole"))
     ):
         for (model, ratio, f), g in below.groupby(["pool_model", "outer_ratio", "fraction"]):
             g = g.sort_values("dx_um")
@@ -320,16 +338,19 @@ def verification_annulus(table: pd.DataFrame, orders: pd.DataFrame, exact: pd.Da
         ax.set(xlabel="dx (um)", ylabel="|relative error|", title=title)
         ax.set_xticks(spacings, [f"{d:g}" for d in spacings])
         ax.minorticks_off()
-    axes[1][2].axis("off")
-    axes[1][2].legend(
-        *axes[1][1].get_legend_handles_labels(),
+    row[2].axis("off")
+    row[2].legend(
+        *row[1].get_legend_handles_labels(),
         title="observed order (finer pair):\nvolume ratio / hoop stress",
         title_fontsize=6,
         frameon=False,
         fontsize=5.5,
         loc="center",
     )
-    ax = axes[1][3]
+
+
+def _annulus_rings(ax, below, ratios, colours):
+    """The bottom row's last panel of :func:`verification_annulus`: how far the GAG particles reach past the lining."""
     crossing = below[below.pool_model.isin([annulus.POOL_MODELS.paper.name])]  # the paper's particles only
     for (ratio, dx), g in crossing.groupby(["outer_ratio", "dx_um"]):
         style = "-" if ratio == ratios[0] else "--"
@@ -346,10 +367,6 @@ def verification_annulus(table: pd.DataFrame, orders: pd.DataFrame, exact: pd.Da
     ax.axhline(0.0, color="0.6", lw=0.6)
     ax.set(xlabel="Pi / largest exact Pi", ylabel="GAG beyond the lining (um)", title="(c) order of the rings")
     ax.legend(frameon=False, fontsize=5.5)
-    for spare in axes[1][4:]:
-        spare.axis("off")
-    fig.tight_layout()
-    return fig
 
 
 def verification_profiles(rings: pd.DataFrame, table: pd.DataFrame, pressure_mmHg: float):
