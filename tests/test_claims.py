@@ -7,7 +7,13 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from sphgag.studies import claims
+from sphgag.studies.claims.calibration import CALIBRATION
+from sphgag.studies.claims.delamination import c18_onset_across_inputs
+from sphgag.studies.claims.evidence import Claim, Evidence, last_converged, of_law
+from sphgag.studies.claims.procedure import procedure_claims
+from sphgag.studies.claims.swelling import across_band, c8_tensile_tip, c9_smaller_pools_higher_tip
+from sphgag.studies.claims.verdicts import POOL, by_law, delamination_claims, markdown, swelling_claims, variants
+from sphgag.studies.claims.verdicts import table as claims_table
 
 CASES = {"I": {"angular_extent_deg": 3.0}, "IV": {"angular_extent_deg": 16.0}}
 
@@ -36,16 +42,16 @@ def tips_table(law: str, last: dict | None = None, levels=(0.0, 50.0, 100.0, 150
 
 
 def test_every_run_at_the_requested_concentration_reads_as_before():
-    found = {c.claim_id: c for c in claims.swelling_claims(tips_table("conserved"), CASES, 150.0)}
+    found = {c.claim_id: c for c in swelling_claims(tips_table("conserved"), CASES, 150.0)}
     assert found["C8"].our_value.startswith("at 150 mEq/l: ")
     assert "tip radial stress at 150 mEq/l decreases" in found["C9"].our_value
 
 
 def test_a_run_that_ended_early_is_read_at_its_last_converged_state():
     tips = tips_table("prescribed", last={("passive", "IV", 103.0): 100.0})
-    top = claims.last_converged(tips)
+    top = last_converged(tips)
     assert len(top) == 8 and sorted(top.concentration_mEq_l.unique()) == [100.0, 150.0]
-    found = {c.claim_id: c for c in claims.swelling_claims(tips, CASES, 150.0)}
+    found = {c.claim_id: c for c in swelling_claims(tips, CASES, 150.0)}
     assert "at each run's last converged state (100-150 mEq/l; 1/8 runs found no equilibrium up to 150)" in (
         found["C8"].our_value
     )
@@ -61,15 +67,15 @@ def test_pool_claims_are_one_row_per_claim_law_and_pool_model():
     )
     tips["pool_model"] = tips.pool_model.fillna("particles")
     pairs = [("prescribed", "particles"), ("conserved", "particles"), ("prescribed", "cavity")]
-    found = claims.by_law(pairs, lambda law, pool: claims.swelling_claims(claims.of_law(tips, law, pool), CASES, 150.0))
-    table = claims.table(found)
+    found = by_law(pairs, lambda law, pool: swelling_claims(of_law(tips, law, pool), CASES, 150.0))
+    table = claims_table(found)
     assert list(table.columns[:4]) == ["claim_id", "charge_law", "pool_model", "path"]
     assert list(table.claim_id[:6]) == ["C6"] * 3 + ["C7"] * 3
     assert list(zip(table.charge_law[:3], table.pool_model[:3])) == pairs
     c8 = table[(table.claim_id == "C8") & (table.pool_model == "particles")].set_index("charge_law")
     assert c8.loc["prescribed", "our_value"] != c8.loc["conserved", "our_value"]  # each law its own numbers
     assert set(c8.criterion) == {c8.criterion.iloc[0]}  # one criterion for both
-    md = claims.markdown(table)
+    md = markdown(table)
     assert "| C8 | prescribed | particles |" in md and "| C8 | conserved | particles |" in md
     assert "| C8 | prescribed | cavity |" in md
 
@@ -80,12 +86,12 @@ def test_claims_evaluate_every_law_with_the_papers_pool_model_and_the_other_pool
         ignore_index=True,
     )
     tips["pool_model"] = tips.pool_model.fillna("particles")
-    assert claims.variants(tips, ["prescribed", "conserved"]) == [
+    assert variants(tips, ["prescribed", "conserved"]) == [
         ("prescribed", "particles"),
         ("conserved", "particles"),
         ("prescribed", "cavity"),
     ]
-    assert claims.variants(None, ["prescribed"]) == [("prescribed", "particles")]
+    assert variants(None, ["prescribed"]) == [("prescribed", "particles")]
 
 
 def delamination_tables(names: dict):
@@ -112,8 +118,8 @@ def test_delamination_claims_follow_the_pool_sets_roles():
     """The same runs under other names give the same claims when the roles name them."""
     default = dict(fig5="single", fig6=["low_separation", "high_separation"], fig7="radial_offset")
     renamed = dict(fig5="alone", fig6=["pair_2deg", "high_separation"], fig7="offset")
-    a = claims.delamination_claims(*delamination_tables(default), ["averaged"], default)
-    b = claims.delamination_claims(*delamination_tables(renamed), ["averaged"], renamed)
+    a = delamination_claims(*delamination_tables(default), ["averaged"], default)
+    b = delamination_claims(*delamination_tables(renamed), ["averaged"], renamed)
     assert [c.holds for c in a] == [c.holds for c in b]
     assert [c.our_value.replace("pair_2deg", "low_separation") for c in b] == [c.our_value for c in a]
     assert {c.claim_id: c.holds for c in a}["C17"] == "yes"  # figure 7's set, found by its role
@@ -122,20 +128,17 @@ def test_delamination_claims_follow_the_pool_sets_roles():
 
 
 def test_each_claim_is_one_function_of_the_list_in_the_tables_order():
-    ids = [f.__name__.split("_")[0].upper() for f in claims.CALIBRATION + claims.POOL]
+    ids = [f.__name__.split("_")[0].upper() for f in CALIBRATION + POOL]
     assert ids == [f"C{k}" for k in range(1, 19)]
 
 
 def test_a_claim_is_evaluated_alone():
     tips = tips_table("prescribed")
-    e = claims.Evidence(tips=tips, cases=CASES, max_concentration=150.0)
-    c8 = claims.c8_tensile_tip(e)
+    e = Evidence(tips=tips, cases=CASES, max_concentration=150.0)
+    c8 = c8_tensile_tip(e)
     assert c8.claim_id == "C8" and c8.our_value.startswith("at 150 mEq/l: ")
     both = pd.concat([tips, tips_table("conserved")], ignore_index=True)
-    assert (
-        claims.c8_tensile_tip(claims.Evidence(tips=both, cases=CASES, max_concentration=150.0).of_law("prescribed"))
-        == c8
-    )
+    assert c8_tensile_tip(Evidence(tips=both, cases=CASES, max_concentration=150.0).of_law("prescribed")) == c8
 
 
 def samples_table(law: str, onsets) -> pd.DataFrame:
@@ -155,11 +158,9 @@ def test_a_claim_whose_target_has_not_run_is_in_the_table_marked_not_run():
     laws = ["prescribed", "conserved"]
 
     def c18(e):
-        return claims.by_law(
-            [(law, "particles") for law in laws], lambda law, _: [claims.c18_onset_across_inputs(e.of_law(law))]
-        )
+        return by_law([(law, "particles") for law in laws], lambda law, _: [c18_onset_across_inputs(e.of_law(law))])
 
-    without = claims.table(c18(claims.Evidence(tips=tips, cases=CASES)))
+    without = claims_table(c18(Evidence(tips=tips, cases=CASES)))
     assert list(without.charge_law) == laws and list(without.claim_id) == ["C18", "C18"]
     assert (without.holds == "not run").all() and (without.our_value == "not run: `snakemake sensitivity`").all()
     assert without.statement.iloc[0].startswith("Across the model's input ranges")
@@ -168,12 +169,12 @@ def test_a_claim_whose_target_has_not_run_is_in_the_table_marked_not_run():
         [samples_table("prescribed", [90.0, 100.0, nan]), samples_table("conserved", [nan, nan, 150.0])],
         ignore_index=True,
     )
-    e = claims.Evidence(tips=tips, cases=CASES, sensitivity=samples)
+    e = Evidence(tips=tips, cases=CASES, sensitivity=samples)
     found = {
         c.charge_law: c
-        for c in claims.by_law(
+        for c in by_law(
             [("prescribed", "particles"), ("conserved", "particles")],
-            lambda law, _: [claims.c18_onset_across_inputs(e.of_law(law))],
+            lambda law, _: [c18_onset_across_inputs(e.of_law(law))],
         )
     }
     assert found["prescribed"].holds == "yes" and found["conserved"].holds == "no"
@@ -203,19 +204,19 @@ def test_a_figure_4_claim_holds_only_if_it_holds_at_every_spacing_and_extrapolat
     resolution = resolution_table("prescribed")
     band = swelling_band(resolution, 103.0)
     tips = tips_table("prescribed").assign(pool_model="particles")
-    e = claims.Evidence(tips=tips, cases=CASES, max_concentration=150.0, resolution=resolution, band=band)
+    e = Evidence(tips=tips, cases=CASES, max_concentration=150.0, resolution=resolution, band=band)
     e = replace(e, study_pressure=103.0)
-    found = {c.claim_id: c for c in claims.across_band(e, claims.swelling_claims(tips, CASES, 150.0))}
-    assert claims.c9_smaller_pools_higher_tip(e).holds == "yes"
+    found = {c.claim_id: c for c in across_band(e, swelling_claims(tips, CASES, 150.0))}
+    assert c9_smaller_pools_higher_tip(e).holds == "yes"
     c9 = found["C9"]
     assert c9.holds == "no"
     assert c9.across_band.startswith("dx 3: yes (+20), dx 2.12: yes (+11), dx 1.5: yes (+5), extrapolated: no (-10)")
     assert found["C6"].holds == "yes" and found["C6"].across_band.startswith("dx 3: yes (+50), dx 2.12: yes (+50)")
     assert found["C10"].across_band.startswith("n/a")  # one pressure in the study
-    alone = claims.across_band(replace(e, resolution=None, band=None), claims.swelling_claims(tips, CASES, 150.0))
+    alone = across_band(replace(e, resolution=None, band=None), swelling_claims(tips, CASES, 150.0))
     assert all(c.across_band == "not run: `snakemake resolution`" for c in alone)
-    assert [c.holds for c in alone] == [c.holds for c in claims.swelling_claims(tips, CASES, 150.0)]
-    other = claims.across_band(replace(e, resolution=resolution.iloc[:0]), claims.swelling_claims(tips, CASES, 150.0))
+    assert [c.holds for c in alone] == [c.holds for c in swelling_claims(tips, CASES, 150.0)]
+    other = across_band(replace(e, resolution=resolution.iloc[:0]), swelling_claims(tips, CASES, 150.0))
     assert all(c.across_band.startswith("not in the resolution study") for c in other)
 
 
@@ -282,8 +283,8 @@ def _procedure_damage():
 
 
 def test_the_procedure_claims_judge_every_path_with_its_residual():
-    evidence = claims.Evidence(procedure=_procedure_summary(), procedure_damage=_procedure_damage())
-    found = {(c.claim_id, c.path): c for c in claims.procedure_claims(evidence, [])}
+    evidence = Evidence(procedure=_procedure_summary(), procedure_damage=_procedure_damage())
+    found = {(c.claim_id, c.path): c for c in procedure_claims(evidence, [])}
     assert found["P1", "equilibrium"].holds == "no" and found["P1", "explicit x1"].holds == "yes"
     assert found["P1", "explicit x4"].holds == "no" and found["P1", "explicit x4"].margin == pytest.approx(-10.0)
     assert "residual 0.5" in found["P1", "explicit x1"].our_value
@@ -294,10 +295,10 @@ def test_the_procedure_claims_judge_every_path_with_its_residual():
 
 
 def test_the_procedure_claims_stand_beside_the_equilibriums_and_say_when_not_run():
-    c14 = claims.Claim("C14", "sawtooth", "", "30 kPa 4 drops", "yes", "two drops", charge_law="prescribed")
-    rows = claims.procedure_claims(claims.Evidence(procedure=_procedure_summary()), [c14])
+    c14 = Claim("C14", "sawtooth", "", "30 kPa 4 drops", "yes", "two drops", charge_law="prescribed")
+    rows = procedure_claims(Evidence(procedure=_procedure_summary()), [c14])
     p2 = [c for c in rows if c.claim_id == "P2"]
     assert p2[0].path == "equilibrium" and p2[0].holds == "yes" and p2[0].our_value.startswith("C14: ")
-    missing = claims.procedure_claims(claims.Evidence(), [])
+    missing = procedure_claims(Evidence(), [])
     assert [c.holds for c in missing] == ["not run"] * 4
     assert all("snakemake paper_procedure" in c.our_value for c in missing)

@@ -229,7 +229,8 @@ def _ablation(tips: dict) -> pd.DataFrame:
 
 
 def test_claim_p5_judges_the_authors_configuration_and_names_the_largest_steps():
-    from sphgag.studies import claims
+    from sphgag.studies.claims.evidence import Evidence
+    from sphgag.studies.claims.procedure import p5_authors_settings
 
     tips = {
         ("none", "script", "I"): 120.0,
@@ -245,12 +246,12 @@ def test_claim_p5_judges_the_authors_configuration_and_names_the_largest_steps()
         ("temperature", "from_ours", "I"): 399.0,
         ("temperature", "from_ours", "IV"): 1199.0,
     }
-    claim = claims.p5_authors_settings(claims.Evidence(paper_settings=_ablation(tips)))
+    claim = p5_authors_settings(Evidence(paper_settings=_ablation(tips)))
     assert claim.claim_id == "P5" and claim.holds == "yes" and claim.margin == pytest.approx(10.0)
     assert claim.our_value.index("lumen_control") < claim.our_value.index("temperature")
     assert "|" not in claim.our_value  # the report reads the table as reStructuredText: |x| is a substitution
     tips[("none", "script", "IV")] = 200.0
-    assert claims.p5_authors_settings(claims.Evidence(paper_settings=_ablation(tips))).holds == "no"
+    assert p5_authors_settings(Evidence(paper_settings=_ablation(tips))).holds == "no"
     tips[("none", "script", "IV")] = np.nan  # no equilibrium: never a pass
-    assert claims.p5_authors_settings(claims.Evidence(paper_settings=_ablation(tips))).holds == "no"
-    assert claims.p5_authors_settings(claims.Evidence()).holds == "not run"
+    assert p5_authors_settings(Evidence(paper_settings=_ablation(tips))).holds == "no"
+    assert p5_authors_settings(Evidence()).holds == "not run"

@@ -201,8 +201,8 @@ def test_a_plugin_hourglass_form_is_what_the_model_computes_with(hourglass_plugi
 
 def test_the_figures_name_the_pool_models_as_the_registry_titles_them():
     """The views name the pool models without importing the engine (views/style.py): the same names and titles."""
-    from sphgag.studies import claims
+    from sphgag.studies.claims.evidence import PAPER_POOL
     from sphgag.views import style
 
-    assert style.PAPER_POOL == claims.PAPER_POOL == protocols.POOL_MODELS.paper.name
+    assert style.PAPER_POOL == PAPER_POOL == protocols.POOL_MODELS.paper.name
     assert style.POOL_TITLES == {m.name: m.title for m in protocols.POOL_MODELS.deviations()}

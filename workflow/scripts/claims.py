@@ -6,7 +6,8 @@ claims on the pool sets of their figures (``params.figures``, i.e. ``delaminatio
 import pandas as pd
 
 from sphgag import jobs
-from sphgag.studies import claims
+from sphgag.studies.claims.evidence import TARGETS, Evidence
+from sphgag.studies.claims.verdicts import evaluate, markdown, table
 from sphgag.studies.delamination.tables import paper_law
 
 with jobs.run(snakemake) as job:  # noqa: F821
@@ -18,8 +19,8 @@ with jobs.run(snakemake) as job:  # noqa: F821
     # the paper's claims are about its damage law (eq. 2.28 as printed)
     t["growth"], t["delamination"] = paper_law(t["growth"]), paper_law(t["delamination"])
     # the evidence of other targets: read where this run or an earlier one made it, else the claim says "not run"
-    studies = {name: pd.read_csv(p[name]["path"]) if p[name]["state"] != "not run" else None for name in claims.TARGETS}
-    evidence = claims.Evidence(
+    studies = {name: pd.read_csv(p[name]["path"]) if p[name]["state"] != "not run" else None for name in TARGETS}
+    evidence = Evidence(
         **t,
         **studies,
         cases=p.cases,
@@ -28,11 +29,11 @@ with jobs.run(snakemake) as job:  # noqa: F821
         figures=p.figures,
         study_pressure=p.study_pressure,
     )
-    found = claims.evaluate(evidence, p.laws)
-    df = claims.table(found)
+    found = evaluate(evidence, p.laws)
+    df = table(found)
     df.to_csv(job.output.table, index=False)
     with open(job.output.markdown, "w") as fh:
-        fh.write(claims.markdown(df))
+        fh.write(markdown(df))
     for c in found:
         job.log.info(
             "[claims] %s (%s) holds: %s -- %s (ours: %s)", c.claim_id, c.charge_law, c.holds, c.statement, c.our_value

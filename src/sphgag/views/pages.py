@@ -15,8 +15,9 @@ import numpy as np
 import pandas as pd
 
 from ..physics.donnan import PAPER_LAW, charge_law
-from ..studies import claims as claims_
 from ..studies import gci, paper_settings, resolution, wall_profiles
+from ..studies.claims.procedure import P5_CONCENTRATION, P5_RANGE
+from ..studies.claims.verdicts import markdown
 from .names import LAW_FIGURES, law_figure
 
 
@@ -392,7 +393,7 @@ def authors_settings(table: pd.DataFrame) -> str:
     a table: the tip radial stress at claim P5's concentration under each configuration and each one-setting switch
     (``results/paper_settings/ablation.csv``; "no eq." where the path has no equilibrium there), and the settings
     that account for most of the difference (:func:`sphgag.studies.paper_settings.ranked`)."""
-    c, (lo, hi) = claims_.P5_CONCENTRATION, claims_.P5_RANGE
+    c, (lo, hi) = P5_CONCENTRATION, P5_RANGE
     at = table[np.isclose(table.concentration_mEq_l, c)]
     walls = list(dict.fromkeys(zip(at.model, at.case)))
     value = at.set_index(["setting", "direction", "model", "case"]).tip_radial_stress_kPa
@@ -428,7 +429,7 @@ def _kpa(value: float) -> str:
 
 
 def _claims_page(table: pd.DataFrame) -> str:
-    return claims_.markdown(table)
+    return markdown(table)
 
 
 # page -> (title, its figures (the stems of PNG names under figures/: a figure drawn once per charge law is shown once
