@@ -58,7 +58,9 @@ def measure(dx: float, config_path: str) -> dict:
     from sphgag.engine.loading import MMHG_TO_KPA, Load
     from sphgag.engine.model import Model
     from sphgag.physics import materials
-    from sphgag.studies import artery, protocols
+    from sphgag.studies import artery
+    from sphgag.studies.pool_swelling import swelling_load
+    from sphgag.studies.wall_loading import homeostasis, pressurise
 
     threads.use(1)
     cfg = config.validate(config.load_yaml(config_path), ROOT / "config" / "schema.yaml")
@@ -71,8 +73,8 @@ def measure(dx: float, config_path: str) -> dict:
     one = geometry.Sector(lay.radius[k], np.rad2deg(lay.theta[k]), 0.1 * dx, 0.1 * np.rad2deg(dx / lay.radius[k]))
     model = artery.bilayer_model(p, numerics, name=f"bench_dx{dx:g}", pool=one, gag=cfg["gag"])
     assert model.props.converting.size == 1
-    h = protocols.homeostasis(model, numerics, cfg["homeostasis"])
-    start = protocols.pressurise(model, h.state, 103.0, numerics)
+    h = homeostasis(model, numerics, cfg["homeostasis"])
+    start = pressurise(model, h.state, 103.0, numerics)
     load, x = start.load, start.x
     ev = model.evaluate(x, load)
     row = dict(particles=model.n, dx_um=dx, dof=2 * model.n)
@@ -103,7 +105,7 @@ def measure(dx: float, config_path: str) -> dict:
             times.append(time.perf_counter() - t)
             current = target
         row[f"state_after_load_step_ms{label}"] = 1e3 * float(np.median(times))
-        converted = protocols.swelling_load(load, 1.0, 0.0)
+        converted = swelling_load(load, 1.0, 0.0)
         times = []
         for _ in range(3):
             factorised_at_start(path_solver)

@@ -26,7 +26,8 @@ sys.path.insert(0, str(ROOT / "src"))
 from sphgag import config, threads  # noqa: E402
 from sphgag.engine import dynamics  # noqa: E402
 from sphgag.physics.materials import law_gag  # noqa: E402
-from sphgag.studies import convergence, protocols  # noqa: E402
+from sphgag.studies import convergence  # noqa: E402
+from sphgag.studies.pool_swelling import swelling_load  # noqa: E402
 
 SCRIPT_SECONDS_PER_STEP = 2.55  # the authors' script at 1430 particles
 
@@ -59,7 +60,7 @@ def main():
         start = convergence.pressurised_wall(dx, cfg["bilayer"], numerics, cfg["homeostasis"], calibration, False,
                                              pp["pressure_mmHg"], "bench")  # fmt: skip
         model = convergence.case_model(dx, cfg["bilayer"], numerics, gag, case, "bench")
-        load = protocols.swelling_load(start.load, 0.0, 0.0)  # the cost per step does not depend on the state
+        load = swelling_load(start.load, 0.0, 0.0)  # the cost per step does not depend on the state
         swell, relax = (pp["swelling"][k] for k in ("swell", "relax"))
         row = dict(spacing=where, dx_um=dx, particles=model.n)
         for name, stage in (("no_viscosity", swell), ("viscosity", relax)):

@@ -36,7 +36,8 @@ from sphgag import config, threads  # noqa: E402
 from sphgag.engine import measure, solver  # noqa: E402
 from sphgag.engine.numerics import Numerics  # noqa: E402
 from sphgag.physics import cavity, materials  # noqa: E402
-from sphgag.studies import annulus, convergence, protocols, swollen_pool  # noqa: E402
+from sphgag.studies import annulus, convergence, swollen_pool  # noqa: E402
+from sphgag.studies.pool_swelling import swelling_load  # noqa: E402
 
 
 def particle_ratios(model, state, members) -> np.ndarray:
@@ -115,7 +116,7 @@ def conversion_rows(cfg: dict, forms, pressures, cases) -> list[dict]:
                 model = convergence.case_model(dx, bl, numerics, gag, sw["cases"][case], f"volumetric_{case}_{form}")
                 members = model.props.converting
                 path_solver = Numerics.of(numerics).solver(model)
-                base = protocols.swelling_load(start.load, 0.0, 0.0)
+                base = swelling_load(start.load, 0.0, 0.0)
                 intact = path_solver.follow_path(start.x, base, [base], run=model.name)[-1]
                 steps = np.linspace(0.0, 1.0, int(sw["conversion_steps"]) + 1)[1:]
                 reached = [intact]
@@ -131,7 +132,7 @@ def conversion_rows(cfg: dict, forms, pressures, cases) -> list[dict]:
                     path_solver.follow_path(
                         intact.x,
                         base,
-                        [protocols.swelling_load(base, f, 0.0) for f in steps],
+                        [swelling_load(base, f, 0.0) for f in steps],
                         run=model.name,
                         on_state=reached.append,
                     )

@@ -14,7 +14,8 @@ from sphgag import config, threads
 from sphgag.engine import geometry, kernel
 from sphgag.engine.model import Model
 from sphgag.physics import materials
-from sphgag.studies import artery, protocols
+from sphgag.studies import artery
+from sphgag.studies.wall_loading import pressurised_wall
 from sphgag.views import overlap
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -143,7 +144,7 @@ def ci_config():
 def ci_wall(ci_config):
     """The passive CI wall pressurised to the delamination pressure (a state to seed pools in)."""
     numerics = ci_config["numerics"]
-    return protocols.pressurised_wall(
+    return pressurised_wall(
         ci_config["bilayer"],
         numerics,
         ci_config["homeostasis"],

@@ -10,7 +10,8 @@ from sphgag.engine.loading import MMHG_TO_KPA, Load
 from sphgag.physics import materials
 from sphgag.records import state
 from sphgag.records.state import StateMismatch
-from sphgag.studies import artery, protocols
+from sphgag.studies import artery
+from sphgag.studies.wall_loading import bilayer_pressure_diameter, homeostasis
 
 from .conftest import ROOT
 
@@ -24,7 +25,7 @@ from .conftest import ROOT
 def ci(ci_config):
     p, numerics = ci_config["bilayer"], ci_config["numerics"]
     model = artery.bilayer_model(p, numerics, name="test-bilayer")
-    return ci_config, model, protocols.homeostasis(model, numerics, ci_config["homeostasis"])
+    return ci_config, model, homeostasis(model, numerics, ci_config["homeostasis"])
 
 
 def test_layers_and_composition(ci):
@@ -89,7 +90,7 @@ def sweeps(ci):
     out = {}
     for label in ("passive", "active"):
         tube = artery.bilayer_tube(cfg["bilayer"], active=label == "active")
-        out[label] = protocols.bilayer_pressure_diameter(
+        out[label] = bilayer_pressure_diameter(
             model, tube, h.state, cfg["numerics"], cal, active=label == "active", label=label
         )
     return out
@@ -181,7 +182,7 @@ def test_a_three_layer_wall_built_from_config_alone_carries_its_exact_tube_press
     assert np.all(props[lamina, materials.TACT] == 0.0)  # no smc: no active tone
     assert np.all(props[lay.layer_mask("media"), materials.TACT] > 0.0)
 
-    h = protocols.homeostasis(model, cfg["numerics"], cfg["homeostasis"])
+    h = homeostasis(model, cfg["numerics"], cfg["homeostasis"])
     assert h.state.convergence.residual < cfg["numerics"]["tolerance"]
     carried = h.pressures_kPa["reactions"] / MMHG_TO_KPA
     exact = artery.bilayer_tube(b, active=False).pressure(lay.inner_radius) / MMHG_TO_KPA

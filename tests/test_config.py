@@ -287,7 +287,7 @@ def test_the_schemas_enumerations_are_the_registries():
     from sphgag.physics.donnan import CHARGE_LAWS
     from sphgag.studies.candidates import RULES
     from sphgag.studies.onset import CRITERIA
-    from sphgag.studies.protocols import POOL_MODELS
+    from sphgag.studies.pool_swelling import POOL_MODELS
 
     s = config.schema(SCHEMA)
     assert s["properties"]["swelling"]["properties"]["pool_models"]["items"]["enum"] == list(POOL_MODELS)

@@ -12,13 +12,15 @@ from sphgag.engine.history import DAMAGED, SEEDED, HistoryMaterial, ParticleHist
 from sphgag.engine.loading import Load
 from sphgag.physics import materials
 from sphgag.records import state
-from sphgag.studies import artery, protocols
+from sphgag.studies import artery
 from sphgag.studies.delamination import growth
 from sphgag.studies.delamination.front import Front
 from sphgag.studies.delamination.growth import DamageUpdate, GrowthRun, seeded_only
 from sphgag.studies.delamination.settings import Settings
 from sphgag.studies.delamination.snapshots import load_snapshot, save_snapshots
 from sphgag.studies.delamination.tables import GROWTH_COLUMNS, Stop, labelled
+from sphgag.studies.pool_swelling import pool_measurements, pool_table, swell_pool
+from sphgag.studies.wall_loading import homeostasis, pressurise
 
 from .conftest import law_gag
 
@@ -122,16 +124,16 @@ def test_a_huge_critical_stress_gives_no_growth_and_the_swelling_state(ci_config
     # the same equilibrium as the figure 4 protocol at the highest concentration
     sw = dict(ci_config["swelling"], concentration_points=4, max_concentration_mEq_l=st.max_concentration_mEq_l)
     seeded = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], pool=pool, gag=law_gag(ci_config))
-    table = protocols.pool_table(
+    table = pool_table(
         seeded,
-        protocols.swell_pool(seeded, wall, ci_config["numerics"], sw),
+        swell_pool(seeded, wall, ci_config["numerics"], sw),
         pool,
         sw["probe_length_um"],
         law_gag(ci_config),
     )
     final, hist = result.final
     members = np.flatnonzero(hist.gag)
-    ours = protocols.pool_measurements(model, final.evaluation, pool, members, sw["probe_length_um"])
+    ours = pool_measurements(model, final.evaluation, pool, members, sw["probe_length_um"])
     theirs = table.iloc[-1]
     for key in ("tip_radial_stress_kPa", "top_circ_stress_kPa", "pool_volume_change"):
         assert ours[key] == pytest.approx(theirs[key], rel=2e-3, abs=0.05), key
@@ -432,8 +434,8 @@ def soft_wall(ci_config, mu):
     gag = dict(law_gag(ci_config, "prescribed"), hourglass_modulus_kPa=1.0, volumetric="log_squared")
     numerics = ci_config["numerics"]
     model = artery.bilayer_model(bl, numerics, name=f"test-soft-wall-{mu:g}")
-    home = protocols.homeostasis(model, numerics, ci_config["homeostasis"])
-    start = protocols.pressurise(model, home.state, 0.05, numerics)
+    home = homeostasis(model, numerics, ci_config["homeostasis"])
+    start = pressurise(model, home.state, 0.05, numerics)
     return model, solver.State(start.load, start.x, None, None), gag
 
 

@@ -8,7 +8,9 @@ import pytest
 
 from sphgag import config
 from sphgag.engine import measure, solver
-from sphgag.studies import artery, paper_settings, protocols
+from sphgag.studies import artery, paper_settings
+from sphgag.studies.pool_swelling import pool_table, swell_pool, tip_length, with_hourglass_factor
+from sphgag.studies.wall_loading import homeostasis, homeostatic_load, pressurise
 
 from .conftest import ROOT, law_gag
 
@@ -89,8 +91,8 @@ def test_a_run_switches_exactly_its_setting(script_config, full_config):
 def pressurised(ci_config):
     numerics = ci_config["numerics"]
     model = artery.bilayer_model(ci_config["bilayer"], numerics, name="test-ps-pressurised")
-    h = protocols.homeostasis(model, numerics, ci_config["homeostasis"])
-    start = protocols.pressurise(model, h.state, 103.0, numerics)
+    h = homeostasis(model, numerics, ci_config["homeostasis"])
+    start = pressurise(model, h.state, 103.0, numerics)
     return solver.State(start.load, start.x, None, None)
 
 
@@ -102,25 +104,25 @@ def test_the_radius_held_lumen_keeps_the_inner_radius_during_swelling(ci_config,
         ci_config["bilayer"], ci_config["numerics"], "test-ps-radius", sector, law_gag(ci_config, "prescribed")
     )
     sw = dict(ci_config["swelling"], lumen_control="radius", max_concentration_mEq_l=100.0, concentration_points=3)
-    states = protocols.swell_pool(model, pressurised, ci_config["numerics"], sw)
+    states = swell_pool(model, pressurised, ci_config["numerics"], sw)
     r0 = measure.surface_radius(model, pressurised.x, "inner")
     assert [s.concentration for s in states if s.stage == "converted"] == [0.0, 50.0, 100.0]
     for s in states:
         assert s.load.pressure_kPa is None and s.load.inner_radius == pytest.approx(r0, rel=1e-12)
         radii = np.linalg.norm(s.x[model.layout.inner_surface], axis=1)
         assert np.allclose(radii, r0, rtol=1e-12)
-    table = protocols.pool_table(model, states, sector, 10.0, law_gag(ci_config, "prescribed"))
+    table = pool_table(model, states, sector, 10.0, law_gag(ci_config, "prescribed"))
     assert table.pressure_mmHg.iloc[0] == pytest.approx(103.0, rel=0.02)  # the start's pressure, read back
     assert table.pressure_mmHg.nunique() == len(table)
 
 
 def test_the_hourglass_factor_scales_every_particles_penalty(ci_config):
     model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], "test-ps-hourglass")
-    scaled = protocols.with_hourglass_factor(model, 0.1)
+    scaled = with_hourglass_factor(model, 0.1)
     assert scaled.hourglass_alpha == pytest.approx(0.1 * model.hourglass_alpha)
-    assert protocols.with_hourglass_factor(model, 1.0) is model
+    assert with_hourglass_factor(model, 1.0) is model
     x = model.layout.X * 1.01 + 0.3 * np.sin(np.arange(model.n))[:, None]  # a non-affine deformation
-    load = protocols.homeostatic_load(model.layout.inner_radius * 1.01, 0.0)
+    load = homeostatic_load(model.layout.inner_radius * 1.01, 0.0)
     f, g = model.hourglass_forces(x, load), scaled.hourglass_forces(x, load)
     assert np.allclose(g, 0.1 * f, rtol=1e-10, atol=1e-12 * np.abs(f).max())
 
@@ -132,8 +134,8 @@ def test_the_adjacent_tip_probe_selects_the_particles_just_beyond_the_pools_ends
     sector = artery.pool_sector(entry)
     layout = artery.bilayer_layout(ci_config["bilayer"])
     dx = layout.dx
-    assert protocols.tip_length("adjacent", 10.0, dx) == dx and protocols.tip_length("region", 10.0, dx) == 10.0
-    probes = measure.pool_probes(sector, protocols.tip_length("adjacent", 10.0, dx))
+    assert tip_length("adjacent", 10.0, dx) == dx and tip_length("region", 10.0, dx) == 10.0
+    probes = measure.pool_probes(sector, tip_length("adjacent", 10.0, dx))
     pool = sector.members(layout, layer=layout.pool_layers)
     (r0, r1), (t0, t1) = sector.r_range, sector.theta_range
     medial = layout.layer_mask(layout.pool_layers)

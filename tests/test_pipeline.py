@@ -16,10 +16,10 @@ import pytest
 import yaml
 
 from sphgag.studies import pool_response
-from sphgag.studies.claims.verdicts import COLUMNS as CLAIMS_COLUMNS
 from sphgag.studies.claims.evidence import PAPER_POOL
+from sphgag.studies.claims.verdicts import COLUMNS as CLAIMS_COLUMNS
 from sphgag.studies.delamination.tables import LEVEL_CLASSES
-from sphgag.studies.protocols import POOL_MODELS
+from sphgag.studies.pool_swelling import POOL_MODELS
 from sphgag.studies.resolution import BAND_KEYS, DELAMINATION_GCI_COLUMNS, SWELLING_GCI_COLUMNS
 
 from .conftest import ROOT, project_copy, snakemake

@@ -15,8 +15,9 @@ from sphgag.engine.loading import Load
 from sphgag.engine.model import Model
 from sphgag.physics import damage, donnan
 from sphgag.registry import Registry, Variant
-from sphgag.studies import annulus, candidates, inclusion, onset, protocols, swollen_pool
+from sphgag.studies import annulus, candidates, inclusion, onset, swollen_pool
 from sphgag.studies.delamination.settings import Settings
+from sphgag.studies.pool_swelling import POOL_MODELS
 
 from .conftest import ROOT, Lattice, isotropic_props
 
@@ -27,7 +28,7 @@ REGISTRIES = {
     "damage law": damage.LAWS,
     "onset criterion": onset.CRITERIA,
     "candidate rule": candidates.RULES,
-    "pool model": protocols.POOL_MODELS,
+    "pool model": POOL_MODELS,
     "hourglass form": hourglass.FORMS,
     "pool model of the annulus": annulus.POOL_MODELS,
     "stress recovery": recovery.RECOVERIES,
@@ -73,10 +74,10 @@ def test_the_names_the_pipeline_and_the_figures_know_are_unchanged():
     assert tuple(damage.LAWS) == ("paper", "fracture_energy") and damage.LAWS.paper is damage.DamageLaw
     assert damage.matches_paper("paper") and not damage.matches_paper("0.5") and not damage.matches_paper(None)
     assert tuple(onset.CRITERIA) == ("particle", "averaged") and tuple(candidates.RULES) == ("contact", "window")
-    assert tuple(protocols.POOL_MODELS) == ("particles", "cavity") and tuple(hourglass.FORMS) == ("paper", "energy")
+    assert tuple(POOL_MODELS) == ("particles", "cavity") and tuple(hourglass.FORMS) == ("paper", "energy")
     assert tuple(annulus.POOL_MODELS) == ("hole", "particles")
     assert tuple(recovery.RECOVERIES) == ("paper", "volumetric", "traction")
-    assert protocols.POOL_MODELS["cavity"].laws == ("prescribed",) and protocols.POOL_MODELS["cavity"].hourglass
+    assert POOL_MODELS["cavity"].laws == ("prescribed",) and POOL_MODELS["cavity"].hourglass
 
 
 def test_the_schema_enumerates_and_titles_every_registry(ci_config):
@@ -89,7 +90,7 @@ def test_the_schema_enumerates_and_titles_every_registry(ci_config):
     annulus_pools = s["verification"]["properties"]["annulus"]["properties"]["pool_models"]
     assert annulus_pools["items"]["enum"] == ["hole", "particles"]
     circle = s["verification"]["properties"]["circular_pool"]["properties"]["pool_models"]
-    assert circle["items"]["enum"] == list(protocols.POOL_MODELS)
+    assert circle["items"]["enum"] == list(POOL_MODELS)
 
 
 def test_a_variants_own_check_names_the_key_and_its_range(ci_config):
@@ -98,7 +99,7 @@ def test_a_variants_own_check_names_the_key_and_its_range(ci_config):
     problems = onset.CRITERIA.problems(cfg, "delamination.criteria", ["particle", "averaged"])
     assert len(problems) == 1 and problems[0].startswith("delamination.averaging_length_um = 0.01 is below")
     cfg["gag"]["charge_laws"] = ["conserved"]
-    problems = protocols.POOL_MODELS.problems(cfg, "swelling.pool_models", ["particles", "cavity"])
+    problems = POOL_MODELS.problems(cfg, "swelling.pool_models", ["particles", "cavity"])
     assert problems == [
         "swelling.pool_models[1] = 'cavity' carries the charge laws prescribed, none of gag.charge_laws = ['conserved']"
     ]
@@ -142,7 +143,7 @@ def hourglass_plugin():
 def configured(ci_config, module, name):
     """``ci_config`` naming the plug-in ``name`` of ``module`` where the configuration names its kind."""
     cfg = copy.deepcopy(ci_config)
-    if module.REGISTRY is protocols.POOL_MODELS:
+    if module.REGISTRY is POOL_MODELS:
         cfg["swelling"]["variant_pool_models"] = ["cavity", name]
         cfg["verification"]["circular_pool"]["pool_models"] = ["particles", name]
     elif module.REGISTRY is hourglass.FORMS:
@@ -204,5 +205,5 @@ def test_the_figures_name_the_pool_models_as_the_registry_titles_them():
     from sphgag.studies.claims.evidence import PAPER_POOL
     from sphgag.views import style
 
-    assert style.PAPER_POOL == PAPER_POOL == protocols.POOL_MODELS.paper.name
-    assert style.POOL_TITLES == {m.name: m.title for m in protocols.POOL_MODELS.deviations()}
+    assert style.PAPER_POOL == PAPER_POOL == POOL_MODELS.paper.name
+    assert style.POOL_TITLES == {m.name: m.title for m in POOL_MODELS.deviations()}

@@ -9,10 +9,11 @@ import pytest
 from sphgag.engine import geometry, pool_volume, snap, solver
 from sphgag.engine.history import DAMAGED, HistoryMaterial
 from sphgag.engine.numerics import Numerics
-from sphgag.studies import artery, protocols
+from sphgag.studies import artery
 from sphgag.studies.delamination.growth import grow
 from sphgag.studies.delamination.settings import Settings
 from sphgag.studies.delamination.snapshots import load_snapshot, save_snapshots
+from sphgag.studies.pool_swelling import state_model, swell_pool, swelling_load
 
 from .conftest import law_gag
 from .test_delamination import mirror_map
@@ -113,8 +114,8 @@ def test_a_snap_lands_on_the_equilibrium_the_quasi_static_path_reaches_where_tha
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=law_gag(ci_config))
     path_solver = Numerics.of(numerics).solver(model)
-    seeded = protocols.swelling_load(ci_wall.load, 1.0, 0.0)
-    conv = path_solver.follow_path(ci_wall.x, protocols.swelling_load(ci_wall.load, 0.0, 0.0), [seeded])[-1]
+    seeded = swelling_load(ci_wall.load, 1.0, 0.0)
+    conv = path_solver.follow_path(ci_wall.x, swelling_load(ci_wall.load, 0.0, 0.0), [seeded])[-1]
     swollen = seeded.with_material(concentration=150.0)
     path = path_solver.follow_path(conv.x, seeded, [swollen])[-1]
     jumped = snap.follow(path_solver, conv.x, swollen)
@@ -128,7 +129,7 @@ def test_no_stable_state_ends_a_snap_with_its_reason(ci_config, ci_wall):
     numerics = ci_config["numerics"]
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=law_gag(ci_config))
-    load = protocols.swelling_load(ci_wall.load, 1.0, 150.0)
+    load = swelling_load(ci_wall.load, 1.0, 150.0)
     with pytest.raises(snap.NoStableState, match="no equilibrium in 2 steps"):
         snap.follow(Numerics.of(numerics).solver(model), ci_wall.x, load, max_steps=2)
 
@@ -144,7 +145,7 @@ def swollen_pool(ci_config, ci_wall):
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=prescribed(ci_config))
     sw = dict(ci_config["swelling"], max_concentration_mEq_l=50.0, concentration_points=3)
-    last = protocols.swell_pool(model, ci_wall, numerics, sw)[-1]
+    last = swell_pool(model, ci_wall, numerics, sw)[-1]
     polished = solver.Solver(model, dict(tol=1e-8)).follow_path(last.x, last.load, [last.load])[-1]
     return model, solver.State(polished.load, polished.x, model.evaluate(polished.x, polished.load), None)
 
@@ -194,9 +195,9 @@ def swollen_cavity(ci_config, ci_wall):
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=prescribed(ci_config))
     sw = dict(ci_config["swelling"], max_concentration_mEq_l=50.0, concentration_points=3, pool_model="cavity")
-    last = protocols.swell_pool(model, ci_wall, numerics, sw)[-1]
+    last = swell_pool(model, ci_wall, numerics, sw)[-1]
     assert last.cavity
-    hollow = protocols.state_model(model, True, last.x)
+    hollow = state_model(model, True, last.x)
     return hollow, solver.State(last.load, last.x, hollow.evaluate(last.x, last.load), None)
 
 

@@ -9,7 +9,9 @@ from sphgag.engine import solver
 from sphgag.engine.loading import MMHG_TO_KPA, Load
 from sphgag.engine.numerics import Numerics
 from sphgag.engine.solver import PathOptions
-from sphgag.studies import artery, protocols
+from sphgag.studies import artery
+from sphgag.studies.pool_swelling import swelling_load
+from sphgag.studies.wall_loading import homeostasis, pressurise
 
 from .conftest import law_gag
 
@@ -21,8 +23,8 @@ def wall(ci_config):
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     model = artery.bilayer_model(ci_config["bilayer"], numerics, name="test-solver", pool=pool, gag=law_gag(ci_config))
     path_solver = Numerics.of(numerics).solver(model)
-    h = protocols.homeostasis(model, numerics, ci_config["homeostasis"], path_solver=path_solver)
-    return model, protocols.pressurise(model, h.state, 103.0, numerics, path_solver=path_solver)
+    h = homeostasis(model, numerics, ci_config["homeostasis"], path_solver=path_solver)
+    return model, pressurise(model, h.state, 103.0, numerics, path_solver=path_solver)
 
 
 def both_ways(model, x, start, targets, tol):
@@ -44,9 +46,9 @@ def test_reuse_reaches_the_same_equilibria_as_fresh_newton(wall, path):
         targets = [Load(1.0, base.pressure_kPa + k * MMHG_TO_KPA, material=base.material) for k in range(1, 8)]
         begin = base
     else:
-        begin = protocols.swelling_load(base, 0.0, 0.0)
-        targets = [protocols.swelling_load(base, f, 0.0) for f in (0.25, 0.5, 0.75, 1.0)]
-        targets += [protocols.swelling_load(base, 1.0, c) for c in (50.0, 100.0, 150.0)]
+        begin = swelling_load(base, 0.0, 0.0)
+        targets = [swelling_load(base, f, 0.0) for f in (0.25, 0.5, 0.75, 1.0)]
+        targets += [swelling_load(base, 1.0, c) for c in (50.0, 100.0, 150.0)]
     tol = 1e-8
     runs = both_ways(model, start.x, begin, targets, tol)
     fresh, reused = runs[False], runs[True]

@@ -7,7 +7,9 @@ import pytest
 from sphgag.engine import geometry, solver
 from sphgag.engine.loading import Load
 from sphgag.physics import donnan, materials
-from sphgag.studies import artery, convergence, protocols
+from sphgag.studies import artery, convergence
+from sphgag.studies.pool_swelling import pool_table, state_model, swell_pool
+from sphgag.studies.wall_loading import homeostasis, pressurise
 
 from .conftest import law_gag
 
@@ -61,16 +63,14 @@ def pressurised(ci_config):
     """Passive CI-resolution wall pressurised to 103 mmHg, the pool definitions still unused."""
     numerics = ci_config["numerics"]
     model = artery.bilayer_model(ci_config["bilayer"], numerics, name="test-pressurised")
-    h = protocols.homeostasis(model, numerics, ci_config["homeostasis"])
-    return protocols.pressurise(model, h.state, 103.0, numerics)
+    h = homeostasis(model, numerics, ci_config["homeostasis"])
+    return pressurise(model, h.state, 103.0, numerics)
 
 
 def swell(cfg, start, sector):
     model = pool_model(cfg, sector)
-    states = protocols.swell_pool(
-        model, solver.State(start.load, start.x, None, None), cfg["numerics"], cfg["swelling"]
-    )
-    table = protocols.pool_table(model, states, sector, cfg["swelling"]["probe_length_um"], law_gag(cfg))
+    states = swell_pool(model, solver.State(start.load, start.x, None, None), cfg["numerics"], cfg["swelling"])
+    table = pool_table(model, states, sector, cfg["swelling"]["probe_length_um"], law_gag(cfg))
     return model, table
 
 
@@ -102,12 +102,12 @@ def test_a_cavity_run_measures_its_pool_by_the_area_its_lining_encloses(ci_confi
     gag = law_gag(ci_config, "prescribed")
     model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-cavity", pool=sector, gag=gag)
     start = solver.State(pressurised.load, pressurised.x, None, None)
-    states = protocols.swell_pool(model, start, ci_config["numerics"], sw)
-    table = protocols.pool_table(model, states, sector, sw["probe_length_um"], gag)
+    states = swell_pool(model, start, ci_config["numerics"], sw)
+    table = pool_table(model, states, sector, sw["probe_length_um"], gag)
     assert (table.pool_model == "cavity").all() and list(table.cavity) == [False] + [True] * (len(table) - 1)
     assert (table.residual < ci_config["numerics"]["tolerance"]).all()
     last = states[-1]
-    hollow = protocols.state_model(model, True, last.x)
+    hollow = state_model(model, True, last.x)
     ev = hollow.evaluate(last.x, last.load)
     assert solver.relative_residual(hollow, ev) < ci_config["numerics"]["tolerance"]
     assert table.pool_volume_change.iloc[-1] == pytest.approx(hollow.cavities[0].volume_ratio(last.x) - 1.0)

@@ -6,7 +6,8 @@ import pytest
 
 from sphgag.engine import solver
 from sphgag.physics import donnan, materials
-from sphgag.studies import artery, protocols, volume_states
+from sphgag.studies import artery, volume_states
+from sphgag.studies.pool_swelling import swell_pool
 
 
 @pytest.fixture(scope="module")
@@ -17,7 +18,7 @@ def path(ci_config, ci_wall):
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=gag)
     sw = dict(ci_config["swelling"], max_concentration_mEq_l=100.0, concentration_points=5)
-    return model, protocols.swell_pool(model, ci_wall, numerics, sw)
+    return model, swell_pool(model, ci_wall, numerics, sw)
 
 
 def test_a_state_at_a_volume_ratio_holds_it_and_is_the_concentration_paths(ci_config, path):

@@ -27,15 +27,17 @@ from .engine.numerics import Numerics
 from .options import key_text
 from .physics import donnan, volumetric
 from .physics.materials import GagSection
-from .studies import annulus, artery, candidates, onset, protocols
+from .studies import annulus, artery, candidates, onset
 from .studies.artery import Bilayer, Mean
 from .studies.delamination.section import Delamination
 from .studies.paper_procedure import PaperProcedure
 from .studies.paper_settings import PaperSettings
 from .studies.pool_response import Sensitivity
-from .studies.protocols import BilayerCalibration, Calibration, HomeostasisSettings
+from .studies.pool_swelling import POOL_MODELS
+from .studies.pressure_diameter import Calibration
 from .studies.swelling import Swelling, SwellingConvergence
 from .studies.verification import Verification
+from .studies.wall_loading import BilayerCalibration, HomeostasisSettings
 
 
 class ConfigError(ValueError):
@@ -190,11 +192,11 @@ def _registries() -> dict:
         ("numerics", "lumen_load"): lumen.LUMEN_LOADS,
         ("gag", "charge_laws"): donnan.LAWS,
         ("gag", "volumetric"): volumetric.FORMS,
-        ("swelling", "pool_models"): protocols.POOL_MODELS,
-        ("swelling", "variant_pool_models"): protocols.POOL_MODELS,
+        ("swelling", "pool_models"): POOL_MODELS,
+        ("swelling", "variant_pool_models"): POOL_MODELS,
         ("delamination", "criteria"): onset.CRITERIA,
         ("delamination", "candidates"): candidates.RULES,
-        ("verification", "circular_pool", "pool_models"): protocols.POOL_MODELS,
+        ("verification", "circular_pool", "pool_models"): POOL_MODELS,
         ("verification", "annulus", "pool_models"): annulus.POOL_MODELS,
         ("verification", "profiles", "lumen_loads"): lumen.LUMEN_LOADS,
         ("verification", "profiles", "recoveries"): recovery.RECOVERIES,
@@ -234,13 +236,13 @@ def validate(config: dict, schema_path) -> dict:
 
 def _pool_models(config: dict) -> list[str]:
     """Each pool model of the swelling runs (figure 4's and the variants') passes its own check
-    (:meth:`sphgag.studies.protocols.PoolModel.check`: it carries one of the configured charge laws), and a variant is
-    not also one of figure 4's."""
+    (:meth:`sphgag.studies.pool_swelling.PoolModel.check`: it carries one of the configured charge laws), and a
+    variant is not also one of figure 4's."""
     swelling = config.get("swelling", {})
     problems = [
         p
         for key in ("pool_models", "variant_pool_models")
-        for p in protocols.POOL_MODELS.problems(config, f"swelling.{key}", swelling.get(key, []))
+        for p in POOL_MODELS.problems(config, f"swelling.{key}", swelling.get(key, []))
     ]
     return problems + [
         f"swelling.variant_pool_models[{k}] = {name!r} is one of swelling.pool_models: it runs in target all already"

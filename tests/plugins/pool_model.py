@@ -1,9 +1,9 @@
 """A pool model of one file: the pool as a pressurised cavity whose wall keeps the configured hourglass form
-(``numerics.hourglass``), where the shipped cavity switches to the energy form (:class:`sphgag.studies.protocols.
+(``numerics.hourglass``), where the shipped cavity switches to the energy form (:class:`sphgag.studies.pool_swelling.
 CavityPool`)."""
 
 from sphgag.physics import donnan
-from sphgag.studies.protocols import POOL_MODELS, CavityPool
+from sphgag.studies.pool_swelling import POOL_MODELS, CavityPool
 
 REGISTRY = POOL_MODELS
 

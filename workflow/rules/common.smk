@@ -12,7 +12,7 @@ from sphgag.studies.artery import Bilayer
 from sphgag.studies.delamination.settings import MATCHED
 from sphgag.studies.delamination.settings import Settings as DelaminationSettings
 from sphgag.studies.onset import CRITERIA
-from sphgag.studies.protocols import POOL_MODELS
+from sphgag.studies.pool_swelling import POOL_MODELS
 from sphgag.views.names import law_figure
 
 # the Donnan laws run side by side (wildcard {law}); a run's params hold its own law only (gag.charge_law), so that
@@ -95,7 +95,7 @@ SWELL_SETTINGS = {
     if k not in ("cases", "models", "pool_models", "variant_pool_models", "pressures_mmHg") + SWELL_PROBES
 }
 # the pool models run side by side (wildcard {pool}), each under the charge laws it carries
-# (sphgag.studies.protocols.POOL_MODELS); a run's settings hold its own pool model only. Figure 4's pool models
+# (sphgag.studies.pool_swelling.POOL_MODELS); a run's settings hold its own pool model only. Figure 4's pool models
 # (swelling.pool_models) run in `all`; the variants' (swelling.variant_pool_models) in target `variants` only.
 SWELL_POOLS = SW["pool_models"] + SW["variant_pool_models"]
 LAWS_OF_POOL = {pool: [law for law in LAWS if law in POOL_MODELS[pool].laws] for pool in SWELL_POOLS}

@@ -3,7 +3,8 @@
 from sphgag import jobs
 from sphgag.engine import solver
 from sphgag.records import state
-from sphgag.studies import artery, protocols, wall
+from sphgag.studies import artery, wall
+from sphgag.studies.wall_loading import bilayer_pressure_diameter
 
 with jobs.run(snakemake) as job:  # noqa: F821
     cfg, label = job.params.slice, job.w.model
@@ -12,7 +13,7 @@ with jobs.run(snakemake) as job:  # noqa: F821
     saved = state.load(job.input.homeostatic, job.params.homeostatic_slice)
     homeostatic = solver.State(saved.load, saved.x, model.evaluate(saved.x, saved.load), None)
     tube = artery.bilayer_tube(p, active=job.params.active)
-    res = protocols.bilayer_pressure_diameter(
+    res = bilayer_pressure_diameter(
         model, tube, homeostatic, numerics, calibration, active=job.params.active, label=label
     )
     res.states.to_csv(job.output.table, index=False)

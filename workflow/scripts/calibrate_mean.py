@@ -1,12 +1,13 @@
 """Rule calibrate_mean: the figure 2a protocol on the mean-behaviour model."""
 
 from sphgag import jobs
-from sphgag.studies import artery, protocols, wall
+from sphgag.studies import artery, wall
+from sphgag.studies.pressure_diameter import mean_pressure_diameter
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p, numerics, calibration = dict(job.params.mean), dict(job.params.numerics), dict(job.params.calibration)
     model = artery.mean_model(p, numerics, name=job.name)
-    result = protocols.mean_pressure_diameter(model, artery.mean_thick_wall(p), p, numerics, calibration)
+    result = mean_pressure_diameter(model, artery.mean_thick_wall(p), p, numerics, calibration)
     result.states.to_csv(job.output.states, index=False)
     result.analytic.to_csv(job.output.exact, index=False)
     result.transmural.to_csv(job.output.transmural, index=False)

@@ -2,7 +2,8 @@
 
 from sphgag import jobs
 from sphgag.records import state
-from sphgag.studies import artery, protocols
+from sphgag.studies import artery
+from sphgag.studies.pool_swelling import run_table
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p, cfg = job.params, job.params.state_slice
@@ -10,8 +11,6 @@ with jobs.run(snakemake) as job:  # noqa: F821
     model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], job.name, pool, p.gag, p.grading)
     run = dict(state=cfg, pool=p.pool, settings=p.settings, gag=p.gag, grading=p.grading)
     saved = state.load_series(job.input.states, run)
-    table = protocols.run_table(
-        model, saved, pool, p.probe_length, p.gag, job.w.model, job.w.case, job.name, p.tip_probe
-    )
+    table = run_table(model, saved, pool, p.probe_length, p.gag, job.w.model, job.w.case, job.name, p.tip_probe)
     table.to_csv(job.output.table, index=False)
     job.record(dict(p), dict(max_residual=float(table.residual.max())))

@@ -3,14 +3,15 @@
 from sphgag import jobs
 from sphgag.engine import solver
 from sphgag.records import state
-from sphgag.studies import convergence, protocols
+from sphgag.studies import convergence
+from sphgag.studies.pool_swelling import swell_pool
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p, wall, run = job.params, job.params.wall, job.name
     saved = state.load(job.input.start, wall)
     start = solver.State(saved.load, saved.x, None, None)
     states = {
-        case: protocols.swell_pool(
+        case: swell_pool(
             convergence.case_model(wall["dx"], wall["bilayer"], wall["numerics"], p.gag, entry, f"{run}_{case}"),
             start,
             wall["numerics"],

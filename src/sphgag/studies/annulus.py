@@ -14,7 +14,7 @@ bulk term adds a little pressure that falls again as they swell; none for ``hart
 pressure: the study refuses them).
 
 **Cases** (``verification.annulus``): two pool models (:data:`POOL_MODELS`, each a pool model of the engine's
-registry :data:`sphgag.studies.protocols.POOL_MODELS` with its contents),
+registry :data:`sphgag.studies.pool_swelling.POOL_MODELS` with its contents),
 
 * ``hole``: an empty hole, its lining loaded by the pressure (the cavity of :mod:`sphgag.engine.pool_cavity` with
   contents of zero stiffness);
@@ -47,7 +47,7 @@ from . import inclusion, swollen_pool
 @dataclass(frozen=True)
 class AnnulusPool(Variant):
     """A pool of the annulus verification (``verification.annulus.pool_models``, column ``pool_model``): the engine's
-    pool model ``engine`` (:data:`sphgag.studies.protocols.POOL_MODELS`) that holds it and whether its contents are
+    pool model ``engine`` (:data:`sphgag.studies.pool_swelling.POOL_MODELS`) that holds it and whether its contents are
     ``empty`` (zero stiffness: a hole, its lining loaded by the pressure)."""
 
     name: str

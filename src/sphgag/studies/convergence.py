@@ -19,7 +19,10 @@ import pandas as pd
 
 from ..engine import solver
 from ..engine.numerics import Numerics
-from . import artery, protocols, volume_states
+from . import artery, volume_states
+from .pool_swelling import PoolState, pool_table, swell_pool
+from .wall_loading import homeostasis as homeostasis_
+from .wall_loading import wall_at
 
 log = logging.getLogger("sphgag")
 
@@ -51,11 +54,11 @@ def swell_cases(
     name: str = "convergence",
     volume_ratios=(),
     graded: dict | None = None,
-) -> dict[str, list[protocols.PoolState]]:
+) -> dict[str, list[PoolState]]:
     """The converged states of every study pool at particle spacing ``dx`` [um]: the passive or ``active`` wall at
-    this spacing at ``pressure_mmHg`` by the path of the pressure-diameter sweep (:func:`sphgag.studies.protocols.
+    this spacing at ``pressure_mmHg`` by the path of the pressure-diameter sweep (:func:`sphgag.studies.wall_loading.
     wall_at`; ``calibration``: the ``bilayer_calibration`` section, its activation pressure and steps), then each
-    pool converted and swollen (:func:`sphgag.studies.protocols.swell_pool`), followed by the states at which it
+    pool converted and swollen (:func:`sphgag.studies.pool_swelling.swell_pool`), followed by the states at which it
     holds each of ``volume_ratios`` (:func:`sphgag.studies.volume_states.at_volume_ratios`, stage ``at volume``).
     Each pool's wall is laid out around it (its ends cell boundaries, graded by ``graded``), the pressurised wall's
     state carried onto it (:func:`sphgag.studies.artery.carried`)."""
@@ -65,12 +68,12 @@ def swell_cases(
     for case, entry in cases.items():
         model = case_model(dx, bilayer, numerics, gag, entry, f"{name}_{case}", graded)
         carried = solver.State(start.load, artery.carried(wall, start.x, model.layout), None, None)
-        path = protocols.swell_pool(model, carried, numerics, swelling)
+        path = swell_pool(model, carried, numerics, swelling)
         out[case] = path + list(volume_states.at_volume_ratios(model, path, volume_ratios, numerics).values())
     return out
 
 
-def series(states: dict[str, list[protocols.PoolState]], run: str) -> list:
+def series(states: dict[str, list[PoolState]], run: str) -> list:
     """The states of :func:`swell_cases` as one saved series (:func:`sphgag.records.state.save_series`: each state's
     info with its case), each case's path and its concentrations at the volume ratios logged."""
     out = [(s.x, s.load, dict(s.info(), case=case), None) for case, ss in states.items() for s in ss]
@@ -102,11 +105,11 @@ def pressurised_wall(
 ):
     """The converged state of the passive or ``active`` wall at particle spacing ``dx`` [um] and ``pressure_mmHg``:
     the homeostatic state (figure 2b), then the path of the pressure-diameter sweep
-    (:func:`sphgag.studies.protocols.wall_at`)."""
+    (:func:`sphgag.studies.wall_loading.wall_at`)."""
     wall = artery.bilayer_model(dict(bilayer, dx_um=float(dx)), numerics, name=name)
     path_solver = Numerics.of(numerics).solver(wall)
-    h = protocols.homeostasis(wall, numerics, homeostasis, path_solver=path_solver)
-    return protocols.wall_at(wall, h.state, numerics, calibration, active, pressure_mmHg, path_solver)
+    h = homeostasis_(wall, numerics, homeostasis, path_solver=path_solver)
+    return wall_at(wall, h.state, numerics, calibration, active, pressure_mmHg, path_solver)
 
 
 def case_model(dx: float, bilayer: dict, numerics: dict, gag: dict, entry: dict, name: str, graded=None):
@@ -121,7 +124,7 @@ def measure(
     numerics: dict,
     gag: dict,
     cases: dict,
-    states: dict[str, list[protocols.PoolState]],
+    states: dict[str, list[PoolState]],
     probe_length: float,
     wall: str = "passive",
     name: str = "convergence",
@@ -129,13 +132,13 @@ def measure(
     tip_probe: str = "region",
 ) -> pd.DataFrame:
     """Rows of ``results/swelling/convergence.csv`` for one particle spacing and ``wall`` (column ``model``:
-    passive or active): the pool stresses (:func:`sphgag.studies.protocols.pool_table`, the tips of ``tip_probe``) of
-    the states of :func:`swell_cases`, the intact wall, the converted pools on their path and the pools at their
-    volume ratios."""
+    passive or active): the pool stresses (:func:`sphgag.studies.pool_swelling.pool_table`, the tips of
+    ``tip_probe``) of the states of :func:`swell_cases`, the intact wall, the converted pools on their path and the
+    pools at their volume ratios."""
     tables = []
     for case, entry in cases.items():
         model = case_model(dx, bilayer, numerics, gag, entry, f"{name}_{case}", graded)
-        table = protocols.pool_table(model, states[case], artery.pool_sector(entry), probe_length, gag, tip_probe)
+        table = pool_table(model, states[case], artery.pool_sector(entry), probe_length, gag, tip_probe)
         kept = table[table.stage.isin(["intact", "converted", volume_states.STAGE])]
         tables.append(kept.assign(dx_um=float(dx), particles=model.n, model=wall, case=case))
     out = pd.concat(tables, ignore_index=True)
@@ -157,7 +160,7 @@ def measure_saved(
     """The rows of one run of the study (rule ``swelling_convergence_stresses``) from its saved states ``saved`` (the
     series of :func:`series`): :func:`measure`, first the run's charge law and pool model; each case's last state
     logged."""
-    states = {case: [protocols.PoolState.from_saved(s) for s in saved if s.info["case"] == case] for case in cases}
+    states = {case: [PoolState.from_saved(s) for s in saved if s.info["case"] == case] for case in cases}
     table = measure(dx, bilayer, numerics, gag, cases, states, probe_length, wall, name, graded)
     table.insert(0, "charge_law", gag["charge_law"])
     table.insert(1, "pool_model", table.pop("pool_model"))

@@ -37,10 +37,11 @@ from ..engine.loading import Load
 from ..engine.model import Model
 from ..options import Options, file_name_problems
 from ..physics import materials
-from . import artery, protocols
+from . import artery
 from .delamination.front import Front
 from .delamination.growth import damage_step, onset_measure, with_ruptures
 from .delamination.settings import Settings
+from .pool_swelling import lumen_load, pool_measurements, swelling_load, with_hourglass_factor
 
 log = logging.getLogger(__name__)
 
@@ -222,9 +223,9 @@ def swell(
     with the records before it."""
     p, s = Timing.of(timing), SwellingStages.of(stages)
     motion = dynamics.Motion.at_rest(x0)
-    intact = protocols.swelling_load(base, 0.0, 0.0)
-    converted = protocols.swelling_load(base, 1.0, 0.0)
-    swollen = protocols.swelling_load(base, 1.0, s.max_concentration_mEq_l)
+    intact = swelling_load(base, 0.0, 0.0)
+    converted = swelling_load(base, 1.0, 0.0)
+    swollen = swelling_load(base, 1.0, s.max_concentration_mEq_l)
     every = p.load_update_steps * factor
     out = []
     try:
@@ -248,19 +249,19 @@ def controlled(model: Model, x0: np.ndarray, base: Load, lumen_control: str, hou
     """``(model, load)`` of the swelling stage as the equilibria have them (:func:`.protocols.swell_pool`): the
     lumen of the pressurised state ``x0`` at ``base`` held by ``lumen_control`` (its pressure, or its inner radius:
     the authors' script) and the hourglass modulus E of eq. (2.14) times ``hourglass_factor`` (the script: 0.1)"""
-    model = protocols.with_hourglass_factor(model, hourglass_factor)
-    return model, protocols.lumen_load(model, solver.State(base, x0, None, None), lumen_control)
+    model = with_hourglass_factor(model, hourglass_factor)
+    return model, lumen_load(model, solver.State(base, x0, None, None), lumen_control)
 
 
 def table(
     model: Model, records: list[Record], pool, probe_length: float, time_step: float, tip_probe: str = "region"
 ) -> pd.DataFrame:
     """One row per record of :func:`swell`: where it is on the schedule, its residual and kinetic energy, and the
-    stresses around the pool (:func:`sphgag.studies.protocols.pool_measurements`, its tips by ``tip_probe``)."""
+    stresses around the pool (:func:`sphgag.studies.pool_swelling.pool_measurements`, its tips by ``tip_probe``)."""
     rows = []
     for r in records:
         ev = model.evaluate(r.x, r.load)
-        at = protocols.pool_measurements(model, ev, pool, model.props.converting, probe_length, tip_probe)
+        at = pool_measurements(model, ev, pool, model.props.converting, probe_length, tip_probe)
         rows.append(dict(r.info(time_step), **at))
     return pd.DataFrame(rows)
 
@@ -355,7 +356,7 @@ class Delamination:
             raise ValueError("the explicit damage stage carries the paper's prescribed law (Pi of each particle's c)")
         material = artery.seeding(model.props, model.layout, sectors, gag).settled()
         n = model.n
-        load = protocols.swelling_load(base_load, 1.0, 0.0)
+        load = swelling_load(base_load, 1.0, 0.0)
         return cls(
             model, Front.of(model, sectors, settings), settings, gag, material, load, np.zeros(n), np.full(n, -1)
         )

@@ -8,7 +8,7 @@ authors' settings as a complete configuration; this module measures, at equilibr
 
 Figure 4's protocol (:func:`sphgag.studies.convergence.swell_cases`: the passive or active wall at the section's lumen
 pressure by the path of the pressure-diameter sweep, then each pool converted and swollen by
-:func:`sphgag.studies.protocols.swell_pool`, the paper's law Pi(c) of eqs. 2.25-2.27) is run under
+:func:`sphgag.studies.pool_swelling.swell_pool`, the paper's law Pi(c) of eqs. 2.25-2.27) is run under
 
 * the script's configuration and ours (``setting = none``), and
 * each configuration with one setting (a group of configuration keys, the section's ``settings``) switched to the
@@ -164,10 +164,10 @@ def configuration(ours: Mapping, script: Mapping, base: str, setting: str) -> di
 def run_params(ours: Mapping, script: Mapping, base: str, setting: str) -> dict:
     """What one run depends on (a rule's params; :func:`run` reads them): from its :func:`configuration`, the wall
     (spacing, ``bilayer``, ``numerics``, the homeostasis, the activation of the pressure-diameter path), the GAG
-    under the paper's law (eqs. 2.25-2.27), the swelling protocol (:func:`sphgag.studies.protocols.swell_pool`: a ramp
-    from 0 to the highest of the section's concentrations in its steps, the lumen control and the hourglass factor),
-    the pools (the section's ``cases``; ``claim_cases`` for the script's own run) and the probes. The section is
-    ``ours``' (the running configuration's)."""
+    under the paper's law (eqs. 2.25-2.27), the swelling protocol (:func:`sphgag.studies.pool_swelling.swell_pool`: a
+    ramp from 0 to the highest of the section's concentrations in its steps, the lumen control and the hourglass
+    factor), the pools (the section's ``cases``; ``claim_cases`` for the script's own run) and the probes. The
+    section is ``ours``' (the running configuration's)."""
     ps = ours["paper_settings"]
     c = configuration(ours, script, base, setting)
     sw = c["swelling"]

@@ -32,10 +32,12 @@ import pandas as pd
 
 from ..engine import solver
 from ..options import Options, key_text
-from . import artery, protocols
+from . import artery
 from .delamination.growth import grow
 from .delamination.settings import Settings
 from .delamination.tables import labelled
+from .pool_swelling import concentration_steps, pool_table, swell_pool
+from .wall_loading import homeostasis, pressurise
 
 log = logging.getLogger("sphgag")
 
@@ -181,7 +183,7 @@ class Sensitivity(Options):
                     f"{name} = {w}: figure 5's pool (centre {pool['centre_angle_deg']:g} deg) would reach a symmetry "
                     "edge"
                 )
-        steps = protocols.concentration_steps(config["swelling"])
+        steps = concentration_steps(config["swelling"])
         if not any(math.isclose(c, se["concentration_mEq_l"]) for c in steps):
             steps = ", ".join(f"{c:g}" for c in steps)
             out.append(
@@ -244,10 +246,10 @@ def perturbed(scenario: dict, inputs: dict) -> dict:
 
 def swelling_settings(scenario: dict) -> dict:
     """The figure 4 settings cut at the stated concentration, on the same concentration steps
-    (:func:`sphgag.studies.protocols.concentration_steps`, which it must be one of), so that the path up to it is the
-    pipeline's."""
+    (:func:`sphgag.studies.pool_swelling.concentration_steps`, which it must be one of), so that the path up to it is
+    the pipeline's."""
     sw, c = scenario["swelling"], scenario["concentration_mEq_l"]
-    steps = protocols.concentration_steps(sw)
+    steps = concentration_steps(sw)
     at = np.flatnonzero(np.isclose(steps, c, rtol=1e-9, atol=0.0))
     if not at.size:
         raise ValueError(
@@ -259,7 +261,7 @@ def swelling_settings(scenario: dict) -> dict:
 
 @dataclass
 class Response:
-    """The pool's swelling table (:func:`sphgag.studies.protocols.pool_table`) and its delamination run's
+    """The pool's swelling table (:func:`sphgag.studies.pool_swelling.pool_table`) and its delamination run's
     ``(growth, summary)`` (:func:`sphgag.studies.delamination.tables.labelled`), with its scenario."""
 
     scenario: dict
@@ -272,10 +274,10 @@ def pressurised(scenario: dict, name: str) -> solver.State:
     """The passive homeostatic state (figure 2b) moved to the lumen pressure under pressure control."""
     s = scenario
     wall = artery.bilayer_model(s["bilayer"], s["numerics"], name=name)
-    h = protocols.homeostasis(wall, s["numerics"], s["homeostasis"])
+    h = homeostasis(wall, s["numerics"], s["homeostasis"])
     wall = artery.bilayer_model(s["bilayer"], s["numerics"], name=name)  # a fresh model, as the pipeline's next job
     start = solver.State(h.state.load, h.state.x, wall.evaluate(h.state.x, h.state.load), None)
-    return protocols.pressurise(wall, start, s["delamination"]["pressure_mmHg"], s["numerics"])
+    return pressurise(wall, start, s["delamination"]["pressure_mmHg"], s["numerics"])
 
 
 def respond(scenario: dict, name: str = "pool_response") -> Response:
@@ -287,8 +289,8 @@ def respond(scenario: dict, name: str = "pool_response") -> Response:
     start = solver.State(wall.load, wall.x, None, None)
     pool = artery.pool_sector(s["pool"])
     model = artery.bilayer_model(bl, numerics, name=f"{name}_swell", pool=pool, gag=gag)
-    states = protocols.swell_pool(model, start, numerics, swelling_settings(s))
-    swelling = protocols.pool_table(model, states, pool, s["probe_length_um"], gag)
+    states = swell_pool(model, start, numerics, swelling_settings(s))
+    swelling = pool_table(model, states, pool, s["probe_length_um"], gag)
     settings = Settings.at_section(de, s["criterion"])
     model = artery.bilayer_model(bl, numerics, name=f"{name}_delaminate")
     result = grow(model, start, [pool], settings, numerics, gag, model.props, run=f"{name}_delaminate")

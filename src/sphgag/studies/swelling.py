@@ -1,5 +1,5 @@
 """The configuration of figure 4 (paper section 2.6): the pools' conversion and swelling at a held lumen pressure
-(the ``swelling`` section; :func:`sphgag.studies.protocols.swell_pool`), and its resolution study (the
+(the ``swelling`` section; :func:`sphgag.studies.pool_swelling.swell_pool`), and its resolution study (the
 ``swelling_convergence`` section; :mod:`sphgag.studies.convergence`)."""
 
 from __future__ import annotations
@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 from ..options import Options, file_name_problems
 from .artery import pool_placement_problems
-from .protocols import BilayerCalibration
+from .wall_loading import BilayerCalibration
 
 
 @dataclass(frozen=True)
@@ -18,8 +18,8 @@ class Swelling(Options):
     variants, the saved states it starts from (``pressures_mmHg``), the conversion in ``conversion_steps``, the ramp of
     the fixed-charge concentration (``concentration_points`` from 0 to ``max_concentration_mEq_l``, eqs. 2.25-2.27),
     the size of the tip and top regions (``probe_length_um``) and how the tip is probed (``tip_probe``,
-    :data:`sphgag.studies.protocols.TIP_PROBES`), how the lumen is held while the pools swell (``lumen_control``,
-    :data:`sphgag.studies.protocols.LUMEN_CONTROLS`), the factor on the hourglass modulus of eq. (2.14) meanwhile
+    :data:`sphgag.studies.pool_swelling.TIP_PROBES`), how the lumen is held while the pools swell (``lumen_control``,
+    :data:`sphgag.studies.pool_swelling.LUMEN_CONTROLS`), the factor on the hourglass modulus of eq. (2.14) meanwhile
     (``hourglass_factor``) and the pools (``cases``, :class:`artery.Pool` entries by name)."""
 
     SECTION = "swelling"

@@ -13,7 +13,7 @@ about ``dx``; the interface is a cell boundary) and ``extent = B - A``; mirror p
 particle. **Measures** (each at a converged state with its residual):
 
 * ``volume_ratio``: the pool's area over its reference area, ``sum_pool V_i J_i / sum_pool V_i``, as the figure-4
-  runs measure it (:func:`sphgag.studies.protocols.swell_pool`);
+  runs measure it (:func:`sphgag.studies.pool_swelling.swell_pool`);
 * ``lining_radius_um``: the mean current radius of the first matrix ring (the pool's lining) against the exact
   ``r(R)`` at its reference radius;
 * ``hoop_error``: the largest error of the matrix particles' hoop stress (eq. 2.10, current polar frame) against
@@ -46,7 +46,8 @@ from ..engine.numerics import Numerics
 from ..engine.recovery import normal_stress_state
 from ..options import Options
 from ..physics import cavity
-from . import artery, inclusion, protocols
+from . import artery, inclusion
+from .pool_swelling import POOL_MODELS, pool_measurements
 
 
 def two_rings_problems(where: str, radius: float, spacings) -> list[str]:
@@ -113,9 +114,9 @@ def solids(mat: inclusion.Materials) -> tuple[cavity.Solid, cavity.Solid]:
 
 def circle_model(A: float, B: float, dx: float, mat: inclusion.Materials, numerics: Numerics, pool_model: str):
     """The quarter annulus with its pool on offset-circle rings, mirror planes on both axes, the outer ring free;
-    ``pool_model``: a name of :data:`sphgag.studies.protocols.POOL_MODELS` (``particles``, the paper's GAG
+    ``pool_model``: a name of :data:`sphgag.studies.pool_swelling.POOL_MODELS` (``particles``, the paper's GAG
     particles, or ``cavity``, :mod:`sphgag.engine.pool_cavity`), which holds the pool (:meth:`PoolModel.around`)."""
-    pool = protocols.POOL_MODELS.lookup(pool_model)
+    pool = POOL_MODELS.lookup(pool_model)
     name = f"circular_{pool.noun}_dx{dx:g}"
     model = inclusion.inclusion_model(A, A, dx, B - A, mat, numerics, name=name, free=True)
     return pool.around(model, np.flatnonzero(model.layout.inclusion), mirrored=True)
@@ -282,7 +283,7 @@ def sector_model(
     nb = kernel.for_layout(lay, numerics.kernel_support_factor)
     material = inclusion.InclusionMaterial(lay, mat, members)
     model = Model(f"sector_pool_{pool_model}_dx{dx:g}", lay, nb, material, **numerics.model_options())
-    return protocols.POOL_MODELS.lookup(pool_model).around(model, members), members
+    return POOL_MODELS.lookup(pool_model).around(model, members), members
 
 
 def sector_study(
@@ -290,8 +291,8 @@ def sector_study(
 ) -> pd.DataFrame:
     """The sector pool in the matrix at every spacing of ``vs['dx_um']`` and pressure of ``vs['pressures_kPa']``
     (``vs``: ``walls_um``, ``pool`` (a figure-4 case), ``probe_length_um``, ``steps``), the layout graded by
-    ``graded``: figure 4's measures (:func:`sphgag.studies.protocols.pool_measurements`), the pool's volume ratio and
-    the area its lining encloses (``lining_volume_ratio``, :class:`sphgag.engine.pool_cavity.Cavity`), to compare
+    ``graded``: figure 4's measures (:func:`sphgag.studies.pool_swelling.pool_measurements`), the pool's volume ratio
+    and the area its lining encloses (``lining_volume_ratio``, :class:`sphgag.engine.pool_cavity.Cavity`), to compare
     with :func:`sphgag.studies.fe_swelling.sector_pool` on the same geometry and laws."""
     numerics = Numerics.of(numerics)
     mat = inclusion.Materials.of(matrix, gag, bulk=True)
@@ -307,7 +308,7 @@ def sector_study(
         for p in filter(at.__contains__, pressures):
             ev = at[p].evaluation
             row = dict(pool_model=pool_model, dx_um=float(dx), pressure_kPa=p, particles=model.n)
-            row.update(protocols.pool_measurements(model, ev, pool, members, float(vs["probe_length_um"])))
+            row.update(pool_measurements(model, ev, pool, members, float(vs["probe_length_um"])))
             row.update(
                 pool_volume_ratio=volume_ratio_of(model, ev, members),
                 lining_volume_ratio=lining.volume_ratio(ev.x),

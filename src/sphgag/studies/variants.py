@@ -4,7 +4,7 @@ setting of the numerics (target ``variants``: eq. 2.14 as printed beside the def
 Each variant builds its own wall (homeostasis, figure 2b, and pressure control to the delamination pressure), since
 the numerics change every state from the first. It then runs figure 4's protocol for the first pool of
 ``swelling.cases`` in that passive wall (GAG particles, the paper's charge law;
-:func:`sphgag.studies.protocols.swell_pool`, measured as rule pool_stresses measures) and grows figure 5's pool at
+:func:`sphgag.studies.pool_swelling.swell_pool`, measured as rule pool_stresses measures) and grows figure 5's pool at
 ``delamination.critical_stress_kPa`` with the default onset criterion (:func:`sphgag.studies.delamination.growth.grow`).
 """
 
@@ -15,10 +15,12 @@ from dataclasses import dataclass
 import pandas as pd
 
 from ..engine.model import Model
-from . import artery, protocols
+from . import artery
 from .delamination.growth import grow
 from .delamination.settings import Settings
 from .delamination.tables import labelled
+from .pool_swelling import pool_table, swell_pool
+from .wall_loading import pressurised_wall
 
 
 @dataclass
@@ -44,12 +46,12 @@ def run_variant(
     set (``de``: the run settings with ``case``, its ``pools``, ``critical_stress_kPa`` and the default ``criterion``)
     at the numerics ``numerics``, from a wall of their own at ``de["pressure_mmHg"]`` (also the pressure figure 4's
     pool is swollen at here)."""
-    _, start = protocols.pressurised_wall(bilayer, numerics, homeostasis, de["pressure_mmHg"], name)
+    _, start = pressurised_wall(bilayer, numerics, homeostasis, de["pressure_mmHg"], name)
     pool = artery.pool_sector(swelling["pool"])
     model = artery.bilayer_model(bilayer, numerics, name=f"{name}_swell", pool=pool, gag=gag)
     settings = {k: v for k, v in swelling.items() if k not in ("case", "pool", "probe_length_um")}
-    states = protocols.swell_pool(model, start, numerics, dict(settings, pool_model="particles"))
-    table = protocols.pool_table(model, states, pool, swelling["probe_length_um"], gag)
+    states = swell_pool(model, start, numerics, dict(settings, pool_model="particles"))
+    table = pool_table(model, states, pool, swelling["probe_length_um"], gag)
     table.insert(0, "case", swelling["case"])
     st = Settings.at_section(de, de["criterion"])
     grower: Model = artery.bilayer_model(bilayer, numerics, name=f"{name}_grow")

@@ -4,10 +4,10 @@ Under the paper's law (eqs. 2.25-2.27, a prescribed Pi(c)) the pools of figure 4
 150 mEq/l ``d ln J / d ln c`` is about 5.5: the volume at a given concentration is ill-conditioned, so a small error of
 the discretisation in the pressure the wall holds becomes a large error in J. Read the other way, the concentration
 that holds a given volume ratio, and the stresses around the pool there, are well conditioned. This module finds
-those states on a path of :func:`sphgag.studies.protocols.swell_pool`: for each requested ``J``, from the last state
+those states on a path of :func:`sphgag.studies.pool_swelling.swell_pool`: for each requested ``J``, from the last state
 of the path below it, the pool's volume ``J V_0`` is prescribed and the concentration is the unknown (the bordered
 Newton system of :func:`sphgag.engine.pool_volume.solve_at_volume`; ``V_0`` the pool's reference volume, ``J`` as
-``pool_volume_change + 1`` of :func:`sphgag.studies.protocols.pool_measurements`). A ``J`` beyond the last state of
+``pool_volume_change + 1`` of :func:`sphgag.studies.pool_swelling.pool_measurements`). A ``J`` beyond the last state of
 a complete path (one that reached the top of its ramp) is not reached: no state is extrapolated. Where the path lost
 equilibrium under concentration control, the pool's volume goes on as the control from its last state (as the path's
 own continuation does, :func:`sphgag.engine.pool_volume.continue_path`), so a ``J`` beyond it is reached from there.
@@ -24,14 +24,14 @@ import numpy as np
 from ..engine import pool_volume, solver
 from ..engine.model import Model
 from ..engine.numerics import Numerics
-from . import protocols
+from .pool_swelling import PoolState
 
 log = logging.getLogger("sphgag")
 
 STAGE = "at volume"  # the stage of the states this module returns
 
 
-def volume_of(model: Model, state: protocols.PoolState) -> tuple[pool_volume.PoolVolume, float, float]:
+def volume_of(model: Model, state: PoolState) -> tuple[pool_volume.PoolVolume, float, float]:
     """``(measure, V, V_0)``: the volume measure of the pool in the model ``state`` is in equilibrium with, the
     pool's volume in ``state`` and its reference volume."""
     at = state.model(model)
@@ -39,9 +39,7 @@ def volume_of(model: Model, state: protocols.PoolState) -> tuple[pool_volume.Poo
     return pool, pool(at.evaluate(state.x, state.load)), float(np.sum(pool.V))
 
 
-def at_volume_ratios(
-    model: Model, states: list[protocols.PoolState], targets, numerics
-) -> dict[float, protocols.PoolState]:
+def at_volume_ratios(model: Model, states: list[PoolState], targets, numerics) -> dict[float, PoolState]:
     """``{J: state}``: the state of the swelling path ``states`` (converted stage, in order of concentration) at
     which the pool holds the volume ratio ``J``, for each ``J`` of ``targets`` that the path passes, or beyond the end
     of a path that lost equilibrium. Each is solved from the last state below it (of the path, or one reached beyond
@@ -75,7 +73,7 @@ def at_volume_ratios(
             log.warning("[%s] no state at J = %g: %s", run, J, exc.reason)
             continue
         reached = solver.State(vs.load, vs.x, None, vs.convergence)
-        state = protocols.PoolState.of(STAGE, vs.concentration, reached, "volume", at, start.pool_model)
+        state = PoolState.of(STAGE, vs.concentration, reached, "volume", at, start.pool_model)
         out[J] = replace(state, path_end=path[k].path_end, end_reason=path[k].end_reason)
         log.info("[%s] the pool holds J = %g at c = %.4g mEq/l", run, J, vs.concentration)
     return out

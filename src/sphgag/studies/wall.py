@@ -1,5 +1,5 @@
 """The wall's tables (figures 2-3): what the calibration and homeostasis protocols of
-:mod:`sphgag.studies.protocols` are reported by.
+:mod:`sphgag.studies.pressure_diameter` and :mod:`sphgag.studies.wall_loading` are reported by.
 
 * :func:`mean_summary`: the mean-behaviour model's pressure-diameter sweep (figure 2a) against the exact thick wall.
 * :func:`homeostasis_tables` and :func:`particle_table`: the homeostatic walls (figure 2b), passive and with the active
@@ -20,7 +20,8 @@ from ..engine import measure
 from ..engine.loading import MMHG_TO_KPA
 from ..engine.model import Model
 from . import artery
-from .protocols import Homeostasis, PressureDiameter
+from .pressure_diameter import PressureDiameter
+from .wall_loading import Homeostasis
 
 log = logging.getLogger("sphgag")
 
@@ -62,7 +63,7 @@ def mean_summary(model: Model, result: PressureDiameter, tolerance: float) -> di
 
 
 def homeostasis_tables(model: Model, bilayer: dict, walls: dict[str, Homeostasis]):
-    """The homeostatic ``walls`` (label -> :class:`~sphgag.studies.protocols.Homeostasis`: passive, active) as the
+    """The homeostatic ``walls`` (label -> :class:`~sphgag.studies.wall_loading.Homeostasis`: passive, active) as the
     tables of figure 2b: the summary (one row per wall: the pressure it carries from the reactions, from global
     equilibrium and from the inner ring's radial stress, beside the semi-analytical tube's; its radii, residual and
     each layer's hoop stress and its variation), the ring profiles and the layers' statistics; logged."""

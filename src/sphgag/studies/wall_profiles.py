@@ -26,8 +26,10 @@ from ..engine import measure, recovery
 from ..engine.loading import MMHG_TO_KPA, Load
 from ..engine.numerics import Numerics
 from ..options import Options
-from . import artery, protocols
+from . import artery
 from .inclusion import observed_order
+from .wall_loading import activated
+from .wall_loading import homeostasis as homeostasis_
 
 log = logging.getLogger("sphgag")
 
@@ -93,14 +95,14 @@ def mean_states(p: dict, numerics: dict, calibration: dict, pressures_mmHg) -> l
 
 def bilayer_states(p: dict, numerics: dict, homeostasis: dict, cal: dict, walls, pressures_mmHg) -> list:
     """``[(wall, model, tube, state)]``: the bi-layered wall ``p``, passive and/or active (``walls``), at
-    ``pressures_mmHg`` by figure 3's path (:func:`sphgag.studies.protocols.activated`, then pressure control)."""
+    ``pressures_mmHg`` by figure 3's path (:func:`sphgag.studies.wall_loading.activated`, then pressure control)."""
     model = artery.bilayer_model(p, numerics)
     path_solver = Numerics.of(numerics).solver(model)
-    h = protocols.homeostasis(model, numerics, homeostasis, path_solver=path_solver)
+    h = homeostasis_(model, numerics, homeostasis, path_solver=path_solver)
     wanted = {round(P, 10) for P in pressures_mmHg}
     out = []
     for wall in walls:
-        start = protocols.activated(model, h.state, numerics, cal, wall == "active", path_solver=path_solver)
+        start = activated(model, h.state, numerics, cal, wall == "active", path_solver=path_solver)
         states = [start]
         for loads in _pressure_loads(pressures_mmHg, start.load.pressure_mmHg, start.load.material):
             states += path_solver.follow_path(start.x, start.load, loads, run=f"{model.name} {wall}")

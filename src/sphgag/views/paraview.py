@@ -32,7 +32,8 @@ from ..engine import measure
 from ..engine.history import HistoryMaterial, ParticleHistory
 from ..engine.model import Model
 from ..records import state as state_io
-from ..studies import artery, protocols
+from ..studies import artery
+from ..studies.pool_swelling import state_model
 
 FIELDS = (
     "reference_position",
@@ -109,9 +110,7 @@ def swelling_frames(model: Model, states_path, expected_params: dict | None = No
     for k, saved in enumerate(state_io.load_series(states_path, expected_params)):
         stage = saved.info["stage"]
         history = seeding.after if stage == "converted" else seeding.before
-        at = protocols.state_model(
-            model, bool(saved.info.get("cavity", False)), saved.x, hollow, saved.info.get("pool_model")
-        )
+        at = state_model(model, bool(saved.info.get("cavity", False)), saved.x, hollow, saved.info.get("pool_model"))
         hollow = at if at.cavities else hollow
         frames.append(Frame(float(k), saved.x, fields(at, saved.x, saved.load, history)))
     return frames

@@ -115,7 +115,7 @@ def is_paper_law(law: str) -> bool:
     return bool(known and known.paper)
 
 
-# the pool models of the swelling runs (sphgag.studies.protocols.POOL_MODELS, column pool_model of the pool tables):
+# the pool models of the swelling runs (sphgag.studies.pool_swelling.POOL_MODELS, column pool_model of the pool tables):
 # ``particles`` is the paper's; the others are named beside their law in the figures
 PAPER_POOL = "particles"
 POOL_TITLES = {

@@ -1,9 +1,9 @@
 """The paper's claims (figures 3-7 and their text), evaluated from the pipeline's tables alone.
 
-Each claim is one function of the :class:`.evidence.Evidence` (the tidy CSV tables and the configuration that made them) that
-returns our number and whether the claim holds by a criterion written next to it. A claim that does not hold is
-reported with our number; nothing here feeds back into a simulation. A claim whose data the configuration did not
-produce (e.g. a reduced sweep) is reported as ``n/a``, or left out where the paper's figure itself needs the data
+Each claim is one function of the :class:`.evidence.Evidence` (the tidy CSV tables and the configuration that made
+them) that returns our number and whether the claim holds by a criterion written next to it. A claim that does not
+hold is reported with our number; nothing here feeds back into a simulation. A claim whose data the configuration did
+not produce (e.g. a reduced sweep) is reported as ``n/a``, or left out where the paper's figure itself needs the data
 (C4-C5: two profiled pressures; C11-C12: both models).
 
 One module per family of figures, each with the list of its claims:

@@ -9,7 +9,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 import pandas as pd
 
-#: the paper's pool model (sphgag.studies.protocols.POOL_MODELS): the pool's GAG particles carry eq. (2.27)
+#: the paper's pool model (sphgag.studies.pool_swelling.POOL_MODELS): the pool's GAG particles carry eq. (2.27)
 PAPER_POOL = "particles"
 
 
@@ -22,7 +22,7 @@ class Claim:
     holds: str  # yes | no | n/a | not run (its evidence is made by a target that has not run)
     criterion: str
     charge_law: str = "-"  # a pool claim's Donnan law (sphgag.physics.donnan.LAWS); "-": no pool
-    pool_model: str = "-"  # a pool claim's pool model (sphgag.studies.protocols.POOL_MODELS); "-": no pool
+    pool_model: str = "-"  # a pool claim's pool model (sphgag.studies.pool_swelling.POOL_MODELS); "-": no pool
     margin: float = np.nan  # the criterion's smallest slack in its unit (kPa for C6-C12): > 0 where it holds
     across_band: str = "-"  # C6-C12: the verdict and margin at every spacing of the resolution study and extrapolated
     path: str = "equilibrium"  # how the states were reached: equilibrium, or the authors' explicit procedure (P1-P4)

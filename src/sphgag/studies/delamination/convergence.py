@@ -8,7 +8,8 @@ from __future__ import annotations
 import pandas as pd
 
 from ...engine.numerics import Numerics
-from .. import artery, protocols
+from ...studies.wall_loading import pressurised_wall
+from .. import artery
 from .growth import grow
 from .settings import Settings
 from .tables import labelled
@@ -26,7 +27,7 @@ def convergence_study(
     """Rows of ``results/delamination/convergence.csv`` for one particle spacing: every pool set of ``de["pool_sets"]``
     at ``critical_stress_kPa``, every onset criterion, from the passive wall pressurised at this spacing."""
     p = dict(bilayer, dx_um=float(dx))
-    _, start = protocols.pressurised_wall(p, numerics, homeostasis, de["pressure_mmHg"], name)
+    _, start = pressurised_wall(p, numerics, homeostasis, de["pressure_mmHg"], name)
     rows = []
     for case, pools in de["pool_sets"].items():
         sectors = [artery.pool_sector(s) for s in pools]

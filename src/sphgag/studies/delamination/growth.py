@@ -68,7 +68,8 @@ from ...engine.model import Model
 from ...engine.numerics import Numerics
 from ...engine.solver import Solver
 from ...physics import damage
-from .. import artery, protocols
+from ...studies.pool_swelling import swelling_load
+from .. import artery
 from ..onset import CRITERIA
 from .front import Front
 from .settings import Settings
@@ -188,7 +189,7 @@ class GrowthRun:
         path_solver, run = Numerics.of(numerics).solver(model), run or model.name
         material = artery.seeding(base, model.layout, sectors, gag)
         model.set_props(material)
-        base_load = protocols.swelling_load(start.load, 0.0, 0.0)
+        base_load = swelling_load(start.load, 0.0, 0.0)
         law = settings.law
         log.info(
             "[%s] seeding %d pool(s) (%d particles) in %d steps at %.1f mmHg; sigma_cr %.0f kPa, %s onset, %s",
@@ -202,7 +203,7 @@ class GrowthRun:
             law.rupture,
         )
         fractions = np.linspace(0, 1, settings.conversion_steps + 1)[1:]
-        seeding = [protocols.swelling_load(base_load, f, 0.0) for f in fractions]
+        seeding = [swelling_load(base_load, f, 0.0) for f in fractions]
         state = path_solver.follow_path(start.x, base_load, seeding, run=run)[-1]
         grown = cls(path_solver, run, Front.of(model, sectors, settings), settings, material, state)
         grown.wanted = frozenset(int(s) for s in snapshot_steps)
@@ -242,7 +243,7 @@ class GrowthRun:
     def raise_concentration(self, c: float) -> None:
         """Move the run to the fixed-charge concentration ``c`` (mEq/l) with its history fixed; a step with no
         equilibrium on its path is followed as a snap."""
-        load = protocols.swelling_load(self.state.load, 1.0, float(c))
+        load = swelling_load(self.state.load, 1.0, float(c))
         if load == self.state.load:
             return
         try:

@@ -10,8 +10,8 @@ from dataclasses import dataclass
 
 from ...options import Options, file_name_problems
 from ...physics.donnan import LAWS
+from ...studies.wall_loading import BilayerCalibration
 from ..artery import pool_placement_problems
-from ..protocols import BilayerCalibration
 
 
 @dataclass(frozen=True)
