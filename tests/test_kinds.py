@@ -1,12 +1,15 @@
 """The kinds of job name their files and runs as the rules and scripts did before them (sphgag.jobs.kinds): a run's
 results, log, benchmark and provenance record and its run name are part of what a rerun must find again."""
 
+import re
 from types import SimpleNamespace
 
 import pytest
 
 from sphgag import jobs
 from sphgag.jobs import kinds
+
+from .conftest import ROOT
 
 SWELL = dict(law="prescribed", pool="particles", model="passive", case="I", pressure="103")
 SC = dict(law="prescribed", pool="particles", model="active", dx="6")
@@ -132,3 +135,11 @@ def test_a_job_types_the_numbers_of_its_key():
     w = jobs.typed(sm.wildcards)
     assert (w.poolset, w.sigma, w.factor) == ("single", 40.0, 1)
     assert kinds.procedure_delaminate.name(sm.wildcards) == "procedure_single_40kPa_x1"
+
+
+def test_a_number_becomes_file_name_text_in_one_place():
+    """jobs.text gives a wildcard's text (``:g``) and typed() reads it back; the rules format no number themselves."""
+    assert jobs.text(103.0) == "103" and jobs.text([0.5, 2.0]) == ["0.5", "2"]
+    assert jobs.typed({"sigma": jobs.text(30.0), "dx": jobs.text(2.12)}).dx == 2.12
+    rules = "".join(p.read_text() for p in (ROOT / "workflow" / "rules").glob("*.smk"))
+    assert not re.findall(r"\{[^{}]*:[^{}]*g\}", rules)

@@ -5,6 +5,7 @@
 import hashlib
 
 from sphgag.jobs import kinds as JOBS
+from sphgag.jobs import text
 from sphgag.physics.donnan import LAWS as CHARGE_LAWS
 from sphgag.physics.donnan import PAPER_LAW
 from sphgag.physics.materials import law_gag
@@ -78,7 +79,7 @@ HOMEOSTATIC_SLICE = {
     "homeostasis": {k: v for k, v in config["homeostasis"].items() if k != "target_pressure_mmHg"},
 }
 PRESSURISED_SLICE = dict(HOMEOSTATIC_SLICE, bilayer_calibration=config["bilayer_calibration"])
-STATE_PRESSURES = [f"{p:g}" for p in config["bilayer_calibration"]["state_pressures_mmHg"]]
+STATE_PRESSURES = text(config["bilayer_calibration"]["state_pressures_mmHg"])
 # the pressurised walls' states (rule bilayer_pressure_diameter), from which swelling and delamination start
 STATE = "results/states/{model}_{pressure}mmHg.npz"
 
@@ -86,7 +87,7 @@ STATE = "results/states/{model}_{pressure}mmHg.npz"
 # Swelling (figure 4)
 SW = config["swelling"]
 CASES = list(SW["cases"])
-SWELL_PRESSURES = [f"{p:g}" for p in SW["pressures_mmHg"]]
+SWELL_PRESSURES = text(SW["pressures_mmHg"])
 # what the simulations depend on; probe_length_um and tip_probe only set where rule pool_stresses measures
 SWELL_PROBES = ("probe_length_um", "tip_probe")
 SWELL_SETTINGS = {
@@ -119,7 +120,7 @@ def swell_runs(pattern, pools=SW["pool_models"], **wildcards):
 
 # Delamination (figures 5-7)
 DE = config["delamination"]
-DE_PRESSURE = f"{DE['pressure_mmHg']:g}"
+DE_PRESSURE = text(DE["pressure_mmHg"])
 # the state every delamination run starts from: the passive wall at delamination.pressure_mmHg
 DE_STATE = STATE.format(model="passive", pressure=DE_PRESSURE)
 # the pool sets' roles in the figures (delamination.figures): figure 5's set runs at every critical_stresses_kPa and
@@ -129,7 +130,7 @@ FIG5_SET, FIG6_SETS, FIG7_SET = DE_FIGURES["fig5"], DE_FIGURES["fig6"], DE_FIGUR
 # one run per (charge law, pool set, sigma_cr, onset criterion): figure 5's set at every sigma_cr, the other sets at
 # critical_stress_kPa
 DE_RUNS = [
-    dict(poolset=case, sigma=f"{sigma:g}", criterion=criterion)
+    dict(poolset=case, sigma=text(sigma), criterion=criterion)
     for case in DE["pool_sets"]
     for sigma in (DE["critical_stresses_kPa"] if case == FIG5_SET else [DE["critical_stress_kPa"]])
     for criterion in DE["criteria"]
@@ -147,7 +148,7 @@ def de_law_settings(wildcards):
 
 
 DE_AT_CONFIG = ("critical_stress_kPa", "pressure_mmHg")
-DE_DX = [f"{dx:g}" for dx in DE["convergence"]["dx_um"]]
+DE_DX = text(DE["convergence"]["dx_um"])
 
 
 def de_run(name):
@@ -162,8 +163,8 @@ def de_run(name):
 DE_FE = DE["fracture_energy"]
 # (matched where the paper's charge law is studied, against its own run: another law's default run may not grow)
 DE_MATCH = DE_FE["match_paper"] and PAPER_LAW in LAWS
-DE_TOUGHNESS = [f"{g:g}" for g in DE_FE["fracture_energies_J_m2"]] + ([MATCHED] if DE_MATCH else [])
-DE_FE_RUN = dict(poolset=FIG5_SET, sigma=f"{DE['critical_stress_kPa']:g}", criterion=DE["criteria"][0])
+DE_TOUGHNESS = text(DE_FE["fracture_energies_J_m2"]) + ([MATCHED] if DE_MATCH else [])
+DE_FE_RUN = dict(poolset=FIG5_SET, sigma=text(DE["critical_stress_kPa"]), criterion=DE["criteria"][0])
 # every delamination run by its name (its key filled in: the kind delaminate's, or delaminate_fracture_energy's), which
 # names its files (de_run: growth and summary tables, snapshots), ParaView series and animation.
 # The runs of the paper's damage law (figures 5-7, the claims) and those of the law with a fracture energy (target

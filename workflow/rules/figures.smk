@@ -235,7 +235,7 @@ for figure, spec in DE_FIGURE_RULES.items():
             # the snapshots of the figure's runs, by law, then pool set, then criterion (the order the script reads)
             snapshots=[
                 rules.delaminate.output.snapshots.format(
-                    law=law, poolset=poolset, sigma=f"{spec['sigma']:g}", criterion=criterion
+                    law=law, poolset=poolset, sigma=text(spec["sigma"]), criterion=criterion
                 )
                 for law in LAWS
                 for poolset in spec["poolsets"]

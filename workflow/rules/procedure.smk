@@ -22,7 +22,7 @@ PP_TIMING = {k: PP[k] for k in ("time_step", "load_update_steps")}
 PP_TOP = min(SW["max_concentration_mEq_l"], PP["swelling"]["stop_concentration_mEq_l"])
 # the damage runs: each pool set of paper_procedure.pool_sets at each of its sigma_cr and every step factor
 PP_DAMAGE_RUNS = [
-    dict(poolset=name, sigma=f"{sigma:g}", factor=factor)
+    dict(poolset=name, sigma=text(sigma), factor=factor)
     for name, sigmas in PP["pool_sets"].items()
     for sigma in sigmas
     for factor in PP_FACTORS

@@ -217,8 +217,8 @@ rule delamination_map:
         expand(
             rules.delamination_map_point.output.table,
             law=LAWS,
-            width=[f"{w:g}" for w in SE_MAP["angular_extents_deg"]],
-            sigma=[f"{s:g}" for s in SE_MAP["critical_stresses_kPa"]],
+            width=text(SE_MAP["angular_extents_deg"]),
+            sigma=text(SE_MAP["critical_stresses_kPa"]),
         ),
     output:
         report(

@@ -79,7 +79,7 @@ rule tip_stress:
 
 
 SC = config["swelling_convergence"]
-CONVERGENCE_DX = [f"{dx:g}" for dx in SC["dx_um"]]
+CONVERGENCE_DX = text(SC["dx_um"])
 # what the study's simulations depend on besides their charge law (params gag; the measurement adds
 # swelling.probe_length_um): first the run's spacing, as its key names it
 SC_SIMULATION = dict(

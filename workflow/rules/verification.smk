@@ -1,5 +1,5 @@
 VP = config["verification"]["pool"]
-ASPECT_RATIOS = [f"{r:g}" for r in VP["aspect_ratios"]]
+ASPECT_RATIOS = text(VP["aspect_ratios"])
 # the matrix of the verification is the elastin law of the bi-layered model (unweighted); GAG as in the study
 POOL_MATRIX = {
     "shear_modulus_kPa": config["bilayer"]["elastin_shear_modulus_kPa"],
@@ -97,7 +97,7 @@ rule verification_pool_figure:
 
 
 VC = config["verification"]["crack"]
-CRACK_LENGTHS = [f"{a:g}" for a in VC["half_lengths_um"]]
+CRACK_LENGTHS = text(VC["half_lengths_um"])
 
 
 rule verify_crack_length:

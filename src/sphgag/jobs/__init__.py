@@ -116,6 +116,14 @@ def kind(rule: str) -> Kind:
         raise KeyError(f"rule {rule!r} has no kind of job: one of {', '.join(sorted(KINDS))}") from None
 
 
+def text(value) -> str:
+    """The wildcard text of a number (its ``:g`` form, as :data:`NUMBERS` reads it back), or of each number of a list:
+    the one place a number becomes part of a file name."""
+    if isinstance(value, list | tuple):
+        return [text(v) for v in value]
+    return f"{value:g}"
+
+
 def typed(wildcards: Mapping) -> SimpleNamespace:
     """The wildcards ``wildcards`` with their values typed (:data:`NUMBERS`; names stay text)."""
     return SimpleNamespace(**{k: NUMBERS.get(k, str)(v) for k, v in wildcards.items()})
