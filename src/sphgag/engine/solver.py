@@ -559,3 +559,22 @@ class Solver:
             cm.seconds + c2.seconds,
         )
         return x2, ev2, total
+
+
+def log_states(run: str):
+    """An ``on_state`` callback of :meth:`Solver.follow_path` that logs each converged state
+    (progress in the rule log)."""
+
+    def on_state(state: State):
+        c = state.convergence
+        log.info(
+            "[%s] converged at %s: residual %.2e, %d Newton its, %d force evaluations, %.2f s",
+            run,
+            describe(state.load),
+            c.residual,
+            c.iterations,
+            c.force_evaluations,
+            c.seconds,
+        )
+
+    return on_state

@@ -19,7 +19,6 @@ from ..engine.numerics import Numerics
 from ..physics.donnan import CHARGE_LAWS, LAWS
 from ..physics.materials import Gag, swelling_pressure
 from ..registry import Registry, Variant
-from .pressure_diameter import log_state
 
 log = logging.getLogger("sphgag")
 
@@ -374,7 +373,7 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
     model = with_hourglass_factor(model, sw.get("hourglass_factor", 1.0))
     path_solver = Numerics.of(numerics).solver(model)
     run = model.name
-    opts = dict(run=run, on_state=log_state(run))
+    opts = dict(run=run, on_state=solver.log_states(run))
     held = lumen_load(model, start, sw.get("lumen_control", "pressure"))
     base = swelling_load(held, 0.0, 0.0)
     intact = path_solver.follow_path(start.x, base, [base], **opts)[-1]

@@ -64,25 +64,6 @@ def pressure_points(calibration: dict) -> np.ndarray:
     return np.unique(np.round(np.concatenate([sweep, calibration["transmural_pressures_mmHg"]]), 10))
 
 
-def log_state(run: str):
-    """An ``on_state`` callback of :meth:`sphgag.engine.solver.Solver.follow_path` that logs each converged state
-    (progress in the rule log)."""
-
-    def on_state(state: solver.State):
-        c = state.convergence
-        log.info(
-            "[%s] converged at %s: residual %.2e, %d Newton its, %d force evaluations, %.2f s",
-            run,
-            solver.describe(state.load),
-            c.residual,
-            c.iterations,
-            c.force_evaluations,
-            c.seconds,
-        )
-
-    return on_state
-
-
 @dataclass
 class PressureDiameter:
     """Results of a pressure-diameter protocol."""
@@ -198,7 +179,7 @@ def mean_pressure_diameter(
         pressures.max(),
     )
     path_solver = Numerics.of(numerics).solver(model)
-    states = path_solver.follow_path(model.layout.X, Load(1.0, 0.0), loads, run=run, on_state=log_state(run))
+    states = path_solver.follow_path(model.layout.X, Load(1.0, 0.0), loads, run=run, on_state=solver.log_states(run))
     final = [s for s in states if s.load.axial_stretch == lz]
     wanted = set(np.round(calibration["transmural_pressures_mmHg"], 10))
     table = pd.DataFrame([state_row(model, s, tube, R_in, H) for s in final])

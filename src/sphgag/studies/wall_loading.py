@@ -23,7 +23,6 @@ from .pressure_diameter import (
     PressureDiameter,
     _above_sweep,
     exact_curve,
-    log_state,
     state_row,
     transmural,
 )
@@ -133,7 +132,7 @@ def homeostasis(
         steps,
         R0,
     )
-    state = path_solver.follow_path(x0, start, loads, run=run, on_state=log_state(run))[-1]
+    state = path_solver.follow_path(x0, start, loads, run=run, on_state=solver.log_states(run))[-1]
     profile = measure.ring_profile(model, state.evaluation)
     r_in = measure.surface_radius(model, state.x, "inner")
     pressures = dict(
@@ -191,7 +190,7 @@ def activated(
     path_solver = path_solver or Numerics.of(numerics).solver(model)
     run = model.name
     P_act = cal["activation_pressure_mmHg"]
-    on_state = log_state(run)
+    on_state = solver.log_states(run)
     log.info(
         "[%s] %s model: pressure control from the homeostatic %.1f mmHg to %.1f mmHg%s",
         run,
@@ -260,7 +259,9 @@ def bilayer_pressure_diameter(
     states = [start]
     for branch in (down, up):
         loads = [Load(1.0, P * MMHG_TO_KPA, material=start.load.material) for P in branch]
-        states += path_solver.follow_path(start.x, start.load, loads, run=model.name, on_state=log_state(model.name))
+        states += path_solver.follow_path(
+            start.x, start.load, loads, run=model.name, on_state=solver.log_states(model.name)
+        )
     states.sort(key=lambda s: s.load.pressure_kPa)
     # eq. (2.17) normalised by the traction-free (zero-pressure) geometry of the semi-analytical tube, the
     # same constant for the SPH points and the exact curve
