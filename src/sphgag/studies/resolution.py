@@ -15,19 +15,11 @@ from __future__ import annotations
 import pandas as pd
 
 from . import annulus, volume_states
-from .gci import estimate, tidy
+from .gci import TIDY_RESULTS, estimate, tidy
 from .inclusion import observed_order
 
 GCI_KEYS = ["charge_law", "pool_model", "model", "case", "pressure_mmHg", "quantity", "at"]
-SWELLING_GCI_COLUMNS = GCI_KEYS[:-1] + [
-    "at",
-    "dx_um",
-    "value",
-    "observed_order",
-    "extrapolated",
-    "gci_fine",
-    "order_in_range",
-]
+SWELLING_GCI_COLUMNS = [*GCI_KEYS[:-1], "at", "dx_um", "value", *TIDY_RESULTS]
 AT_VOLUME = {  # quantity at a given volume ratio J <- its column
     "concentration_at_volume_mEq_l": "concentration_mEq_l",
     "tip_radial_stress_at_volume_kPa": "tip_radial_stress_kPa",
@@ -82,18 +74,7 @@ def swelling_band(table: pd.DataFrame, pressure_mmHg: float) -> pd.DataFrame:
 
 #: the concentrations of a run's events whose convergence the study measures (summary.csv columns)
 CONVERGED_QUANTITIES = ("onset_concentration_mEq_l", "runaway_concentration_mEq_l", "merge_concentration_mEq_l")
-DELAMINATION_GCI_COLUMNS = [
-    "charge_law",
-    "criterion",
-    "case",
-    "quantity",
-    "dx_um",
-    "value",
-    "observed_order",
-    "extrapolated",
-    "gci_fine",
-    "order_in_range",
-]
+DELAMINATION_GCI_COLUMNS = ["charge_law", "criterion", "case", "quantity", "dx_um", "value", *TIDY_RESULTS]
 
 
 def delamination_gci(convergence: pd.DataFrame) -> pd.DataFrame:
