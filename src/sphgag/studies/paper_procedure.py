@@ -38,8 +38,8 @@ from ..engine.model import Model
 from ..options import Options, file_name_problems
 from ..physics import materials
 from . import artery
+from .delamination.damage_pass import damage_step, onset_measure, with_ruptures
 from .delamination.front import Front
-from .delamination.growth import damage_step, onset_measure, with_ruptures
 from .delamination.settings import Settings
 from .pool_swelling import lumen_load, pool_measurements, swelling_load, with_hourglass_factor
 

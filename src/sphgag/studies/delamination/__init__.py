@@ -7,6 +7,8 @@ One module per concept:
   islands (:class:`Front`);
 * :mod:`.growth`: the staggered protocol of one run, seeding, damage passes, snaps (:class:`GrowthRun`,
   :func:`grow`);
+* :mod:`.damage_pass`: one damage pass of eq. (2.28) on a converged state (shared with the explicit procedure);
+* :mod:`.events`: the concentrations of a run's onset, runaway and merge, bisected between levels;
 * :mod:`.tables`: a run's records and the tables of them: rows, summary and its statistics, labels, the
   delamination map's classes, the pool as a pressurised crack (:func:`griffith`);
 * :mod:`.snapshots`: a run's snapshots on disk, from which it can restart;

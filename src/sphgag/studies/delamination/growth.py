@@ -37,7 +37,7 @@ before a pool spanned ``max_extent_deg``, a cap on the run, or had run away befo
 concentration step's or a damage pass's) and ``numerical`` (a snap came to rest at no equilibrium and volume control
 found no limit point, or ``max_passes`` ended growth); the run always ends at its last equilibrium. Then the
 concentrations of its events, onset, runaway and merge, are bisected between the ramp's levels
-(:meth:`GrowthRun.critical`).
+(:func:`.events.critical`).
 
 **Pseudo-time** is the number of damage-and-relax passes. The paper's normalised time
 is that of its explicit dynamics, in which every time step is one damage update with
@@ -60,62 +60,22 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ...engine import forces, measure, pool_volume, snap, solver
+from ...engine import measure, pool_volume, snap, solver
 from ...engine.geometry import Sector
 from ...engine.history import HistoryMaterial, ParticleHistory
 from ...engine.loading import MMHG_TO_KPA, Load
 from ...engine.model import Model
 from ...engine.numerics import Numerics
 from ...engine.solver import Solver
-from ...physics import damage
 from ...studies.pool_swelling import swelling_load
 from .. import artery
-from ..onset import CRITERIA
+from .damage_pass import damage_step, onset_measure, with_ruptures
+from .events import RUNAWAY_EXTENT_FACTOR, LimitPoint, critical
 from .front import Front
 from .settings import Settings
-from .tables import RUNAWAY_KINDS, Critical, Pass, Result, Stop, growth_table, run_summary
+from .tables import Critical, Pass, Result, Stop, growth_table, run_summary
 
 log = logging.getLogger("sphgag")
-
-
-def onset_measure(model: Model, ev, hist: ParticleHistory, cand: np.ndarray, settings: Settings) -> np.ndarray:
-    """The radial Cauchy stress (eq. 2.10, current polar frame) the onset test of eq. (2.28) compares with sigma_cr,
-    at the candidates, by the run's onset criterion (:data:`sphgag.studies.onset.CRITERIA`)."""
-    return CRITERIA[settings.criterion].measure(model, ev, hist, cand, settings)
-
-
-def intact_energy(model: Model, ev, base_props: np.ndarray) -> np.ndarray:
-    """``W_0`` (eq. 2.23) of every particle with the undamaged material, at the state ``ev``."""
-    W = np.empty(model.n)
-    forces.energy_densities(ev.F, ev.load.axial_stretch, model.cth, model.sth, base_props, W)
-    return W
-
-
-def damage_step(model: Model, front: Front, settings: Settings, material: HistoryMaterial, ev, found):
-    """The damage state (eq. 2.28) that the state ``ev`` makes from the history of ``material``, and the intact energy
-    density ``W_0`` (eq. 2.23) of every particle there. ``found``: ``(candidates, their pools, their onset
-    measures)``. Only candidates start to damage; GAG particles keep their ``D``."""
-    hist, lay = material.history, model.layout
-    cand, pools, sigma = found
-    dmg = damage.DamageState(hist.D.copy(), hist.onset_stretch.copy(), hist.onset_energy.copy())
-    radial = np.full(lay.n, -np.inf)
-    radial[cand] = sigma
-    W0 = intact_energy(model, ev, material.base(ev.load))
-    band = np.full(lay.n, np.nan)
-    band[cand] = front.thickness[pools]  # the band a pool's growth converts: its radial extent
-    dmg.update(settings.law, cand, radial, damage.radial_stretch(ev.F, lay.theta), W0, band)
-    dmg.D[hist.gag] = hist.D[hist.gag]
-    return dmg, W0
-
-
-def with_ruptures(hist: ParticleHistory, ruptured: np.ndarray, cand: np.ndarray, pools: np.ndarray, step: int):
-    """``hist`` with the candidates ``ruptured`` become GAG particles of their pools (``pools``, per candidate) at
-    damage pass ``step`` (section 2.7)."""
-    if not ruptured.size:
-        return hist
-    owner = np.full(hist.n, -1)
-    owner[cand] = pools
-    return hist.rupture(ruptured, owner[ruptured], step)
 
 
 @dataclass(frozen=True)
@@ -491,50 +451,13 @@ class GrowthRun:
             if kind != "arrested":
                 break
             before = self.branch()
-        return self.result(stop, self.critical(stop, before, before_onset))
+        return self.result(stop, critical(self, stop, before, before_onset))
 
     # -- the concentrations of the run's events, between the ramp's levels ------------------------------------------
     def branch(self) -> GrowthRun:
         """A run that continues from this one's current state without changing it (its own rows, no snapshots), on
         the same model and solver."""
         return dataclasses.replace(self, rows=list(self.rows[-1:]), snapshots=[], wanted=frozenset())
-
-    def critical(self, stop: Stop, before: GrowthRun, before_onset: GrowthRun | None) -> Critical:
-        """The concentrations of the run's events (:class:`Critical`), each bisected between the last level below
-        it (the run at rest there: ``before_onset`` for the onset, ``before`` for the runaway) and the level it
-        happened in; the run is unchanged."""
-        onset = runaway = np.nan
-        if before_onset is not None:
-            onset = self._bisect(before_onset, self.onset_c, _reaches_onset, "onset")
-        if stop.kind in RUNAWAY_KINDS:
-            runaway = self._bisect(before, stop.level, _runs_away, "runaway")
-        self.model.set_props(self.material)
-        self.solver.reset()
-        return Critical(
-            onset=onset,
-            runaway=runaway,
-            merge=runaway if stop.kind == "merged" else np.nan,
-            limit=self.limit_c,
-            arrested_length=before.rows[-1].length if before.rows else 0.0,
-        )
-
-    def _bisect(self, below: GrowthRun, above: float, happens, what: str) -> float:
-        """The concentration between ``below``'s (at rest, the event not yet happened) and ``above`` (where it
-        happened) at which ``happens(probe, c)`` first holds, bisected to ``bisection_tolerance_mEq_l``: the middle of
-        the last bracket. Each probe continues from the highest state at rest below it (:meth:`branch`)."""
-        lo, hi = below.concentration, float(above)
-        while hi - lo > self.settings.bisection_tolerance_mEq_l:
-            c = 0.5 * (lo + hi)
-            probe = below.branch()
-            probe.name = f"{self.name} ({what} probe)"
-            self.model.set_props(below.material)
-            self.solver.reset()
-            if happens(probe, c):
-                hi = c
-            else:
-                lo, below = c, probe
-        log.info("[%s] %s concentration %.2f mEq/l (between %.2f and %.2f)", self.name, what, 0.5 * (lo + hi), lo, hi)
-        return 0.5 * (lo + hi)
 
     # -- bookkeeping ----------------------------------------------------------------------------------------------
     def _settle(self, material: HistoryMaterial) -> None:
@@ -607,43 +530,6 @@ class GrowthRun:
         if not any(s[0] == self.step and s[1].load == state.load for s in snapshots):
             snapshots.append((self.step, state, self.hist))
         return Result(growth, summary, snapshots, (state, self.hist))
-
-
-class LimitPoint(solver.SimulationError):
-    """A concentration step past the largest concentration the pools hold with their damage frozen (``limit``,
-    mEq/l, found by volume control: :func:`sphgag.engine.pool_volume.continue_path`)."""
-
-    def __init__(self, run: str, load: Load, reason: str, limit: float):
-        super().__init__(run, load, reason)
-        self.limit = float(limit)
-
-
-def _reaches_onset(probe: GrowthRun, c: float) -> bool:
-    """At ``c`` (history fixed, no damage yet) the onset measure reaches sigma_cr at a candidate (eq. 2.28); a
-    concentration without equilibrium counts as reached."""
-    try:
-        probe.raise_concentration(c)
-    except (LimitPoint, snap.NoStableState):
-        return True
-    return probe.next_history().begun
-
-
-#: growth at a fixed concentration has run away once it has taken a pool to this many times the largest extent at rest
-#: it started the level from: a probe of the runaway concentration stops there (or at ``max_extent_deg``, the run's own
-#: cap, if smaller), and a run whose level got that far before a snap came to rest at no equilibrium is ``unstable``
-RUNAWAY_EXTENT_FACTOR = 2.0
-
-
-def _runs_away(probe: GrowthRun, c: float) -> bool:
-    """Growth from the probe's state at rest, at ``c``, does not arrest (or ``c`` has no equilibrium): it merges,
-    reaches an edge or a layer, or takes a pool to :data:`RUNAWAY_EXTENT_FACTOR` times its extent at rest."""
-    settings = probe.settings
-    cap = min(settings.max_extent_deg, RUNAWAY_EXTENT_FACTOR * float(probe.front.extent_deg(probe.hist).max()))
-    probe.settings = dataclasses.replace(settings, max_extent_deg=cap)
-    try:
-        return probe.settle_level(c)[0] != "arrested"
-    finally:  # a probe that arrests is where the next probes start, with the run's own cap
-        probe.settings = settings
 
 
 def grow(
