@@ -21,6 +21,8 @@ from collections.abc import Mapping
 from dataclasses import MISSING, fields
 from types import MappingProxyType
 
+from .jobs import text
+
 
 def _frozen(value):
     """Lists as tuples and mappings as read-only mappings, all the way down."""
@@ -40,9 +42,9 @@ def key_text(path) -> str:
 
 
 def file_name_problems(section: str, key: str, values) -> list[str]:
-    """The values of ``section.key`` that would give one file name (values name files as ``{value:g}``: pressures,
-    spacings, step factors, critical stresses)."""
-    problems, names = [], [f"{v:g}" for v in values]
+    """The values of ``section.key`` that would give one file name (values name files by their wildcard text,
+    :func:`sphgag.jobs.text`: pressures, spacings, step factors, critical stresses)."""
+    problems, names = [], text(list(values))
     for name in sorted({n for n in names if names.count(n) > 1}):
         same = [v for v, n in zip(values, names) if n == name]
         problems.append(f"{section}.{key}: {same} all give the file name '{name}': make them differ by more")

@@ -384,14 +384,15 @@ def jacobian_blocks(x, V, ptr, nbr, mir, a, s, ah, sh, R, hgc, F, Fh, lz, cth, s
                         v = b[p, 0] * T[q, c, d, 0] + b[p, 1] * T[q, c, d, 1]
                         data[blk, c, d] -= Vi * M[p, c] * M[q, d] * v
 
-        _hourglass_blocks(i, x, nbr, R, hgc, ah, sh, Fh, M, b, e0, m, blockmap[base:], data)
+        _hourglass_blocks(i, x, nbr, R, hgc, ah, sh, Fh, M, b, e0, m, blockmap, base, data)
 
 
 @njit(cache=True, error_model="numpy")
-def _hourglass_blocks(i, x, nbr, R, hgc, ah, sh, Fh, M, b, e0, m, blockmap, data):
+def _hourglass_blocks(i, x, nbr, R, hgc, ah, sh, Fh, M, b, e0, m, blockmap, base, data):
     """The hourglass pairs' part of :func:`jacobian_blocks` for particle ``i`` (its ``m`` nodes from entry ``e0``,
-    mirror diagonals ``M``, the blocks of its stencil ``blockmap``): derivative of the pair vectors ``c delta n``
-    through ``F~_i`` (node vectors ``-sh_i``, ``ah_ik``; ``b`` is overwritten with them), ``r`` and ``n``."""
+    mirror diagonals ``M``, the blocks of its stencil from ``blockmap[base]``): derivative of the pair vectors
+    ``c delta n`` through ``F~_i`` (node vectors ``-sh_i``, ``ah_ik``; ``b`` is overwritten with them), ``r`` and
+    ``n``."""
     b[0, 0], b[0, 1] = -sh[i, 0], -sh[i, 1]
     for k in range(1, m):
         b[k, 0], b[k, 1] = ah[e0 + k - 1, 0], ah[e0 + k - 1, 1]
@@ -434,12 +435,12 @@ def _hourglass_blocks(i, x, nbr, R, hgc, ah, sh, Fh, M, b, e0, m, blockmap, data
                 g01 += h01 * sy
                 g10 += h10 * sx
                 g11 += h11 * sy
-            bi = blockmap[p]  # (node 0, node p)
+            bi = blockmap[base + p]  # (node 0, node p)
             data[bi, 0, 0] -= g00
             data[bi, 0, 1] -= g01
             data[bi, 1, 0] -= g10
             data[bi, 1, 1] -= g11
-            bj = blockmap[k * m + p]  # (node k, node p)
+            bj = blockmap[base + k * m + p]  # (node k, node p)
             data[bj, 0, 0] += sx * g00
             data[bj, 0, 1] += sx * g01
             data[bj, 1, 0] += sy * g10
