@@ -1,5 +1,9 @@
 """The sensitivity study's parts against closed forms: the SALib wrapper (Morris on a linear function, Sobol on a
-linear function and on Ishigami), failed samples, the scenario's inputs, and the delamination map's classes."""
+linear function and on Ishigami), failed samples, the registry of methods and a method of one file
+(tests/plugins/sensitivity_method.py), the scenario's inputs, and the delamination map's classes."""
+
+import subprocess
+import sys
 
 import numpy as np
 import pandas as pd
@@ -8,8 +12,13 @@ import pytest
 from sphgag.studies import pool_response, sensitivity
 from sphgag.studies.delamination.tables import level_classes
 
+from .plugins import sensitivity_method as plugin
+
+MORRIS, SOBOL = sensitivity.SENSITIVITY_METHODS.values()
+
 LINEAR = np.array([2.0, -3.0, 0.5, 0.0])
 PROBLEM = sensitivity.Problem(("a", "b", "c", "d"), (0.0, 1.0, -1.0, 5.0), (1.0, 3.0, 1.0, 6.0))
+BOOTSTRAP = dict(resamples=100, confidence=0.95)
 
 
 def linear(X):
@@ -23,10 +32,10 @@ def table(rows) -> pd.DataFrame:
 def test_morris_gives_the_elementary_effects_of_a_linear_function_exactly():
     """y = sum a_i x_i: every elementary effect of x_i is a_i (high_i - low_i), so mu* = |a_i| (high_i - low_i),
     mu = a_i (high_i - low_i) and sigma = 0."""
-    design = sensitivity.morris_design(PROBLEM, trajectories=6, levels=4, seed=3)
+    design = MORRIS.design(PROBLEM, trajectories=6, levels=4, seed=3)
     X = design[list(PROBLEM.names)].to_numpy()
-    assert len(design) == 6 * (len(PROBLEM.names) + 1)
-    rows = sensitivity.morris_indices(PROBLEM, design, linear(X), np.zeros(len(X), bool), 4, 100, 0.95, 3)
+    assert len(design) == 6 * (len(PROBLEM.names) + 1) == MORRIS.size(len(PROBLEM.names), trajectories=6)
+    rows = MORRIS.indices(PROBLEM, design, linear(X), np.zeros(len(X), bool), levels=4, **BOOTSTRAP, seed=3)
     v = table(rows)
     span = np.subtract(PROBLEM.high, PROBLEM.low)
     for name, a, s in zip(PROBLEM.names, LINEAR, span):
@@ -38,9 +47,9 @@ def test_morris_gives_the_elementary_effects_of_a_linear_function_exactly():
 
 def test_sobol_gives_the_variance_shares_of_a_linear_function():
     """Independent uniform inputs: S1_i = ST_i = a_i^2 var_i / sum_j a_j^2 var_j, var_i = (high_i - low_i)^2 / 12."""
-    design = sensitivity.sobol_design(PROBLEM, base_samples=1024, seed=5)
+    design = SOBOL.design(PROBLEM, inputs=4, base_samples=1024, seed=5)
     X = design[list(PROBLEM.names)].to_numpy()
-    v = table(sensitivity.sobol_indices(PROBLEM, linear(X), np.zeros(len(X), bool), 100, 0.95, 5))
+    v = table(SOBOL.indices(PROBLEM, design, linear(X), np.zeros(len(X), bool), **BOOTSTRAP, seed=5))
     share = LINEAR**2 * np.subtract(PROBLEM.high, PROBLEM.low) ** 2
     share /= share.sum()
     for name, s in zip(PROBLEM.names, share):
@@ -57,9 +66,10 @@ def test_sobol_reproduces_the_ishigami_indices_with_intervals_that_hold_them():
     total = v1 + v2 + v13
     exact = {"S1": [v1 / total, v2 / total, 0.0], "ST": [(v1 + v13) / total, v2 / total, v13 / total]}
     problem = sensitivity.Problem(("x1", "x2", "x3"), (-np.pi,) * 3, (np.pi,) * 3)
-    X = sensitivity.sobol_design(problem, base_samples=2048, seed=7)[list(problem.names)].to_numpy()
+    design = SOBOL.design(problem, inputs=3, base_samples=2048, seed=7)
+    X = design[list(problem.names)].to_numpy()
     y = np.sin(X[:, 0]) + a * np.sin(X[:, 1]) ** 2 + b * X[:, 2] ** 4 * np.sin(X[:, 0])
-    rows = pd.DataFrame(sensitivity.sobol_indices(problem, y, np.zeros(len(y), bool), 500, 0.95, 7))
+    rows = pd.DataFrame(SOBOL.indices(problem, design, y, np.zeros(len(y), bool), 500, 0.95, 7))
     for r in rows.itertuples():
         target = exact[r.index][problem.names.index(r.input)]
         assert r.value == pytest.approx(target, abs=0.03), (r.input, r.index)
@@ -69,7 +79,7 @@ def test_sobol_reproduces_the_ishigami_indices_with_intervals_that_hold_them():
 def test_a_failed_sample_is_reported_by_its_inputs_and_counted_in_the_indices():
     """A run that fails keeps its row (inputs, status, error); its Morris trajectory leaves that output's indices and
     every index row says so; a bug (any other exception) is not a failed sample."""
-    design = sensitivity.morris_design(PROBLEM, trajectories=4, levels=4, seed=1)
+    design = MORRIS.design(PROBLEM, trajectories=4, levels=4, seed=1)
     bad = int(design.index[7])
 
     class Diverged(RuntimeError):
@@ -89,7 +99,7 @@ def test_a_failed_sample_is_reported_by_its_inputs_and_counted_in_the_indices():
         design.loc[bad, list(PROBLEM.names)].to_numpy(float)
     )
     failed = (out.status == "failed").to_numpy()
-    rows = sensitivity.morris_indices(PROBLEM, design, out.y.to_numpy(), failed, 4, 100, 0.95, 1)
+    rows = MORRIS.indices(PROBLEM, design, out.y.to_numpy(), failed, levels=4, **BOOTSTRAP, seed=1)
     k1 = len(PROBLEM.names) + 1
     assert all((r["samples_used"], r["samples_missing"], r["samples_failed"]) == (3 * k1, 1, 1) for r in rows)
     v = table(rows)
@@ -103,20 +113,20 @@ def test_a_failed_sample_is_reported_by_its_inputs_and_counted_in_the_indices():
 
 
 def test_sobol_leaves_out_the_base_rows_of_a_missing_sample_and_says_so():
-    design = sensitivity.sobol_design(PROBLEM, base_samples=64, seed=2)
+    design = SOBOL.design(PROBLEM, inputs=4, base_samples=64, seed=2)
     y = linear(design[list(PROBLEM.names)].to_numpy())
     y[10] = np.nan  # base row 10 // (k + 2) = 1
-    rows = sensitivity.sobol_indices(PROBLEM, y, np.isnan(y), 100, 0.95, 2)
+    rows = SOBOL.indices(PROBLEM, design, y, np.isnan(y), **BOOTSTRAP, seed=2)
     k2 = len(PROBLEM.names) + 2
     assert all((r["samples_used"], r["samples_missing"], r["samples_failed"]) == (63 * k2, 1, 1) for r in rows)
     assert np.isfinite([r["value"] for r in rows]).all()
 
 
 def test_the_designs_are_the_same_for_the_same_seed():
-    a = sensitivity.morris_design(PROBLEM, 3, 4, seed=11).to_csv()
-    assert a == sensitivity.morris_design(PROBLEM, 3, 4, seed=11).to_csv()
-    assert a != sensitivity.morris_design(PROBLEM, 3, 4, seed=12).to_csv()
-    assert sensitivity.sobol_design(PROBLEM, 8, seed=11).to_csv() == sensitivity.sobol_design(PROBLEM, 8, 11).to_csv()
+    a = MORRIS.design(PROBLEM, 3, 4, seed=11).to_csv()
+    assert a == MORRIS.design(PROBLEM, 3, 4, seed=11).to_csv()
+    assert a != MORRIS.design(PROBLEM, 3, 4, seed=12).to_csv()
+    assert SOBOL.design(PROBLEM, 4, 8, seed=11).to_csv() == SOBOL.design(PROBLEM, 4, 8, 11).to_csv()
 
 
 def test_the_most_influential_inputs_are_ranked_by_mu_star_relative_to_each_output():
@@ -130,8 +140,46 @@ def test_the_most_influential_inputs_are_ranked_by_mu_star_relative_to_each_outp
             for i, v in (("a", 0.0), ("b", 0.0), ("c", 0.9), ("d", 1.0))
         ]
     )
-    assert sensitivity.most_influential(rows, 2) == ["a", "d"]  # d leads o2, a leads o1; b is half of o1's top
-    assert sensitivity.most_influential(rows, 3) == ["a", "d", "c"]
+    assert MORRIS.most_influential(rows, 2) == ["a", "d"]  # d leads o2, a leads o1; b is half of o1's top
+    assert MORRIS.most_influential(rows, 3) == ["a", "d", "c"]
+    # the Sobol design screens with the Morris indices: over the inputs they rank highest, in the problem's order
+    assert SOBOL.screening == MORRIS.name and MORRIS.paper and not SOBOL.paper
+    design = SOBOL.design(PROBLEM, inputs=2, base_samples=8, seed=1, screening=rows)
+    assert list(design.columns) == ["sample", "a", "d"] and len(design) == SOBOL.size(4, inputs=2, base_samples=8)
+
+
+def test_the_figure_draws_a_panel_per_method_titled_by_the_registry_without_the_engine():
+    """views/sensitivity.py reads the methods from the registry's module, which imports no engine (Numba) code."""
+    code = "import sys, sphgag.views.sensitivity as v; print(list(v.PANELS), 'numba' in sys.modules)"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out == f"{list(sensitivity.SENSITIVITY_METHODS)} False\n"
+    assert sensitivity.SENSITIVITY_METHODS.titles == {"morris": "Morris", "sobol": "Sobol"}
+
+
+# -- a sensitivity method of one file ---------------------------------------------------------------------------------
+
+
+def test_a_plugin_method_is_accepted_by_name_draws_its_design_and_fills_the_index_table():
+    """tests/plugins/sensitivity_method.py, registered for the test only: looked up by name, its design draws its
+    samples inside the ranges, and :func:`sensitivity.indices_table` gives its rows with the table's columns."""
+    reg, method = plugin.REGISTRY, plugin.VARIANT
+    with pytest.raises(ValueError, match="unknown sensitivity method 'rank_correlation': one of morris, sobol"):
+        sensitivity.indices_table(method.name, None, None, {}, [], {})
+    with reg.registered(method):
+        assert reg.lookup(method.name) is method and reg.names == ("morris", "sobol", method.name)
+        design = method.design(PROBLEM, samples=64, seed=4)
+        X = design[list(PROBLEM.names)].to_numpy()
+        assert len(design) == method.size(4, samples=64) and ((X >= PROBLEM.low) & (X <= PROBLEM.high)).all()
+        y = linear(X)
+        y[5] = np.nan
+        samples = design.assign(charge_law="prescribed", status=["failed" if k == 5 else "ok" for k in range(64)], y=y)
+        ranges = {n: dict(low=lo, high=hi) for n, lo, hi in zip(PROBLEM.names, PROBLEM.low, PROBLEM.high)}
+        out = sensitivity.indices_table(method.name, design, samples, ranges, ["y"], {})
+    assert method.name not in reg
+    assert list(out.columns) == ["method", "charge_law", "output", "input"] + sensitivity.INDEX_COLUMNS
+    assert len(out) == 4 and (out.method == method.name).all() and (out.samples_failed == 1).all()
+    rho = out.set_index("input").value
+    assert rho.abs().idxmax() == "b" and rho["b"] < -0.8 and rho["a"] > 0.0  # y = 2a - 3b + c/2 over their ranges
 
 
 # -- the scenario of a sample -----------------------------------------------------------------------------------------

@@ -1,6 +1,7 @@
 import math
 
 from sphgag.studies import pool_response
+from sphgag.studies.sensitivity import SENSITIVITY_METHODS
 
 SE = config["sensitivity"]
 # the nominal scenario of every sample (sphgag.studies.pool_response): figure 5's pool with the pipeline's own slices, so
@@ -22,20 +23,20 @@ pool_response.check_inputs(SE_SCENARIO, SE["inputs"])  # config.validate names t
 # the inputs' ranges without their sources (a source is documentation: editing it reruns nothing)
 SE_RANGES = {name: dict(low=r["low"], high=r["high"]) for name, r in SE["inputs"].items()}
 SE_K = len(SE_RANGES)
-SE_SIZES = dict(
-    nominal=1,
-    morris=SE["morris"]["trajectories"] * (SE_K + 1),
-    sobol=SE["sobol"]["base_samples"] * (SE["sobol"]["inputs"] + 2),
-)
-SE_BATCHES = {m: range(math.ceil(n / SE["batch_size"])) for m, n in SE_SIZES.items()}
-# what a design reads of its method's settings, and what its indices read (a resampling setting reruns no sample)
-SE_DESIGN_KEYS = dict(morris=("trajectories", "levels", "seed"), sobol=("inputs", "base_samples", "seed"))
-SE_INDEX_KEYS = dict(morris=("levels", "resamples", "confidence", "seed"), sobol=("resamples", "confidence", "seed"))
+# a method's samples, the settings of sensitivity.<method> its design reads and those its indices read (a resampling
+# setting reruns no sample); the nominal design is the configuration's own values (one sample)
 SE_SETTINGS = {
-    purpose: {m: {k: SE[m][k] for k in keys[m]} for m in ("morris", "sobol")}
-    for purpose, keys in (("design", SE_DESIGN_KEYS), ("indices", SE_INDEX_KEYS))
+    purpose: {n: {k: SE[n][k] for k in getattr(m, f"{purpose}_keys")} for n, m in SENSITIVITY_METHODS.items()}
+    for purpose in ("design", "index")
 }
-# a method's design, indices and samples (the Sobol design reads the Morris indices, which are written after it)
+SE_SIZES = dict(nominal=1, **{n: m.size(SE_K, **SE_SETTINGS["design"][n]) for n, m in SENSITIVITY_METHODS.items()})
+SE_SETTINGS["design"]["nominal"] = {n: pool_response.nominal(SE_SCENARIO, n) for n in SE_RANGES}
+SE_BATCHES = {m: range(math.ceil(n / SE["batch_size"])) for m, n in SE_SIZES.items()}
+# the method whose design reads another's indices (Sobol screens with the Morris indices, written after the Morris
+# design): rule sobol_design; the nominal design and the others': rule sensitivity_design
+(SE_SCREENED,) = [m for m in SENSITIVITY_METHODS.values() if m.screening]
+SE_UNSCREENED = ("nominal", *(n for n, m in SENSITIVITY_METHODS.items() if not m.screening))
+# a method's design, indices and samples
 SE_DESIGN = "results/sensitivity/{method}/design.csv"
 SE_INDICES = "results/sensitivity/{method}/indices.csv"
 SE_SAMPLES = "results/sensitivity/{method}/samples.csv"
@@ -43,14 +44,14 @@ SE_MAP = SE["map"]
 
 
 wildcard_constraints:
-    method="nominal|morris|sobol",
+    method="|".join(("nominal", *SENSITIVITY_METHODS)),
     batch=r"\d+",
     width=r"[0-9.]+",
 
 
 rule sensitivity_design:
-    """The samples of the {method} design (nominal: the configuration's own values; morris: Morris trajectories over
-    every input)."""
+    """The samples of the {method} design (nominal: the configuration's own values; a method: its design over every
+    input, e.g. Morris trajectories)."""
     input:
         code=code_of("sensitivity_design"),
     output:
@@ -60,13 +61,11 @@ rule sensitivity_design:
     benchmark:
         JOBS.sensitivity_design.benchmark
     wildcard_constraints:
-        method="nominal|morris",
+        method="|".join(SE_UNSCREENED),
     params:
         ranges=SE_RANGES,
-        morris=lambda wildcards: SE_SETTINGS["design"]["morris"] if wildcards.method == "morris" else {},
-        nominal=lambda wildcards: (
-            {n: pool_response.nominal(SE_SCENARIO, n) for n in SE_RANGES} if wildcards.method == "nominal" else {}
-        ),
+        method=lambda wildcards: wildcards.method,
+        settings=lambda wildcards: SE_SETTINGS["design"][wildcards.method],
     script:
         "../scripts/sensitivity_design.py"
 
@@ -76,16 +75,17 @@ rule sobol_design:
     indices)."""
     input:
         code=code_of("sensitivity_design"),
-        morris=SE_INDICES.format(method="morris"),
+        screening=SE_INDICES.format(method=SE_SCREENED.screening),
     output:
-        SE_DESIGN.format(method="sobol"),
+        SE_DESIGN.format(method=SE_SCREENED.name),
     log:
         JOBS.sobol_design.log,
     benchmark:
         JOBS.sobol_design.benchmark
     params:
         ranges=SE_RANGES,
-        sobol=SE_SETTINGS["design"]["sobol"],
+        method=SE_SCREENED.name,
+        settings=SE_SETTINGS["design"][SE_SCREENED.name],
     script:
         "../scripts/sensitivity_design.py"
 
@@ -131,10 +131,10 @@ rule sensitivity_method:
     benchmark:
         JOBS.sensitivity_method.benchmark
     wildcard_constraints:
-        method="morris|sobol",
+        method="|".join(SENSITIVITY_METHODS),
     params:
         ranges=SE_RANGES,
-        settings=lambda wildcards: SE_SETTINGS["indices"][wildcards.method],
+        settings=lambda wildcards: SE_SETTINGS["index"][wildcards.method],
     script:
         "../scripts/sensitivity_indices.py"
 
@@ -144,8 +144,8 @@ rule sensitivity_tables:
     and the samples without an output (a failed run, or no equilibrium at the stated concentration), by their inputs."""
     input:
         code=code_of("sensitivity_tables"),
-        indices=expand(rules.sensitivity_method.output.indices, method=("morris", "sobol")),
-        samples=expand(rules.sensitivity_method.output.samples, method=("morris", "sobol")),
+        indices=expand(rules.sensitivity_method.output.indices, method=SENSITIVITY_METHODS.names),
+        samples=expand(rules.sensitivity_method.output.samples, method=SENSITIVITY_METHODS.names),
         nominal=expand(rules.sensitivity_batch.output.table, method="nominal", law=LAWS, batch=0),
     output:
         indices=report(

@@ -1,5 +1,5 @@
-"""Rule sensitivity_method: the Morris or Sobol indices of every output under every charge law, from the batches of
-its design (sphgag.studies.sensitivity.indices_table); every sample with its outputs."""
+"""Rule sensitivity_method: a method's indices of every output under every charge law, from the batches of its design
+(sphgag.studies.sensitivity.indices_table); every sample with its outputs."""
 
 import pandas as pd
 

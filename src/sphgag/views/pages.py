@@ -18,6 +18,7 @@ from ..physics.donnan import PAPER_LAW, charge_law
 from ..studies import gci, paper_settings, resolution, wall_profiles
 from ..studies.claims.procedure import P5_CONCENTRATION, P5_RANGE
 from ..studies.claims.verdicts import markdown
+from ..studies.sensitivity import MORRIS
 from .names import LAW_FIGURES, law_figure
 
 
@@ -97,7 +98,7 @@ SHOWN_INPUTS = 5
 def morris_table(indices: pd.DataFrame) -> str:
     """Per output and charge law: the inputs ranked by Morris mu* (with the bootstrap interval of the first), and the
     numerics' share: the largest mu* of a numerical input over the top input's mu*."""
-    mu = indices[(indices.method == "morris") & (indices["index"] == "mu_star")]
+    mu = MORRIS.influence(indices)
     head = (
         "| output | law | samples used (failed) | inputs by mu* (per full range), largest first | "
         "numerics' share of the top mu* |"

@@ -8,6 +8,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 
+from ..studies.sensitivity import SENSITIVITY_METHODS
 from .style import GAG_CONCENTRATION, LAST_CONVERGED, _style, is_paper_law, law_short, paper_pool
 
 SENSITIVITY_OUTPUTS = {  # results/sensitivity/indices.csv output -> axis label
@@ -107,12 +108,15 @@ def sobol_panel(ax, rows: pd.DataFrame):
     ax.legend(loc="lower right", fontsize=6, frameon=False)
 
 
+PANELS = dict(morris=morris_panel, sobol=sobol_panel)  # a panel per method of SENSITIVITY_METHODS, by its name
+
+
 def sensitivity(indices: pd.DataFrame, laws):
     """Morris mu* against sigma (every input) and Sobol S1 and ST with their intervals (the chosen inputs): a row per
     output, a column per method and charge law."""
     _style()
     laws = [law for law in laws if law in set(indices.charge_law)]
-    columns = [(m, law) for m in ("morris", "sobol") if m in set(indices.method) for law in laws]
+    columns = [(m, law) for m in SENSITIVITY_METHODS if m in set(indices.method) for law in laws]
     outputs = [o for o in SENSITIVITY_OUTPUTS if o in set(indices.output)]
     fig, axes = plt.subplots(
         len(outputs),
@@ -125,9 +129,9 @@ def sensitivity(indices: pd.DataFrame, laws):
         for j, (method, law) in enumerate(columns):
             ax = axes[i, j]
             rows = indices[(indices.method == method) & (indices.charge_law == law) & (indices.output == output)]
-            (morris_panel if method == "morris" else sobol_panel)(ax, rows)
+            PANELS[method](ax, rows)
             if i == 0:
-                ax.set_title(f"{'Morris' if method == 'morris' else 'Sobol'}: {law_short(law)}", fontsize=8)
+                ax.set_title(f"{SENSITIVITY_METHODS[method].title}: {law_short(law)}", fontsize=8)
             if j == 0:
                 ax.annotate(
                     SENSITIVITY_OUTPUTS[output],
