@@ -13,6 +13,7 @@ os.environ.update(PYTHONPATH=os.pathsep.join(filter(None, [SRC, os.environ.get("
 
 from snakemake.utils import update_config  # noqa: E402
 
+from sphgag import plugins  # noqa: E402
 from sphgag.config import canonical, load_yaml, typed_overrides, validate  # noqa: E402
 
 # The full study is the default only when no --configfile is given: a user's config stands alone (Snakemake would
@@ -26,6 +27,8 @@ for _path in workflow.configfiles:  # Snakemake's own YAML reader lets a duplica
     load_yaml(_path)
 # --config key='{nested: 0.001}' arrives with every nested value as text: read those values as YAML does
 update_config(config, typed_overrides(workflow.config_settings.config))
+# the configuration's own variants (docs/contributing.md): registered before the schema names the registries' variants
+plugins.export(config.get("plugins", []))
 validate(config, Path(workflow.basedir, "config", "schema.yaml"))
 # key order must not matter when Snakemake compares a rule's params with its last run
 config = canonical(config)

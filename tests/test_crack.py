@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from sphgag.physics import fracture, materials
+from sphgag.physics import donnan, fracture
 from sphgag.studies import crack, inclusion
 
 NUMERICS = dict(
@@ -41,8 +41,8 @@ def problem(a=20.0, dx=2.0, rows=3):
 
 def test_the_concentration_for_a_pressure_inverts_the_donnan_law():
     c = np.array([0.0, 10.0, 150.0, 400.0])
-    pi = materials.swelling_pressure(c, 300.0, 310.0)
-    assert materials.concentration_for_pressure(pi, 300.0, 310.0) == pytest.approx(c, abs=1e-9)
+    pi = donnan.swelling_pressure(c, 300.0, 310.0)
+    assert donnan.concentration_for_pressure(pi, 300.0, 310.0) == pytest.approx(c, abs=1e-9)
 
 
 def test_the_slit_layout_fills_the_quarter_block_with_the_slit_and_its_band_on_the_crack_line():
@@ -79,7 +79,7 @@ def test_the_cohesive_length_and_griffith_pressure_of_the_problem():
     assert pr.cohesive_length == pytest.approx(pr.modulus * 0.36 / 16.0)
     assert pr.griffith(20.0) == pytest.approx(np.sqrt(pr.modulus * 0.36 / (np.pi * 20.0)))
     load = crack.load_at(pr, 0.8)
-    pi = materials.swelling_pressure(load.material_value("concentration"), 300.0, 310.0)
+    pi = donnan.swelling_pressure(load.material_value("concentration"), 300.0, 310.0)
     assert pi == pytest.approx(0.8) and load.material_value("face_pressure") == 0.8
 
 

@@ -10,7 +10,7 @@ from scipy.spatial import cKDTree
 from sphgag.engine import geometry, solver
 from sphgag.engine.history import DAMAGED, SEEDED, HistoryMaterial, ParticleHistory
 from sphgag.engine.loading import Load
-from sphgag.physics import materials
+from sphgag.physics import donnan
 from sphgag.records import state
 from sphgag.studies import artery
 from sphgag.studies.delamination import growth
@@ -445,7 +445,7 @@ def contents_limit(gag):
     around them can only raise it."""
     mu, lam = gag["shear_modulus_kPa"], gag["lame_lambda_kPa"]
     J = np.exp(1.0 + mu / lam)
-    return materials.concentration_for_pressure(
+    return donnan.concentration_for_pressure(
         mu * (1 - 1 / J) + lam * np.log(J) / J, gag["bath_concentration_mEq_l"], gag["temperature_K"]
     )
 

@@ -50,7 +50,7 @@ def exact_circle(pi, radius, outer, matrix, gag):
 
     def outer_traction(lp):
         J = lp * lp
-        bulk = volumetric.FORMS[gag["volumetric"]].stress(J, lam_g)  # U'(J) of the contents' volumetric term
+        bulk = volumetric.VOLUMETRIC_FORMS[gag["volumetric"]].stress(J, lam_g)  # U'(J) of the contents' volumetric term
         sigma = mu_g * (1.0 - 1.0 / J) + bulk - pi  # the pool's Cauchy stress (isotropic)
         sol = solve_ivp(rhs, (radius, outer), [lp * radius, sigma * lp], rtol=1e-11, atol=1e-11)
         return sol.y[1, -1]
@@ -131,7 +131,7 @@ def test_sector_pool_measures_and_swells(materials):
     assert np.isfinite(run[["top_hoop_stress_kPa", "bottom_hoop_stress_kPa"]].to_numpy()).all()
 
 
-@pytest.mark.parametrize("form", volumetric.FORMS)
+@pytest.mark.parametrize("form", volumetric.VOLUMETRIC_FORMS)
 def test_the_pools_law_is_the_engines(form):
     """The displacement-only pool law of the reference (each volumetric form of the contents, Pi = 30 kPa): its first
     Piola stress and tangent are the engine's kernels' (sphgag.physics.materials) at random F, J of 0.6 to 20."""
@@ -140,7 +140,7 @@ def test_the_pools_law_is_the_engines(form):
     C, A = np.empty((3, 3)), np.empty((4, 4))
     for scale in (0.8, 1.0, 2.0, 4.0):
         F = scale * (np.eye(2) + 0.15 * rng.standard_normal((2, 2)))
-        bulk = (10.0, volumetric.FORMS[form])
+        bulk = (10.0, volumetric.VOLUMETRIC_FORMS[form])
         _, _, _, P, T = fe_swelling._kinematics((F - np.eye(2))[:, :, None, None], 0.1, 0.0, 30.0, True, bulk)
         engine = first_piola(F[0, 0], F[0, 1], F[1, 0], F[1, 1], 1.0, 1.0, 0.0, props, 0)
         tangent_modulus(F[0, 0], F[0, 1], F[1, 0], F[1, 1], 1.0, 1.0, 0.0, props, 0, C, A)

@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
+from sphgag.physics import donnan, volumetric
 from sphgag.physics import materials as mt
-from sphgag.physics import volumetric
 
 rng = np.random.default_rng(7)
 THETA = 0.6  # reference angle of the test particle (local frame is rotated)
@@ -33,7 +33,7 @@ def gag_props():
     """GAG: soft neo-Hookean with a Gibbs-Donnan swelling pressure (eq. 2.27; c* = 150 here, any value will do)."""
     p = mt.empty_props(1)
     p[:, mt.MU] = 0.1
-    p[:, mt.PI] = float(mt.swelling_pressure(100.0, 150.0))
+    p[:, mt.PI] = float(donnan.swelling_pressure(100.0, 150.0))
     return p
 
 
@@ -54,8 +54,8 @@ def contents_props(form, fraction=1.0):
 
 
 MATERIALS = {"mean": mean_props, "mixture": mixture_props, "gag": gag_props, "diluting_gag": diluting_gag_props}
-MATERIALS.update({f"gag_{f}": lambda f=f: contents_props(f) for f in volumetric.FORMS})
-MATERIALS.update({f"converting_{f}": lambda f=f: contents_props(f, 0.6) for f in volumetric.FORMS})
+MATERIALS.update({f"gag_{f}": lambda f=f: contents_props(f) for f in volumetric.VOLUMETRIC_FORMS})
+MATERIALS.update({f"converting_{f}": lambda f=f: contents_props(f, 0.6) for f in volumetric.VOLUMETRIC_FORMS})
 
 
 def energy(F, lz, p):
@@ -169,16 +169,16 @@ def test_diluting_gag_pressure_is_eq_2_26_at_the_current_concentration():
         F = np.sqrt(J) * np.eye(2)
         P = piola(F, 1.0, p).reshape(2, 2)
         sigma = P @ F.T / J
-        assert np.allclose(sigma, -float(mt.swelling_pressure(c, 300.0, 310.0)) * np.eye(2), rtol=1e-12, atol=1e-12)
+        assert np.allclose(sigma, -float(donnan.swelling_pressure(c, 300.0, 310.0)) * np.eye(2), rtol=1e-12, atol=1e-12)
 
 
 def test_swelling_pressure_hand_values():
     """Pi = R T (sqrt(c^2 + c*^2) - c*) (eqs. 2.25-2.26): hand-computed values."""
     RT = 8.314462618 * 310.0  # J/mol
-    assert mt.swelling_pressure(0.0, 150.0) == 0.0
-    assert mt.swelling_pressure(150.0, 150.0) == pytest.approx(RT * 150.0 * (np.sqrt(2) - 1) / 1000, rel=1e-12)
+    assert donnan.swelling_pressure(0.0, 150.0) == 0.0
+    assert donnan.swelling_pressure(150.0, 150.0) == pytest.approx(RT * 150.0 * (np.sqrt(2) - 1) / 1000, rel=1e-12)
     # 100 mEq/l against a 150 mM bath: 2577.48 J/mol * 30.2776 mol/m^3 = 78.04 kPa
-    assert mt.swelling_pressure(100.0, 150.0) == pytest.approx(78.04, abs=0.01)
+    assert donnan.swelling_pressure(100.0, 150.0) == pytest.approx(78.04, abs=0.01)
 
 
 def test_identical_fibre_families_are_merged_exactly():
@@ -204,7 +204,7 @@ def test_a_converted_particle_stretched_many_fold_has_a_finite_tangent():
     assert np.allclose(piola(F, 1.0, p), piola(F, 1.0, g), rtol=1e-12)
 
 
-@pytest.mark.parametrize("form", volumetric.FORMS)
+@pytest.mark.parametrize("form", volumetric.VOLUMETRIC_FORMS)
 def test_swollen_contents_stress_and_tangent_are_the_derivatives(form):
     """The GAG contents of each volumetric form at swollen states (J of 4 to 50, where log_squared is no longer
     elliptic): P = dW/dF and A = dP/dF by central differences."""

@@ -15,7 +15,7 @@ from sphgag.engine.loading import Load
 from sphgag.engine.model import Model
 from sphgag.physics import damage, donnan
 from sphgag.registry import Registry, Variant
-from sphgag.studies import annulus, candidates, inclusion, onset, swollen_pool
+from sphgag.studies import annulus, candidates, inclusion, onset, sensitivity, swollen_pool
 from sphgag.studies.delamination.settings import Settings
 from sphgag.studies.pool_swelling import POOL_MODELS
 
@@ -24,14 +24,15 @@ from .conftest import ROOT, Lattice, isotropic_props
 SCHEMA = ROOT / "config" / "schema.yaml"
 
 REGISTRIES = {
-    "charge law": donnan.LAWS,
-    "damage law": damage.LAWS,
+    "charge law": donnan.CHARGE_LAWS,
+    "damage law": damage.DAMAGE_LAWS,
     "onset criterion": onset.CRITERIA,
-    "candidate rule": candidates.RULES,
+    "candidate rule": candidates.CANDIDATE_RULES,
     "pool model": POOL_MODELS,
-    "hourglass form": hourglass.FORMS,
-    "pool model of the annulus": annulus.POOL_MODELS,
+    "hourglass form": hourglass.HOURGLASS_FORMS,
+    "pool model of the annulus": annulus.ANNULUS_POOL_MODELS,
     "stress recovery": recovery.RECOVERIES,
+    "sensitivity method": sensitivity.SENSITIVITY_METHODS,
 }
 
 
@@ -70,12 +71,15 @@ def test_every_kind_is_a_registry_with_one_papers_variant_first(kind):
 
 
 def test_the_names_the_pipeline_and_the_figures_know_are_unchanged():
-    assert donnan.CHARGE_LAWS == ("prescribed", "conserved") and donnan.PAPER_LAW == "prescribed"
-    assert tuple(damage.LAWS) == ("paper", "fracture_energy") and damage.LAWS.paper is damage.DamageLaw
+    assert tuple(donnan.CHARGE_LAWS) == ("prescribed", "conserved") and donnan.PAPER_LAW == "prescribed"
+    assert tuple(damage.DAMAGE_LAWS) == ("paper", "fracture_energy") and damage.DAMAGE_LAWS.paper is damage.DamageLaw
     assert damage.matches_paper("paper") and not damage.matches_paper("0.5") and not damage.matches_paper(None)
-    assert tuple(onset.CRITERIA) == ("particle", "averaged") and tuple(candidates.RULES) == ("contact", "window")
-    assert tuple(POOL_MODELS) == ("particles", "cavity") and tuple(hourglass.FORMS) == ("paper", "energy")
-    assert tuple(annulus.POOL_MODELS) == ("hole", "particles")
+    assert tuple(onset.CRITERIA) == ("particle", "averaged") and tuple(candidates.CANDIDATE_RULES) == (
+        "contact",
+        "window",
+    )
+    assert tuple(POOL_MODELS) == ("particles", "cavity") and tuple(hourglass.HOURGLASS_FORMS) == ("paper", "energy")
+    assert tuple(annulus.ANNULUS_POOL_MODELS) == ("hole", "particles")
     assert tuple(recovery.RECOVERIES) == ("paper", "volumetric", "traction")
     assert POOL_MODELS["cavity"].laws == ("prescribed",) and POOL_MODELS["cavity"].hourglass
 
@@ -83,7 +87,7 @@ def test_the_names_the_pipeline_and_the_figures_know_are_unchanged():
 def test_the_schema_enumerates_and_titles_every_registry(ci_config):
     s = config.schema(SCHEMA)["properties"]
     hg = s["numerics"]["properties"]["hourglass"]
-    assert hg["enum"] == ["paper", "energy"] and hourglass.FORMS["energy"].title in hg["description"]
+    assert hg["enum"] == ["paper", "energy"] and hourglass.HOURGLASS_FORMS["energy"].title in hg["description"]
     reading = s["numerics"]["properties"]["stress_recovery"]
     assert reading["enum"] == list(recovery.RECOVERIES)
     assert recovery.RECOVERIES["traction"].title in reading["description"]
@@ -107,7 +111,7 @@ def test_a_variants_own_check_names_the_key_and_its_range(ci_config):
 
 # -- the plug-ins: one file each -------------------------------------------------------------------------------------
 
-PLUGINS = ("pool_model", "damage_law", "hourglass_form")
+PLUGINS = ("pool_model", "damage_law", "hourglass_form", "charge_law")
 
 
 def plugged(name: str):
@@ -146,15 +150,17 @@ def configured(ci_config, module, name):
     if module.REGISTRY is POOL_MODELS:
         cfg["swelling"]["variant_pool_models"] = ["cavity", name]
         cfg["verification"]["circular_pool"]["pool_models"] = ["particles", name]
-    elif module.REGISTRY is hourglass.FORMS:
+    elif module.REGISTRY is hourglass.HOURGLASS_FORMS:
         cfg["numerics"]["hourglass"] = name
+    elif module.REGISTRY is donnan.CHARGE_LAWS:
+        cfg["gag"]["charge_laws"] = [*cfg["gag"]["charge_laws"], name]
     return cfg
 
 
 def test_the_configuration_accepts_a_plugin_by_name_and_refuses_an_unknown_one(plugin, ci_config):
     name = plugin.VARIANT.name
     assert name in plugin.REGISTRY and plugin.REGISTRY.lookup(name) is plugin.VARIANT
-    if plugin.REGISTRY is damage.LAWS:  # a damage law is a run's setting (the pipeline's runs), not a listed key
+    if plugin.REGISTRY is damage.DAMAGE_LAWS:  # a damage law is a run's setting (the pipeline's runs), not a listed key
         base = Settings.from_config(ci_config["delamination"], 40.0, "particle")
         settings = dataclasses.replace(base, damage_law=name)
         assert isinstance(settings.law, plugin.VARIANT)

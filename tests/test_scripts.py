@@ -180,7 +180,8 @@ def test_a_delamination_job_has_one_shape_of_settings(ci_config, tmp_path):
     de = ci_config["delamination"]
     params = Settings.params(de)
     assert list(params) == list(Settings.config_keys())
-    assert not {"critical_stress_kPa", "criterion", "damage_law", "fracture_energy_J_m2"} & set(params)
+    assert not {"critical_stress_kPa", "criterion", "fracture_energy_J_m2"} & set(params)
+    assert params["damage_law"] == de["damage_law"] == "paper"  # the section's damage law, by name
     study = Settings.params(de, "critical_stress_kPa", "pressure_mmHg", criteria=["particle"])
     assert list(study)[-3:] == ["criteria", "critical_stress_kPa", "pressure_mmHg"]
     sigma = f"{de['critical_stress_kPa']:g}"  # the text of the run's file names

@@ -19,7 +19,7 @@ RT = 8.314462618 * 310.0 / 1000.0  # kPa per mEq/l
 def test_swelling_pressure_of_the_configured_bath(full_config):
     """c* = 300 mEq/l, T = 310 K: 0-150 mEq/l spans 0-91 kPa ('approximately 0-95 kPa')."""
     g = full_config["gag"]
-    pi = materials.swelling_pressure(np.array([0.0, 75.0, 150.0]), g["bath_concentration_mEq_l"], g["temperature_K"])
+    pi = donnan.swelling_pressure(np.array([0.0, 75.0, 150.0]), g["bath_concentration_mEq_l"], g["temperature_K"])
     assert pi[0] == 0.0
     assert pi[1] == pytest.approx(RT * (np.sqrt(75.0**2 + 300.0**2) - 300.0), rel=1e-12)
     assert pi[2] == pytest.approx(91.27, abs=0.01)
@@ -178,7 +178,7 @@ def test_the_charge_law_of_a_run_selects_its_donnan_term(ci_config):
         assert model.props.gag == materials.Gag.of(law_gag(ci_config, law)) and model.props.gag.charge_law == law
         rows[law] = model.props(load)[model.props.converting]
     g = ci_config["gag"]
-    pi = materials.swelling_pressure(150.0, g["bath_concentration_mEq_l"], g["temperature_K"])
+    pi = donnan.swelling_pressure(150.0, g["bath_concentration_mEq_l"], g["temperature_K"])
     assert np.allclose(rows["prescribed"][:, materials.PI], pi) and not rows["prescribed"][:, materials.FCD].any()
     assert not rows["conserved"][:, materials.PI].any() and np.allclose(rows["conserved"][:, materials.FCD], 150.0)
     with pytest.raises(ValueError, match="charge_law"):

@@ -9,12 +9,12 @@ from sphgag.physics import ellipticity, volumetric
 
 from .conftest import ROOT
 
-FORMS = list(volumetric.FORMS)
-BULK = [f for f in FORMS if f != volumetric.FORMS.paper.name]  # the forms with a term
+FORMS = list(volumetric.VOLUMETRIC_FORMS)
+BULK = [f for f in FORMS if f != volumetric.VOLUMETRIC_FORMS.paper.name]  # the forms with a term
 
 
 def test_the_registry_holds_the_paper_form_first():
-    assert volumetric.FORMS.paper.name == "none" == FORMS[0]
+    assert volumetric.VOLUMETRIC_FORMS.paper.name == "none" == FORMS[0]
     assert {"log_squared", "convex"} <= set(FORMS)
     with pytest.raises(ValueError, match="convex"):
         volumetric.form("convext")
@@ -35,14 +35,14 @@ def test_the_configuration_refuses_an_unknown_form(ci_config):
 @pytest.mark.parametrize("name", BULK)
 def test_every_form_has_the_same_small_strain_bulk_modulus(name):
     """u(1) = u'(1) = 0 (stress free at J = 1) and u''(1) = 1: kappa is the bulk modulus U''(1) of every form."""
-    u, du, d2u = volumetric.FORMS[name].terms(1.0)
+    u, du, d2u = volumetric.VOLUMETRIC_FORMS[name].terms(1.0)
     assert u == 0.0 and abs(du) < 1e-15 and d2u == pytest.approx(1.0, rel=1e-15)
 
 
 @pytest.mark.parametrize("name", FORMS)
 def test_the_derivatives_are_those_of_the_energy(name):
     """U' and U'' against central differences of U and U', from a compressed to a 50-fold swollen state."""
-    form = volumetric.FORMS[name]
+    form = volumetric.VOLUMETRIC_FORMS[name]
     for J in (0.3, 0.9, 1.7, 2.8, 12.0, 50.0):
         h = 1e-5 * J
         (up, dp, _), (um, dm, _) = form.terms(J + h, 10.0), form.terms(J - h, 10.0)
@@ -70,7 +70,7 @@ def test_the_swollen_contents_stay_elliptic_unless_log_squared(ci_config, name):
     J = np.geomspace(1.0, 100.0, 60)
     lowest = np.array([ellipticity.swollen_contents(j, name, mu, kappa) for j in J])
     lost = ellipticity.loss_of_ellipticity(name, mu, kappa)
-    assert volumetric.FORMS[name].elliptic == bool(np.all(lowest > 0.0)) == (lost == np.inf)
+    assert volumetric.VOLUMETRIC_FORMS[name].elliptic == bool(np.all(lowest > 0.0)) == (lost == np.inf)
     if name == "log_squared":
         root = float(np.exp(1.0 + mu * (lost + 1.0) / kappa))  # mu (J + 1) + kappa (1 - ln J) = 0 at the loss
         assert lost == pytest.approx(root, rel=1e-9)

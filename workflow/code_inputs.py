@@ -23,9 +23,18 @@ from pathlib import Path
 
 # The job's bookkeeping: the package's root (version, and the Numba cache's location keyed by the sources' hash),
 # the job layer (its kinds' run keys, which name the files, and the set-up of a job: threads, log, typed wildcards),
-# the threads a job computes on, its log and its provenance record. None of them changes a number a job writes.
+# the plug-ins' loader (each plug-in's file is a code input of its own), the threads a job computes on, its log and
+# its provenance record. None of them changes a number a job writes.
 BOOKKEEPING = frozenset(
-    {"__init__.py", "jobs/__init__.py", "jobs/kinds.py", "threads.py", "records/runlog.py", "records/provenance.py"}
+    {
+        "__init__.py",
+        "jobs/__init__.py",
+        "jobs/kinds.py",
+        "plugins.py",
+        "threads.py",
+        "records/runlog.py",
+        "records/provenance.py",
+    }
 )
 
 

@@ -25,7 +25,7 @@ from .engine import hourglass, lumen, recovery
 from .engine.grading import Grading
 from .engine.numerics import Numerics
 from .options import key_text
-from .physics import donnan, volumetric
+from .physics import damage, donnan, volumetric
 from .physics.materials import GagSection
 from .studies import annulus, artery, candidates, onset
 from .studies.artery import Bilayer, Mean
@@ -187,17 +187,18 @@ def _registries() -> dict:
     their key (a list of names or one name): a new variant is an entry of its registry, and the configuration accepts
     it with no edit of the schema."""
     return {
-        ("numerics", "hourglass"): hourglass.FORMS,
+        ("numerics", "hourglass"): hourglass.HOURGLASS_FORMS,
         ("numerics", "stress_recovery"): recovery.RECOVERIES,
         ("numerics", "lumen_load"): lumen.LUMEN_LOADS,
-        ("gag", "charge_laws"): donnan.LAWS,
-        ("gag", "volumetric"): volumetric.FORMS,
+        ("gag", "charge_laws"): donnan.CHARGE_LAWS,
+        ("gag", "volumetric"): volumetric.VOLUMETRIC_FORMS,
         ("swelling", "pool_models"): POOL_MODELS,
         ("swelling", "variant_pool_models"): POOL_MODELS,
         ("delamination", "criteria"): onset.CRITERIA,
-        ("delamination", "candidates"): candidates.RULES,
+        ("delamination", "candidates"): candidates.CANDIDATE_RULES,
+        ("delamination", "damage_law"): damage.DAMAGE_LAWS,
         ("verification", "circular_pool", "pool_models"): POOL_MODELS,
-        ("verification", "annulus", "pool_models"): annulus.POOL_MODELS,
+        ("verification", "annulus", "pool_models"): annulus.ANNULUS_POOL_MODELS,
         ("verification", "profiles", "lumen_loads"): lumen.LUMEN_LOADS,
         ("verification", "profiles", "recoveries"): recovery.RECOVERIES,
     }

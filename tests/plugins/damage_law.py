@@ -6,9 +6,9 @@ from typing import ClassVar
 
 import numpy as np
 
-from sphgag.physics.damage import LAWS, Law
+from sphgag.physics.damage import DAMAGE_LAWS, Law
 
-REGISTRY = LAWS
+REGISTRY = DAMAGE_LAWS
 
 
 @dataclass(frozen=True)

@@ -4,9 +4,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from sphgag.engine.hourglass import FORMS, HourglassForm
+from sphgag.engine.hourglass import HOURGLASS_FORMS, HourglassForm
 
-REGISTRY = FORMS
+REGISTRY = HOURGLASS_FORMS
 
 
 @dataclass(frozen=True)

@@ -10,7 +10,7 @@ REGISTRY = POOL_MODELS
 VARIANT = CavityPool(
     "cavity_as_configured",
     "the pool as a pressurised cavity, its wall with the configured hourglass form (a test)",
-    tuple(law.name for law in donnan.LAWS.values() if not law.conserves_charge),
+    tuple(law.name for law in donnan.CHARGE_LAWS.values() if law.holds_pressure()),
     "cavity_as_configured",
     hourglass=None,
 )

@@ -4,9 +4,11 @@
 
 import hashlib
 
+from sphgag import plugins
 from sphgag.jobs import kinds as JOBS
 from sphgag.jobs import text
-from sphgag.physics.donnan import LAWS as CHARGE_LAWS
+from sphgag.physics.damage import DAMAGE_LAWS, FractureEnergyLaw
+from sphgag.physics.donnan import CHARGE_LAWS
 from sphgag.physics.donnan import PAPER_LAW
 from sphgag.physics.materials import law_gag
 from sphgag.studies.artery import Bilayer
@@ -65,10 +67,16 @@ MODULES = {p.relative_to(PACKAGE).as_posix(): os.path.relpath(p) for p in sorted
 CODE = {script: [MODULES[m] for m in modules] for script, modules in code_inputs(WORKFLOW / "scripts", PACKAGE).items()}
 
 
+# each plug-in file of the configuration (key plugins) by the module of its kind (sphgag.plugins.kind_module)
+PLUGIN_KINDS = {path: MODULES[plugins.kind_module(path)] for path in config["plugins"]}
+
+
 def code_of(script):
     """Rule input: the digest of the modules that the job of workflow/scripts/``script``.py imports (CODE), none
-    where it imports no module that computes a number."""
-    return f"results/code/{script}.sha256" if CODE[script] else []
+    where it imports no module that computes a number; and each plug-in file whose kind's module it imports."""
+    return ([f"results/code/{script}.sha256"] if CODE[script] else []) + [
+        path for path, module in PLUGIN_KINDS.items() if module in CODE[script]
+    ]
 
 
 # Configuration slices that saved states depend on: a later rule refuses a state made with others.
@@ -147,6 +155,12 @@ def de_law_settings(wildcards):
     return DelaminationSettings.params(DelaminationSettings.of_law(DE, wildcards.law))
 
 
+def de_fracture_energy_settings(wildcards):
+    """The settings of a fracture-energy run under the charge law {law}: de_law_settings, grown by the damage law
+    with a fracture energy (its G_c is the run's wildcard {gc})."""
+    return dict(de_law_settings(wildcards), damage_law=FractureEnergyLaw.name)
+
+
 DE_AT_CONFIG = ("critical_stress_kPa", "pressure_mmHg")
 DE_DX = text(DE["convergence"]["dx_um"])
 
@@ -159,21 +173,22 @@ def de_run(name):
 
 
 # the damage law with a fracture energy: figure 5's set at critical_stress_kPa, default criterion, one run per G_c
-# (and per charge law); MATCHED is the G_c that the paper's law (PAPER_LAW) dissipates in its run of that pool
+# (and per charge law); MATCHED is the G_c that the paper's damage law dissipates in its run of that pool under the
+# paper's charge law (PAPER_LAW)
 DE_FE = DE["fracture_energy"]
-# (matched where the paper's charge law is studied, against its own run: another law's default run may not grow)
-DE_MATCH = DE_FE["match_paper"] and PAPER_LAW in LAWS
+# (matched where both paper's laws are studied, against their own run: another law's default run may not grow)
+DE_MATCH = DE_FE["match_paper"] and PAPER_LAW in LAWS and DAMAGE_LAWS[DE["damage_law"]].paper
 DE_TOUGHNESS = text(DE_FE["fracture_energies_J_m2"]) + ([MATCHED] if DE_MATCH else [])
 DE_FE_RUN = dict(poolset=FIG5_SET, sigma=text(DE["critical_stress_kPa"]), criterion=DE["criteria"][0])
 # every delamination run by its name (its key filled in: the kind delaminate's, or delaminate_fracture_energy's), which
 # names its files (de_run: growth and summary tables, snapshots), ParaView series and animation.
-# The runs of the paper's damage law (figures 5-7, the claims) and those of the law with a fracture energy (target
-# fracture_energy) have tables of their own.
-DE_PAPER_NAMES = [JOBS.delaminate.key.format(law=law, **r) for law in LAWS for r in DE_RUNS]
+# The runs of the configured damage law (delamination.damage_law: figures 5-7, the claims) and those of the law with a
+# fracture energy (target fracture_energy) have tables of their own.
+DE_LAW_NAMES = [JOBS.delaminate.key.format(law=law, **r) for law in LAWS for r in DE_RUNS]
 DE_FE_NAMES = [
     JOBS.delaminate_fracture_energy.key.format(law=law, gc=gc, **DE_FE_RUN) for law in LAWS for gc in DE_TOUGHNESS
 ]
-DE_RUN_NAMES = DE_PAPER_NAMES + DE_FE_NAMES
+DE_RUN_NAMES = DE_LAW_NAMES + DE_FE_NAMES
 
 
 def run_tables(names, table):

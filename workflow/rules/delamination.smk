@@ -53,16 +53,16 @@ rule delaminate_fracture_energy:
     params:
         state_slice=dict(PRESSURISED_SLICE, model="passive"),
         pools=lambda wildcards: DE["pool_sets"][wildcards.poolset],
-        delamination=de_law_settings,
+        delamination=de_fracture_energy_settings,
         gag=lambda wildcards: GAG[wildcards.law],
     script:
         "../scripts/delaminate.py"
 
 
 rule delamination_growth:
-    """Every delamination run's growth rows under the paper's damage law (every charge law) in one tidy table."""
+    """Every delamination run's growth rows under the configured damage law (every charge law) in one tidy table."""
     input:
-        run_tables(DE_PAPER_NAMES, "growth"),
+        run_tables(DE_LAW_NAMES, "growth"),
     output:
         "results/delamination/growth.csv",
     log:
@@ -74,9 +74,9 @@ rule delamination_growth:
 
 
 rule delamination_summary:
-    """One row per delamination run under the paper's damage law (every charge law)."""
+    """One row per delamination run under the configured damage law (every charge law)."""
     input:
-        run_tables(DE_PAPER_NAMES, "summary"),
+        run_tables(DE_LAW_NAMES, "summary"),
     output:
         report(
             "results/delamination/summary.csv",

@@ -5,14 +5,13 @@ workflow/rules/figures.smk, sphgag.views.delamination.FIGURES)."""
 import pandas as pd
 
 from sphgag import jobs
-from sphgag.studies.delamination.tables import paper_law
 from sphgag.views import delamination as views
 from sphgag.views import style
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p = job.params
-    # the paper's damage law (eq. 2.28 as printed); the fracture-energy runs are rows of the tables, not of the figure
-    growth, summary = (paper_law(pd.read_csv(path)) for path in (job.input.growth, job.input.summary))
+    # the runs of the configured damage law (delamination.damage_law); the fracture-energy runs have tables of their own
+    growth, summary = (pd.read_csv(path) for path in (job.input.growth, job.input.summary))
     for law in p.laws:
         fig = views.figure(
             job.name, growth, summary, job.input.snapshots, p.poolsets, p.sigma, p.criteria, law, p.laws, p.layers

@@ -131,10 +131,11 @@ class HistoryMaterial:
 
     ``base(load)``: the intact wall's table (e.g. :class:`sphgag.studies.artery.BilayerMaterial`);
     ``gag``: the ``gag`` parameters of one run (eq. 2.27), with its Donnan law ``charge_law``
-    (:data:`sphgag.physics.donnan.LAWS`, :func:`sphgag.physics.materials.law_gag`): a law that does not conserve the
-    fixed charge (``prescribed``) gives GAG particles the swelling pressure Pi(c) of the load's concentration
-    (eqs. 2.25-2.27 as printed), one that does (``conserved``) the fixed charge c per reference volume, whose Donnan
-    pressure acts at the current concentration c/J (:func:`sphgag.physics.materials.donnan`).
+    (:data:`sphgag.physics.donnan.CHARGE_LAWS`, :func:`sphgag.physics.materials.law_gag`) gives GAG particles the
+    columns of the load's concentration c it says (:meth:`sphgag.physics.donnan.ChargeLaw.engine_columns`): the
+    swelling pressure Pi(c) (``prescribed``, eqs. 2.25-2.27 as printed), or the fixed charge c per reference volume,
+    whose Donnan pressure acts at the current concentration c/J (``conserved``, :func:`sphgag.physics.materials.
+    donnan`).
     The load's ``transition`` t in [0, 1] moves between the two histories (a load without one is at
     ``before``), so that the quasi-static solver can follow (and bisect) any change of history:
 
@@ -182,15 +183,11 @@ class HistoryMaterial:
         if np.any(D > 0.0):
             out = damage.weaken(out, D)
         g = self.gag
-        conserved = g.law.conserves_charge  # which column carries the swelling: FCD (c/J in the kernels) or PI
         for rows, fraction, charge in ((self.kept, 1.0, c), (self.converting, t, t * c)):
             if not rows.size or fraction == 0.0:
                 continue
-            if conserved:
-                pi, fixed = 0.0, (charge, g.bath_concentration_mEq_l, g.temperature_K)
-            else:
-                pi = float(materials.swelling_pressure(charge, g.bath_concentration_mEq_l, g.temperature_K))
-                fixed = None
+            # the law's columns: a constant Pi (PI), or a fixed charge the kernels evaluate at each J (FCD)
+            pi, fixed = g.law.engine_columns(charge, g.bath_concentration_mEq_l, g.temperature_K)
             materials.convert_to_gag(
                 out,
                 rows,

@@ -25,9 +25,9 @@ material):
   on ``n_ij``, plus the reaction through ``F~`` that makes it conservative. It
   is invariant under rigid rotations (``|Q d| = |d|``).
 
-A form is a :class:`HourglassForm` (a :class:`sphgag.registry.Variant`) of the registry :data:`FORMS`, by its name in
-the configuration (``numerics.hourglass``, whose schema enumeration is the registry's) and the pipeline's wildcard
-``{form}``; the model asks it for its part of the forces and the stiffness (:meth:`HourglassForm.contribute`).
+A form is a :class:`HourglassForm` (a :class:`sphgag.registry.Variant`) of the registry :data:`HOURGLASS_FORMS`, by its
+name in the configuration (``numerics.hourglass``, whose schema enumeration is the registry's) and the pipeline's
+wildcard ``{form}``; the model asks it for its part of the forces and the stiffness (:meth:`HourglassForm.contribute`).
 """
 
 from __future__ import annotations
@@ -79,7 +79,7 @@ class EnergyForm(HourglassForm):
 
 
 #: the registry of hourglass forms, by name (``numerics.hourglass``, wildcard ``{form}``; the paper's first)
-FORMS: Registry[HourglassForm] = Registry(
+HOURGLASS_FORMS: Registry[HourglassForm] = Registry(
     "hourglass form",
     (
         PairForm("paper", "eq. (2.14) as printed: pair forces along the current pair direction", paper=True),

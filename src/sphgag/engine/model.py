@@ -97,7 +97,7 @@ class Model:
     props : (N, NPROP) property table (:mod:`sphgag.physics.materials`), or a callable
         ``props(load) -> table`` for materials that change along a path.
     hourglass_alpha : alpha of eq. (2.14); E comes from the property table.
-    hourglass : the name of the hourglass control's form (the registry :data:`sphgag.engine.hourglass.FORMS`):
+    hourglass : the name of the hourglass control's form (the registry :data:`sphgag.engine.hourglass.HOURGLASS_FORMS`):
         ``paper`` (eq. 2.14 as printed) or ``energy`` (its energy form, :mod:`sphgag.engine.hourglass`).
     stress_recovery : the name of the stress its evaluations are read with (the registry
         :data:`sphgag.engine.recovery.RECOVERIES`; ``paper``: the kernel stress of eq. 2.10). The forces do not
@@ -125,7 +125,7 @@ class Model:
     _cache: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     def __post_init__(self):
-        hourglass.FORMS.lookup(self.hourglass)
+        hourglass.HOURGLASS_FORMS.lookup(self.hourglass)
         recovery.RECOVERIES.lookup(self.stress_recovery)
         self._lumen = LUMEN_LOADS.lookup(self.lumen_load)
         self.cth = np.cos(self.layout.theta)
@@ -201,7 +201,7 @@ class Model:
         nb_elastic = self.nb
         if self.cavities:  # a free surface at every cavity: each material's own stencil for F too
             nb_elastic = replace(self.nb, a=ah, s=sh)
-        hgc, stiffness = hourglass.FORMS[self.hourglass].contribute(self, ah, sh, hgc)
+        hgc, stiffness = hourglass.HOURGLASS_FORMS[self.hourglass].contribute(self, ah, sh, hgc)
         pairs = forces.PairData.pack(nb_elastic, V, hgc, ah)
         self._cache.update(
             nb_elastic=nb_elastic,

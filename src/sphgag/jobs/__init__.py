@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 from pathlib import PurePosixPath
 from types import MappingProxyType, SimpleNamespace
 
-from .. import threads
+from .. import plugins, threads
 from ..records import provenance, runlog
 
 #: the types of the wildcards that carry numbers (every other wildcard is a name, kept as text); a key's text is the
@@ -168,8 +168,10 @@ class Job:
 @contextmanager
 def run(sm, name: str | None = None):
     """Enter the job of the Snakemake object ``sm``: its rule's threads, its log and its name: ``name`` if given, else
-    its kind's (:func:`kind`), else, for a rule with no wildcards and no kind, the rule's. Yields the :class:`Job`."""
+    its kind's (:func:`kind`), else, for a rule with no wildcards and no kind, the rule's; with the configuration's
+    plug-ins registered (:mod:`sphgag.plugins`). Yields the :class:`Job`."""
     started = time.time()
+    plugins.load_exported()  # the configuration's own variants (key plugins), in this job's process
     threads.use(sm.threads)
     name = name or (KINDS[sm.rule].name(sm.wildcards) if sm.rule in KINDS else sm.rule)
     with runlog.run(name, sm.log[0]) as log:

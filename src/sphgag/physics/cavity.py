@@ -38,9 +38,8 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq, minimize_scalar
 
-from .donnan import PAPER_LAW, charge_law
-from .materials import GAS_CONSTANT
-from .volumetric import FORMS, VolumetricForm
+from .donnan import GAS_CONSTANT, PAPER_LAW, charge_at, charge_law, pressure_at
+from .volumetric import VOLUMETRIC_FORMS, VolumetricForm
 
 RTOL, ATOL = 1e-11, 1e-12
 
@@ -48,7 +47,7 @@ RTOL, ATOL = 1e-11, 1e-12
 @dataclass(frozen=True)
 class Solid:
     """A neo-Hookean solid of eqs. (2.18)/(2.21): shear modulus ``mu``, and the volumetric term ``lam u(J)`` of the
-    form ``volumetric`` (:data:`sphgag.physics.volumetric.FORMS`; ``lam`` [kPa] its small-strain bulk modulus
+    form ``volumetric`` (:data:`sphgag.physics.volumetric.VOLUMETRIC_FORMS`; ``lam`` [kPa] its small-strain bulk modulus
     U''(1): the Lame parameter of the elastin's ``lam/2 (ln J)^2``, ``log_squared``; for a pool the GAG contents'
     form); for a pool also the bath's mobile-ion concentration c* [mEq/l] and the temperature of eqs. (2.25-2.26)."""
 
@@ -59,12 +58,12 @@ class Solid:
     volumetric: str = "log_squared"
 
     def __post_init__(self):
-        FORMS.lookup(self.volumetric)
+        VOLUMETRIC_FORMS.lookup(self.volumetric)
 
     @property
     def form(self) -> VolumetricForm:
         """Its volumetric form (:mod:`sphgag.physics.volumetric`)."""
-        return FORMS[self.volumetric]
+        return VOLUMETRIC_FORMS[self.volumetric]
 
     def bulk(self, J):
         """``(J U'(J), J^2 U''(J))`` of its volumetric term ``U = lam u(J)``: the Cauchy stress times J, and the
@@ -106,14 +105,12 @@ def cauchy(lr, lt, solid: Solid, swelling=0.0):
 
 def donnan_pressure(J, c0, solid: Solid):
     """Gibbs-Donnan pressure (eqs. 2.25-2.26) of the fixed charge ``c0`` [mEq/l, per reference volume] at ``J``."""
-    cb = solid.bath_mEq_l
-    return solid.rt * (np.sqrt((c0 / J) ** 2 + cb * cb) - cb)
+    return pressure_at(c0 / J, solid.bath_mEq_l, solid.rt)
 
 
 def fixed_charge(pressure_kPa, solid: Solid):
     """The concentration whose Donnan pressure at ``J = 1`` is ``pressure_kPa``: the inverse of eq. (2.26)."""
-    q = pressure_kPa / solid.rt + solid.bath_mEq_l
-    return np.sqrt(q * q - solid.bath_mEq_l**2)
+    return charge_at(pressure_kPa, solid.bath_mEq_l, solid.rt)
 
 
 def annulus_pressure_incompressible(stretch, A, B, mu):
@@ -249,16 +246,15 @@ class CircularPool:
 
 def circular_pool(A, B, matrix, gag, pressure_kPa, law=PAPER_LAW) -> CircularPool:
     """The pool of reference radius ``A`` in the annulus ``A < R < B`` swollen by ``pressure_kPa`` under the charge
-    ``law`` (a name of :data:`sphgag.physics.donnan.LAWS`; ``prescribed``: Pi = pressure_kPa, eq. 2.27; ``conserved``:
-    Pi(c0/J) with Pi(c0) = pressure_kPa, eq. 2.26). ``matrix``, ``gag``: :class:`Solid` or dicts (:meth:`Solid.of`).
-    A finite annulus has a limit pressure, the maximum of the pressure-volume curve: above it there is no equilibrium
-    (ValueError), below it the stable (smaller) pool of the two is returned."""
-    conserved = charge_law(law).conserves_charge
+    ``law`` (a name of :data:`sphgag.physics.donnan.CHARGE_LAWS`; ``prescribed``: Pi = pressure_kPa, eq. 2.27;
+    ``conserved``: Pi(c0/J) with Pi(c0) = pressure_kPa, eq. 2.26). ``matrix``, ``gag``: :class:`Solid` or dicts
+    (:meth:`Solid.of`). A finite annulus has a limit pressure, the maximum of the pressure-volume curve: above it there
+    is no equilibrium (ValueError), below it the stable (smaller) pool of the two is returned."""
+    charge = charge_law(law)
     m, g = Solid.of(matrix), Solid.of(gag)
-    c0 = fixed_charge(pressure_kPa, g) if conserved else None
 
     def swelling(lp):
-        return pressure_kPa if c0 is None else float(donnan_pressure(lp * lp, c0, g))
+        return float(charge.swelling_at(pressure_kPa, lp * lp, g.bath_mEq_l, g.rt))
 
     def residual(s):
         lp = np.exp(s)
@@ -320,7 +316,4 @@ def pressure_for_volume_ratio(J_target, A, B, matrix, gag, law=PAPER_LAW) -> flo
     lp = float(np.sqrt(J_target))
     t = _increasing_root(lambda t: _shoot(m, A, B, lp, t)[0], 0.0, 0.1 * m.mu)
     pi = float(cauchy(lp, lp, g)[0]) - t
-    if not charge.conserves_charge:
-        return pi
-    # the fixed charge c0 per reference volume whose concentration at J_target has the swelling pressure pi
-    return float(donnan_pressure(1.0, charge.reference_concentration(fixed_charge(pi, g), J_target), g))
+    return float(charge.reference_pressure(pi, J_target, g.bath_mEq_l, g.rt))

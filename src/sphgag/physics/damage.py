@@ -40,10 +40,11 @@ Where ``g <= Y_on`` the band is too wide for ``G_c`` (snap-back of the softening
 particle ruptures at onset and dissipates ``Y_on``.
 
 This module holds the laws and their bookkeeping as pure functions of flat arrays;
-the delamination protocol decides when to call them. A law is a class of the registry :data:`LAWS` (a
+the delamination protocol decides when to call them. A law is a class of the registry :data:`DAMAGE_LAWS` (a
 :class:`sphgag.registry.Variant` by its class attributes ``name``, ``title``, ``paper``, ``keys``); it builds itself
-from a run's settings (``of``). The delamination tables name it in their column ``damage_law``, and
-:func:`sphgag.studies.delamination.tables.paper_law` keeps the rows of the paper's law (``paper``).
+from a run's settings (``of``). The configuration selects the law of the delamination runs by name
+(``delamination.damage_law``); the fracture-energy runs (``delamination.fracture_energy``) grow by
+:class:`FractureEnergyLaw` beside them. The delamination tables name the law in their column ``damage_law``.
 """
 
 from __future__ import annotations
@@ -60,6 +61,8 @@ from .fracture import J_M2
 
 LN2 = np.log(2.0)
 # K = 1 - int_0^1 (2^(x^2) - 1) dx = 2 - sqrt(pi / ln 2) erfi(sqrt(ln 2)) / 2 (FractureEnergyLaw)
+#: the configuration key of a law with a fracture energy G_c: its runs are the fracture-energy runs, beside Griffith
+FRACTURE_ENERGY = "delamination.fracture_energy"
 SHAPE_K = float(2.0 - 0.5 * np.sqrt(np.pi / LN2) * erfi(np.sqrt(LN2)))
 
 
@@ -135,7 +138,7 @@ class FractureEnergyLaw(Law):
     name: ClassVar[str] = "fracture_energy"
     title: ClassVar[str] = "a fracture energy G_c per delaminated area (crack band; our deviation)"
     paper: ClassVar[bool] = False
-    keys: ClassVar[tuple[str, ...]] = ("delamination.critical_stress_kPa", "delamination.fracture_energy")
+    keys: ClassVar[tuple[str, ...]] = ("delamination.critical_stress_kPa", FRACTURE_ENERGY)
 
     @classmethod
     def of(cls, settings) -> FractureEnergyLaw:
@@ -195,13 +198,13 @@ def _shape_integral(x) -> np.ndarray:
 
 #: the registry of damage laws, by name (the paper's first): each builds itself from a run's settings (``of``); a new
 #: law is a :class:`Law` with ``of``, ``damage_at`` and ``rupture``, registered here (docs/contributing.md)
-LAWS: Registry[type[Law]] = Registry("damage law", (DamageLaw, FractureEnergyLaw))
+DAMAGE_LAWS: Registry[type[Law]] = Registry("damage law", (DamageLaw, FractureEnergyLaw))
 
 
 def matches_paper(gc) -> bool:
     """Whether the G_c of a fracture-energy run (the pipeline's wildcard ``gc``: a number in J/m^2, or the name of
-    the paper's law) is the energy the paper's law (:data:`LAWS`, ``paper``) dissipated in the matched run."""
-    return isinstance(gc, str) and gc in LAWS and LAWS[gc].paper
+    the paper's law) is the energy the paper's law (:data:`DAMAGE_LAWS`, ``paper``) dissipated in the matched run."""
+    return isinstance(gc, str) and gc in DAMAGE_LAWS and DAMAGE_LAWS[gc].paper
 
 
 @dataclass

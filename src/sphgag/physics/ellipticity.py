@@ -22,7 +22,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from . import materials
-from .volumetric import FORMS
+from .volumetric import VOLUMETRIC_FORMS
 
 
 def smallest_acoustic_eigenvalue(F, lz: float, props: np.ndarray, i: int = 0, directions: int = 180) -> float:
@@ -59,7 +59,7 @@ def swollen_contents(J: float, form: str, mu: float, kappa: float, pi: float = 0
 def equibiaxial_eigenvalue(J, form: str, mu: float, kappa: float):
     """The closed form of :func:`swollen_contents`: ``min(mu, mu + mu/J + J U''(J))`` (module docstring)."""
     J = np.asarray(J, dtype=float)
-    return np.minimum(mu, mu + mu / J + J * FORMS.lookup(form).terms(J, kappa)[2])
+    return np.minimum(mu, mu + mu / J + J * VOLUMETRIC_FORMS.lookup(form).terms(J, kappa)[2])
 
 
 def loss_of_ellipticity(form: str, mu: float, kappa: float, pi: float = 0.0, top: float = 100.0) -> float:

@@ -28,7 +28,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from . import materials
+from . import donnan
 
 J_M2 = 1.0e3  # kPa um per J/m^2
 
@@ -67,10 +67,10 @@ def griffith_pool(half_length, fracture_energy, modulus, concentration, bath_con
     [kPa] (:func:`griffith_pressure`), the concentration [mEq/l] at which Pi reaches it, and the half-length
     (:func:`griffith_half_length`) that Pi(``concentration``) makes critical; ``G_c`` in kPa um."""
     p_c = griffith_pressure(half_length, fracture_energy, modulus)
-    pi = materials.swelling_pressure(concentration, bath_concentration, temperature_K)
+    pi = donnan.swelling_pressure(concentration, bath_concentration, temperature_K)
     return GriffithPool(
         p_c,
-        materials.concentration_for_pressure(p_c, bath_concentration, temperature_K),
+        donnan.concentration_for_pressure(p_c, bath_concentration, temperature_K),
         griffith_half_length(pi, fracture_energy, modulus),
     )
 

@@ -49,9 +49,8 @@ import numpy as np
 from numba import njit
 
 from ..options import Options
-from .donnan import ChargeLaw, charge_law
-from .volumetric import FORMS as VOLUMETRIC_FORMS
-from .volumetric import VolumetricForm, kernel_terms
+from .donnan import GAS_CONSTANT, ChargeLaw, charge_law
+from .volumetric import VOLUMETRIC_FORMS, VolumetricForm, kernel_terms
 
 # Column layout of the property table.
 MU, LAM, GR, GT, GZ, PI, TACT, LMAX, LMIN, HG_E, NFAM = range(11)
@@ -64,15 +63,14 @@ TISSUE = FAM_END
 FCD, CBATH, RT = FAM_END + 1, FAM_END + 2, FAM_END + 3
 KAPPA, VOLUMETRIC = RT + 1, RT + 2  # the GAG contents' volumetric term: modulus and form code (physics.volumetric)
 NPROP = VOLUMETRIC + 1
-GAS_CONSTANT = 8.314462618  # J / (mol K)
 
 
 @dataclass(frozen=True)
 class GagParameters(Options):
     """The GAG parameters every run shares: ``shear_modulus_kPa`` mu_GAG (eq. 2.27), ``volumetric`` the form of the
-    contents' volumetric term (a name of :data:`sphgag.physics.volumetric.FORMS`; ``none`` is eq. 2.27 as printed) and
-    ``lame_lambda_kPa`` its modulus kappa = U''(1) (not in eq. 2.27; docs/physics.md), ``temperature_K`` T and
-    ``bath_concentration_mEq_l`` c* of eqs. (2.25-2.26), and ``hourglass_modulus_kPa`` E of eq. (2.14) for GAG
+    contents' volumetric term (a name of :data:`sphgag.physics.volumetric.VOLUMETRIC_FORMS`; ``none`` is eq. 2.27 as
+    printed) and ``lame_lambda_kPa`` its modulus kappa = U''(1) (not in eq. 2.27; docs/physics.md), ``temperature_K`` T
+    and ``bath_concentration_mEq_l`` c* of eqs. (2.25-2.26), and ``hourglass_modulus_kPa`` E of eq. (2.14) for GAG
     particles."""
 
     SECTION = "gag"
@@ -99,7 +97,7 @@ class GagParameters(Options):
 @dataclass(frozen=True)
 class Gag(GagParameters):
     """The GAG parameters of one run (:func:`law_gag`): the shared :class:`GagParameters` and the run's Donnan law
-    ``charge_law``, a name of the registry :data:`sphgag.physics.donnan.LAWS` (:attr:`law`)."""
+    ``charge_law``, a name of the registry :data:`sphgag.physics.donnan.CHARGE_LAWS` (:attr:`law`)."""
 
     charge_law: str
 
@@ -119,7 +117,7 @@ class Gag(GagParameters):
 @dataclass(frozen=True)
 class GagSection(GagParameters):
     """The ``gag`` configuration section: the :class:`GagParameters` shared by every run, and the Donnan laws
-    ``charge_laws`` the runs are made under (names of :data:`sphgag.physics.donnan.LAWS`), one run each
+    ``charge_laws`` the runs are made under (names of :data:`sphgag.physics.donnan.CHARGE_LAWS`), one run each
     (:func:`law_gag` gives the parameters of one)."""
 
     charge_laws: tuple
@@ -490,7 +488,7 @@ def convert_to_gag(
     stretch, no fibres, no active tone) plus the Gibbs-Donnan swelling pressure
     ``Pi``: Cauchy stress ``mu_GAG (B - I)/J - Pi I`` (eq. 2.27), plus the
     contents' volumetric term ``kappa u(J)`` of the form ``volumetric`` (a name of
-    :data:`sphgag.physics.volumetric.FORMS`; stress ``kappa u'(J) I``; not in
+    :data:`sphgag.physics.volumetric.VOLUMETRIC_FORMS`; stress ``kappa u'(J) I``; not in
     eq. 2.27, docs/physics.md; ``none``: eq. 2.27 as printed).
     Conversion is a change of the particle's row, nothing else. For
     ``0 < fraction < 1`` the row is a homotopy that the quasi-static solver can
@@ -524,20 +522,3 @@ def convert_to_gag(
         p[:, FCD], p[:, CBATH], p[:, RT] = c0, cb, GAS_CONSTANT * temperature / 1000.0
     props[rows] = p
     return props
-
-
-def swelling_pressure(c_fc, c_bath, temperature_K=310.0):
-    """Gibbs-Donnan swelling pressure Pi = R T (sqrt(c_FC^2 + c*^2) - c*) in kPa (eqs. 2.25-2.26).
-
-    Concentrations in mEq/l (= mol/m^3 for monovalent ions); R T in J/mol, so
-    the product is in Pa; divided by 1000 for kPa.
-    """
-    c = np.asarray(c_fc, dtype=float)
-    return GAS_CONSTANT * temperature_K * (np.sqrt(c * c + c_bath * c_bath) - c_bath) / 1000.0
-
-
-def concentration_for_pressure(pi_kPa, c_bath, temperature_K=310.0):
-    """The fixed-charge concentration [mEq/l] whose swelling pressure (eqs. 2.25-2.26) is ``pi_kPa``: the inverse of
-    :func:`swelling_pressure`, ``c = sqrt((Pi / R T + c*)^2 - c*^2)``."""
-    q = 1000.0 * np.asarray(pi_kPa, dtype=float) / (GAS_CONSTANT * temperature_K) + c_bath
-    return np.sqrt(q * q - c_bath * c_bath)

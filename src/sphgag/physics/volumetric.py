@@ -27,9 +27,9 @@ form's :attr:`VolumetricForm.code`), which :func:`sphgag.physics.materials.conve
 (:mod:`sphgag.physics.cavity`), the pool as a cavity (:mod:`sphgag.engine.pool_cavity`) and the finite-element
 reference (:mod:`sphgag.studies.fe_swelling`) take the same form, by :meth:`VolumetricForm.terms`.
 
-A form is a :class:`VolumetricForm` (a :class:`sphgag.registry.Variant`) of the registry :data:`FORMS`, by its name in
-the configuration (``gag.volumetric``, whose schema enumeration is the registry's); a new one is a branch of
-:func:`unit_terms` (the Numba kernels evaluate it by its code) and an entry of :data:`FORMS`.
+A form is a :class:`VolumetricForm` (a :class:`sphgag.registry.Variant`) of the registry :data:`VOLUMETRIC_FORMS`, by
+its name in the configuration (``gag.volumetric``, whose schema enumeration is the registry's); a new one is a branch of
+:func:`unit_terms` (the Numba kernels evaluate it by its code) and an entry of :data:`VOLUMETRIC_FORMS`.
 """
 
 from __future__ import annotations
@@ -92,7 +92,7 @@ class VolumetricForm(Variant):
 
 
 #: the registry of the contents' volumetric forms, by name (``gag.volumetric``; the paper's first)
-FORMS: Registry[VolumetricForm] = Registry(
+VOLUMETRIC_FORMS: Registry[VolumetricForm] = Registry(
     "volumetric form",
     (
         VolumetricForm("none", "eq. (2.27) as printed: no volumetric term", NONE, elliptic=True, paper=True),
@@ -109,4 +109,4 @@ FORMS: Registry[VolumetricForm] = Registry(
 
 def form(name) -> VolumetricForm:
     """The registered form ``name`` (ValueError naming the registered forms for any other)."""
-    return FORMS.lookup(name)
+    return VOLUMETRIC_FORMS.lookup(name)

@@ -13,7 +13,7 @@ stress saturates, ``convex``, at ``mu ln(B/A) + mu_GAG + kappa``; a limit point 
 bulk term adds a little pressure that falls again as they swell; none for ``hartmann_neff``'s, which hold any
 pressure: the study refuses them).
 
-**Cases** (``verification.annulus``): two pool models (:data:`POOL_MODELS`, each a pool model of the engine's
+**Cases** (``verification.annulus``): two pool models (:data:`ANNULUS_POOL_MODELS`, each a pool model of the engine's
 registry :data:`sphgag.studies.pool_swelling.POOL_MODELS` with its contents),
 
 * ``hole``: an empty hole, its lining loaded by the pressure (the cavity of :mod:`sphgag.engine.pool_cavity` with
@@ -65,7 +65,7 @@ class AnnulusPool(Variant):
 
 
 #: the annulus' pool models, by name (the paper's last, as the verification lists them)
-POOL_MODELS: Registry[AnnulusPool] = Registry(
+ANNULUS_POOL_MODELS: Registry[AnnulusPool] = Registry(
     "pool model of the annulus",
     (
         AnnulusPool("hole", "an empty hole, its lining loaded by the pressure", "cavity", empty=True),
@@ -84,7 +84,7 @@ class AnnulusVerification(Options):
     """The ``verification.annulus`` configuration: a hole or pool of radius A (``radius_um``) in free elastin annuli
     of the ``outer_ratios`` B/A, loaded to the ``fractions`` of the prescribed law's largest pressure and to
     ``beyond`` times it, at the spacings ``dx_um``, the volume-controlled path stopped at ``max_volume_ratio``, for
-    each of ``pool_models`` (:data:`POOL_MODELS`)."""
+    each of ``pool_models`` (:data:`ANNULUS_POOL_MODELS`)."""
 
     radius_um: float
     outer_ratios: tuple
@@ -102,10 +102,10 @@ class AnnulusVerification(Options):
 
 
 def materials(pool_model: str, matrix: dict, gag: dict) -> inclusion.Materials:
-    """The annulus' matrix around the pool ``pool_model`` (:data:`POOL_MODELS`): the GAG contents of ``gag`` (with its
-    volumetric term, as in the artery) or, for the ``hole``, contents of zero stiffness
+    """The annulus' matrix around the pool ``pool_model`` (:data:`ANNULUS_POOL_MODELS`): the GAG contents of ``gag``
+    (with its volumetric term, as in the artery) or, for the ``hole``, contents of zero stiffness
     (:meth:`AnnulusPool.materials`)."""
-    return POOL_MODELS.lookup(pool_model).materials(matrix, gag)
+    return ANNULUS_POOL_MODELS.lookup(pool_model).materials(matrix, gag)
 
 
 def limit(A: float, B: float, mat: inclusion.Materials) -> cavity.LimitPressure:
@@ -184,7 +184,7 @@ def annulus_study(va: dict, matrix: dict, gag: dict, numerics, pool_model: str, 
         top = limit(A, B, mat)
         pressures = [f * top.pressure_kPa for f in fractions]
         for dx in va["dx_um"]:
-            model = swollen_pool.circle_model(A, B, float(dx), mat, numerics, POOL_MODELS[pool_model].engine)
+            model = swollen_pool.circle_model(A, B, float(dx), mat, numerics, ANNULUS_POOL_MODELS[pool_model].engine)
             path_solver = numerics.solver(model)  # one solver for the model's paths, beyond the limit too
             at, end = swell_by_volume(path_solver, pressures, float(va["max_volume_ratio"]))
             case = dict(

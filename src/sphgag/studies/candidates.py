@@ -8,7 +8,7 @@ of it, pool by pool. The paper compares "the radial stress at the tip of the poo
 particles in contact with the pool (``contact``); the authors' script tests the whole window (``window``), so damage
 can form islands ahead of a pool (docs/physics.md, "Damage candidates").
 
-A rule is a :class:`CandidateRule` (a :class:`sphgag.registry.Variant`) of the registry :data:`RULES`. The
+A rule is a :class:`CandidateRule` (a :class:`sphgag.registry.Variant`) of the registry :data:`CANDIDATE_RULES`. The
 configuration's schema (``delamination.candidates``, :func:`sphgag.config.schema`) is built from the registry, so a new
 rule is one function and one entry here.
 """
@@ -50,7 +50,7 @@ def in_contact(front, hist: ParticleHistory, pool: int) -> np.ndarray:
 
 
 #: the registry of candidate rules, by name (``delamination.candidates``; the paper's first)
-RULES: Registry[CandidateRule] = Registry(
+CANDIDATE_RULES: Registry[CandidateRule] = Registry(
     "candidate rule",
     (
         CandidateRule(

@@ -49,7 +49,7 @@ from ..engine.loading import Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
 from ..options import Options
-from ..physics import damage, fracture, materials
+from ..physics import damage, donnan, fracture, materials
 from ..physics.donnan import PAPER_LAW
 from .delamination.damage_pass import intact_energy
 from .inclusion import ExactBoundary, Materials
@@ -193,7 +193,7 @@ class Problem:
 def load_at(problem: Problem, pressure: float, transition: float | None = None) -> Load:
     """The load with face pressure ``p``: the concentration whose Pi (eqs. 2.25-2.26) is ``p``, and the far field."""
     g = problem.gag
-    c = materials.concentration_for_pressure(pressure, g.bath_concentration_mEq_l, g.temperature_K)
+    c = donnan.concentration_for_pressure(pressure, g.bath_concentration_mEq_l, g.temperature_K)
     values = dict(concentration=float(c), face_pressure=float(pressure))
     if transition is not None:
         values["transition"] = float(transition)

@@ -175,7 +175,7 @@ class _Model:
         self.pbasis = Basis(mesh_p, ElementTriP1(), quadrature=self.basis.quadrature)
         self.n = self.basis.N
         self.mu = np.where(pool, gag["shear_modulus_kPa"], matrix["shear_modulus_kPa"])[:, None]
-        self.lam_g, self.form = gag["lame_lambda_kPa"], volumetric.FORMS.lookup(gag["volumetric"])
+        self.lam_g, self.form = gag["lame_lambda_kPa"], volumetric.VOLUMETRIC_FORMS.lookup(gag["volumetric"])
         # the displacement-only volumetric term of the pool's elements (none in the matrix, nor with uniform_bulk)
         self.contents = (np.where(pool & ~uniform_bulk, self.lam_g, 0.0)[:, None], self.form)
         self.mixed = (~pool).astype(float)[:, None]  # the pressure field's share (1 in the matrix)

@@ -176,7 +176,7 @@ def quarter_ellipse_area(a, b, extent):
 class Materials:
     """Matrix (neo-Hookean, eq. 2.21 without pre-stretch) and GAG inclusion (eq. 2.27) constants [kPa]; ``lam_gag``
     the modulus of the GAG contents' volumetric term of the form ``volumetric``
-    (:data:`sphgag.physics.volumetric.FORMS`)."""
+    (:data:`sphgag.physics.volumetric.VOLUMETRIC_FORMS`)."""
 
     mu: float
     lam: float
@@ -198,7 +198,7 @@ class Materials:
             lam_gag=gag["lame_lambda_kPa"] if bulk else 0.0,
             hourglass_modulus=matrix["hourglass_modulus_kPa"],
             gag_hourglass_modulus=gag["hourglass_modulus_kPa"],
-            volumetric=gag["volumetric"] if bulk else volumetric.FORMS.paper.name,
+            volumetric=gag["volumetric"] if bulk else volumetric.VOLUMETRIC_FORMS.paper.name,
         )
 
     @property

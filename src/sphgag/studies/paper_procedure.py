@@ -36,7 +36,7 @@ from ..engine.history import SEEDED, HistoryMaterial
 from ..engine.loading import Load
 from ..engine.model import Model
 from ..options import Options, file_name_problems
-from ..physics import materials
+from ..physics import donnan, materials
 from . import artery
 from .delamination.damage_pass import damage_step, onset_measure, with_ruptures
 from .delamination.front import Front
@@ -352,8 +352,8 @@ class Delamination:
     def seed(cls, model: Model, sectors, settings: Settings, gag, base_load: Load) -> Delamination:
         """The wall ``model`` (its intact material) with the pools of ``sectors`` converted at c = 0."""
         gag = materials.Gag.of(gag)
-        if gag.law.conserves_charge:
-            raise ValueError("the explicit damage stage carries the paper's prescribed law (Pi of each particle's c)")
+        if not gag.law.holds_pressure():
+            raise ValueError("the explicit damage stage carries a law whose Pi is each particle's c's (the paper's)")
         material = artery.seeding(model.props, model.layout, sectors, gag).settled()
         n = model.n
         load = swelling_load(base_load, 1.0, 0.0)
@@ -372,7 +372,7 @@ class Delamination:
         gag = self.hist.gag & (self.relax_until <= step)
         g = self.gag
         props[self.hist.gag, materials.PI] = 0.0
-        props[gag, materials.PI] = materials.swelling_pressure(
+        props[gag, materials.PI] = donnan.swelling_pressure(
             self.concentration[gag], g.bath_concentration_mEq_l, g.temperature_K
         )
         return props

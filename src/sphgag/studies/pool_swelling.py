@@ -16,8 +16,8 @@ from ..engine import measure, pool_cavity, pool_volume, solver
 from ..engine.loading import MMHG_TO_KPA, Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
-from ..physics.donnan import CHARGE_LAWS, LAWS
-from ..physics.materials import Gag, swelling_pressure
+from ..physics.donnan import CHARGE_LAWS, swelling_pressure
+from ..physics.materials import Gag
 from ..registry import Registry, Variant
 
 log = logging.getLogger("sphgag")
@@ -190,7 +190,7 @@ class PoolModel(Variant):
     """A model of the pool in the figure 4 runs (a :class:`sphgag.registry.Variant` of :data:`POOL_MODELS`): its
     ``name`` (``swelling.pool_models``, ``swelling.variant_pool_models``, ``verification.circular_pool.pool_models``,
     wildcard ``{pool}``, column ``pool_model``), ``title`` (the figures' heading of its rows), the charge ``laws`` it
-    carries (:data:`sphgag.physics.donnan.LAWS`), ``noun`` (what the verification's run names call the pool) and
+    carries (:data:`sphgag.physics.donnan.CHARGE_LAWS`), ``noun`` (what the verification's run names call the pool) and
     whether it is the paper's. Its behaviour: the wall of a pool swollen from rest (:meth:`around`, the
     verification), what becomes of the wall once the pool is converted (:meth:`convert`, figure 4), and the wall a
     converted state is in equilibrium with (:meth:`converted_model`, :meth:`converts`)."""
@@ -251,8 +251,9 @@ class CavityPool(PoolModel):
     """The pool as a pressurised cavity (:mod:`sphgag.engine.pool_cavity`; our deviation): its lining carries the
     prescribed Pi(c), its contents swell uniformly, so it carries only the laws that do not conserve the fixed charge
     (a cavity carries one pressure, whatever its J). Once converted, its wall is solved with the hourglass form
-    ``hourglass`` (:data:`sphgag.engine.hourglass.FORMS`), whatever ``numerics.hourglass`` says: the form as printed
-    loses the path next to the swollen cavity (docs/physics.md). The override is logged where it changes the form."""
+    ``hourglass`` (:data:`sphgag.engine.hourglass.HOURGLASS_FORMS`), whatever ``numerics.hourglass`` says: the form as
+    printed loses the path next to the swollen cavity (docs/physics.md). The override is logged where it changes the
+    form."""
 
     hourglass: str | None = None
     rebuilds: ClassVar[bool] = True
@@ -295,11 +296,13 @@ class CavityPool(PoolModel):
 POOL_MODELS: Registry[PoolModel] = Registry(
     "pool model",
     (
-        PoolModel("particles", "the pool's GAG particles (eq. 2.27; the paper's)", CHARGE_LAWS, "pool", paper=True),
+        PoolModel(
+            "particles", "the pool's GAG particles (eq. 2.27; the paper's)", CHARGE_LAWS.names, "pool", paper=True
+        ),
         CavityPool(
             "cavity",
             "the pool as a pressurised cavity (our deviation: its lining carries Pi, its contents swell uniformly)",
-            tuple(name for name, law in LAWS.items() if not law.conserves_charge),
+            tuple(name for name, law in CHARGE_LAWS.items() if law.holds_pressure()),
             "cavity",
             hourglass="energy",
         ),

@@ -91,27 +91,27 @@ def style_legend(ax, loc="best", fontsize=7, **kws):
     sns.move_legend(ax, loc, frameon=False, fontsize=fontsize, **kws)
 
 
-# the Donnan laws of the pools (the registry sphgag.physics.donnan.LAWS, column charge_law of every pool table), as
-# the figures name them (each law's title and short label): the paper's law is the one to compare with the paper's
-# panels. A name the registry does not know is shown as itself.
+# the Donnan laws of the pools (the registry sphgag.physics.donnan.CHARGE_LAWS, column charge_law of every pool table),
+# as the figures name them (each law's title and short label): the paper's law is the one to compare with the
+# paper's panels. A name the registry does not know is shown as itself.
 
 
 def law_title(law: str) -> str:
     """The heading of a charge law: its title, or for a law the registry does not know "<law> charge law"."""
-    known = donnan.LAWS.get(law)
+    known = donnan.CHARGE_LAWS.get(law)
     return known.title if known else f"{law} charge law"
 
 
 def law_short(law: str) -> str:
     """The label of a charge law in a panel title or an axis label: its short label, or the name of a law the
     registry does not know."""
-    known = donnan.LAWS.get(law)
+    known = donnan.CHARGE_LAWS.get(law)
     return known.short if known else law
 
 
 def is_paper_law(law: str) -> bool:
     """Whether ``law`` is the paper's charge law (False for a law the registry does not know)."""
-    known = donnan.LAWS.get(law)
+    known = donnan.CHARGE_LAWS.get(law)
     return bool(known and known.paper)
 
 

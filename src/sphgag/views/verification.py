@@ -279,7 +279,7 @@ def _annulus_path(ax, table, exact, model, ratio, colours):
     top = float(case.limit_pressure_kPa.iloc[0])
     curve = exact[(exact.pool_model == model) & (exact.outer_ratio == ratio)]
     ax.plot(curve.volume_ratio, curve.pressure_kPa / top, color="k", lw=1.0, label="exact (engine's laws)")
-    if annulus.POOL_MODELS[model].empty:  # the incompressible closed form is the empty hole's
+    if annulus.ANNULUS_POOL_MODELS[model].empty:  # the incompressible closed form is the empty hole's
         ax.plot(curve.volume_ratio, curve.incompressible_kPa / top, color="0.5", lw=0.8, ls=":", label="incompressible")
     ax.axhline(1.0, color="0.6", lw=0.6, ls="--")
     for dx, g in case.groupby("dx_um"):
@@ -351,7 +351,7 @@ def _annulus_errors(row, below, orders, ratios, spacings):
 
 def _annulus_rings(ax, below, ratios, colours):
     """The bottom row's last panel of :func:`verification_annulus`: how far the GAG particles reach past the lining."""
-    crossing = below[below.pool_model.isin([annulus.POOL_MODELS.paper.name])]  # the paper's particles only
+    crossing = below[below.pool_model.isin([annulus.ANNULUS_POOL_MODELS.paper.name])]  # the paper's particles only
     for (ratio, dx), g in crossing.groupby(["outer_ratio", "dx_um"]):
         style = "-" if ratio == ratios[0] else "--"
         ax.plot(

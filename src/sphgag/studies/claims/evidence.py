@@ -21,7 +21,7 @@ class Claim:
     our_value: str
     holds: str  # yes | no | n/a | not run (its evidence is made by a target that has not run)
     criterion: str
-    charge_law: str = "-"  # a pool claim's Donnan law (sphgag.physics.donnan.LAWS); "-": no pool
+    charge_law: str = "-"  # a pool claim's Donnan law (sphgag.physics.donnan.CHARGE_LAWS); "-": no pool
     pool_model: str = "-"  # a pool claim's pool model (sphgag.studies.pool_swelling.POOL_MODELS); "-": no pool
     margin: float = np.nan  # the criterion's smallest slack in its unit (kPa for C6-C12): > 0 where it holds
     across_band: str = "-"  # C6-C12: the verdict and margin at every spacing of the resolution study and extrapolated

@@ -1,7 +1,7 @@
 """The pools' front (paper section 2.7): their seeded sectors, the damage candidates around them, the connectivity of
 the particles damage converts, and the measures of growth (converted particles, delaminated length, islands).
 
-**Candidates** (``candidates``, :data:`sphgag.studies.candidates.RULES`): tissue particles of the media in a
+**Candidates** (``candidates``, :data:`sphgag.studies.candidates.CANDIDATE_RULES`): tissue particles of the media in a
 pool's radial band (the reference radii of its seeded sector), not on a wall surface, within
 ``candidate_window_deg`` of the pool's current angular extent (the authors' script, ``window``), and by default
 (``contact``, the paper's "radial stress at the tip of the pool") only those with a GAG particle of the pool within
@@ -25,7 +25,7 @@ from scipy.spatial import cKDTree
 from ...engine.geometry import Sector
 from ...engine.history import DAMAGED, SEEDED, ParticleHistory
 from ...engine.model import Model
-from ..candidates import RULES
+from ..candidates import CANDIDATE_RULES
 from .settings import Settings
 
 #: the contact distance in the reference configuration, in particle spacings: two particles within it touch (pools
@@ -48,8 +48,9 @@ class Islands:
 class Front:
     """The pools' geometry: seeded sectors, candidates and the measures of growth.
 
-    ``rule``: the candidate rule (:data:`sphgag.studies.candidates.RULES`). ``adjacent``: the reference-neighbour
-    graph, particles within :data:`CONTACT_DX` spacings in the reference configuration (a symmetric sparse matrix).
+    ``rule``: the candidate rule (:data:`sphgag.studies.candidates.CANDIDATE_RULES`). ``adjacent``: the
+    reference-neighbour graph, particles within :data:`CONTACT_DX` spacings in the reference configuration (a symmetric
+    sparse matrix).
     """
 
     model: Model
@@ -80,7 +81,7 @@ class Front:
         nearest such pool (in angle)."""
         th = self.model.layout.theta
         w = np.deg2rad(self.window_deg)
-        admits = RULES[self.rule].admits
+        admits = CANDIDATE_RULES[self.rule].admits
         best = np.full(hist.n, np.inf)
         pool = np.full(hist.n, -1)
         for k, band in enumerate(self.bands):

@@ -44,12 +44,13 @@ def delaminate(model, start, sectors, settings: Settings, state: dict, gag: dict
     a run with a G_c beside Griffith's closed form) and its :class:`.tables.Result`."""
     numerics, bilayer = state["numerics"], state["bilayer"]
     if unmatched:
-        seeding = dataclasses.replace(settings, damage_law=damage.DamageLaw.name, fracture_energy_J_m2=np.nan)
+        paper = damage.DAMAGE_LAWS.paper.name
+        seeding = dataclasses.replace(settings, damage_law=paper, fracture_energy_J_m2=np.nan)
         result = seeded_only(model, start, sectors, seeding, numerics, gag, model.props, unmatched, run=run)
     else:
         result = grow(model, start, sectors, settings, numerics, gag, model.props, run=run)
     growth, summary = labelled(result, case, settings, bilayer["dx_um"])
-    if settings.damage_law == damage.FractureEnergyLaw.name:  # a G_c (NaN if unmatched): the pool as a crack
+    if damage.FRACTURE_ENERGY in damage.DAMAGE_LAWS[settings.damage_law].keys:  # a G_c (NaN if unmatched): a crack
         modulus = crack_modulus(bilayer, sectors[0])
         closed = griffith(sectors, settings.fracture_energy_J_m2, modulus, gag, settings.max_concentration_mEq_l)
         summary = summary.assign(plane_strain_modulus_kPa=modulus, **closed)

@@ -9,7 +9,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from ...options import Options, file_name_problems
-from ...physics.donnan import LAWS
+from ...physics.donnan import CHARGE_LAWS
 from ...studies.wall_loading import BilayerCalibration
 from ..artery import pool_placement_problems
 
@@ -56,6 +56,7 @@ class Delamination(Options):
     critical_stress_kPa: float
     criteria: tuple
     rupture_stretch_increment: float
+    damage_law: str
     averaging_length_um: float
     candidates: str
     candidate_window_deg: float
@@ -76,7 +77,8 @@ class Delamination(Options):
     def problems(cls, config) -> list[str]:
         """The figures' and the resolution study's sets exist (:meth:`pool_set_roles`), the held pressure has a saved
         state, the critical stresses and spacings give distinct file names, a law's ramp top names a charge law
-        (:data:`sphgag.physics.donnan.LAWS`), and every pool lies inside the pool layers, off the symmetry edges."""
+        (:data:`sphgag.physics.donnan.CHARGE_LAWS`), and every pool lies inside the pool layers, off the symmetry
+        edges."""
         de = config.get("delamination", {})
         if not de:
             return []
@@ -85,9 +87,9 @@ class Delamination(Options):
             problems += BilayerCalibration.unsaved(config, [("delamination.pressure_mmHg", de["pressure_mmHg"])])
         problems += file_name_problems("delamination", "critical_stresses_kPa", de.get("critical_stresses_kPa", []))
         problems += [
-            f"delamination.max_concentration_by_law_mEq_l.{law} names no charge law ({', '.join(LAWS)})"
+            f"delamination.max_concentration_by_law_mEq_l.{law} names no charge law ({', '.join(CHARGE_LAWS)})"
             for law in de.get("max_concentration_by_law_mEq_l", {})
-            if law not in LAWS
+            if law not in CHARGE_LAWS
         ]
         de_dx = [f"{v:g}" for v in de.get("convergence", {}).get("dx_um", [])]
         if len(set(de_dx)) < len(de_dx):

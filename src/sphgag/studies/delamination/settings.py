@@ -9,7 +9,7 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from ...physics import damage
-from ..candidates import RULES
+from ..candidates import CANDIDATE_RULES
 from ..onset import CRITERIA
 
 #: the G_c of a run of the damage law with a fracture energy (its wildcard ``gc``: J/m^2) that is no number but the
@@ -33,23 +33,25 @@ class Settings:
     max_extent_deg: float
     conversion_steps: int
     bisection_tolerance_mEq_l: float = 0.5  # onset, runaway and merge concentrations are bisected to this bracket
-    damage_law: str = damage.LAWS.paper.name  # damage.LAWS: eq. (2.28) as printed, or with a fracture energy
+    # damage.DAMAGE_LAWS: the section's law (eq. 2.28 as printed by default), or the fracture-energy runs' law
+    damage_law: str = damage.DAMAGE_LAWS.paper.name
     fracture_energy_J_m2: float = np.nan  # G_c of the fracture_energy law
-    candidates: str = "contact"  # candidates.RULES: the particles touching the pool (the paper), or the window
+    # candidates.CANDIDATE_RULES: the particles touching the pool (the paper), or the window
+    candidates: str = "contact"
 
     def __post_init__(self):
         if self.criterion not in CRITERIA:
             raise ValueError(f"criterion must be one of {', '.join(CRITERIA)}, got {self.criterion!r}")
-        if self.candidates not in RULES:
-            raise ValueError(f"candidates must be one of {', '.join(RULES)}, got {self.candidates!r}")
-        if self.damage_law not in damage.LAWS:
-            raise ValueError(f"damage_law must be one of {', '.join(damage.LAWS)}, got {self.damage_law!r}")
+        if self.candidates not in CANDIDATE_RULES:
+            raise ValueError(f"candidates must be one of {', '.join(CANDIDATE_RULES)}, got {self.candidates!r}")
+        if self.damage_law not in damage.DAMAGE_LAWS:
+            raise ValueError(f"damage_law must be one of {', '.join(damage.DAMAGE_LAWS)}, got {self.damage_law!r}")
 
     @classmethod
     def config_keys(cls) -> tuple[str, ...]:
         """The keys of the ``delamination`` configuration section that every run reads (:meth:`from_config`); sigma_cr,
-        the onset criterion and the damage law are each run's own."""
-        own = ("critical_stress_kPa", "criterion", "damage_law", "fracture_energy_J_m2")
+        the onset criterion and the G_c of a fracture-energy run are each run's own."""
+        own = ("critical_stress_kPa", "criterion", "fracture_energy_J_m2")
         return tuple(f.name for f in fields(cls) if f.name not in own)
 
     @classmethod
@@ -72,15 +74,12 @@ class Settings:
     def from_config(
         cls, de: dict, critical_stress_kPa: float, criterion: str, fracture_energy_J_m2: float | None = None
     ) -> Settings:
-        """The settings of one run from the ``delamination`` configuration section (its :meth:`config_keys`): eq.
-        (2.28) as printed, or the fracture-energy law where ``fracture_energy_J_m2`` (G_c) is given."""
-        keys = cls.config_keys()
-        law = dict(damage_law=damage.LAWS.paper.name)
+        """The settings of one run from the ``delamination`` configuration section (its :meth:`config_keys`, the
+        damage law ``damage_law`` among them), with the G_c ``fracture_energy_J_m2`` of a law that has one."""
+        own = dict(critical_stress_kPa=float(critical_stress_kPa), criterion=criterion)
         if fracture_energy_J_m2 is not None:
-            law = dict(damage_law=damage.FractureEnergyLaw.name, fracture_energy_J_m2=float(fracture_energy_J_m2))
-        return cls(
-            critical_stress_kPa=float(critical_stress_kPa), criterion=criterion, **law, **{k: de[k] for k in keys}
-        )
+            own["fracture_energy_J_m2"] = float(fracture_energy_J_m2)
+        return cls(**own, **{k: de[k] for k in cls.config_keys()})
 
     @classmethod
     def at_section(cls, de: dict, criterion: str) -> Settings:
@@ -89,9 +88,9 @@ class Settings:
         return cls.from_config(de, de["critical_stress_kPa"], criterion)
 
     @property
-    def law(self) -> damage.DamageLaw | damage.FractureEnergyLaw:
-        """The run's damage law, from the registry :data:`sphgag.physics.damage.LAWS`."""
-        return damage.LAWS[self.damage_law].of(self)
+    def law(self) -> damage.Law:
+        """The run's damage law, from the registry :data:`sphgag.physics.damage.DAMAGE_LAWS`."""
+        return damage.DAMAGE_LAWS[self.damage_law].of(self)
 
     @property
     def levels(self) -> np.ndarray:

@@ -19,7 +19,7 @@ import numpy as np
 import pandas as pd
 
 from ...engine.geometry import Sector
-from ...physics import damage, fracture, materials
+from ...physics import fracture, materials
 from .front import Islands
 from .settings import Settings
 
@@ -305,12 +305,6 @@ def labelled(result: Result, case: str, settings: Settings, dx: float) -> tuple[
     growth = result.growth.assign(**labels)[GROWTH_COLUMNS]
     summary = pd.DataFrame([dict(labels, **result.summary)])
     return growth, summary[SUMMARY_COLUMNS + [c for c in summary.columns if c not in SUMMARY_COLUMNS]]
-
-
-def paper_law(table: pd.DataFrame) -> pd.DataFrame:
-    """The rows of a delamination table grown by the paper's damage law (:data:`sphgag.physics.damage.LAWS`: eq. 2.28 as
-    printed; the paper's figures and claims)."""
-    return table[table.damage_law.isin([damage.LAWS.paper.name])] if "damage_law" in table else table
 
 
 def griffith(sectors: list[Sector], fracture_energy_J_m2: float, modulus: float, gag: dict, concentration: float):
