@@ -273,11 +273,27 @@ def test_figure_5s_set_is_checked_at_the_resolution_studys_spacings(ci_config):
         (("sensitivity", "inputs", "gag.temperature_K", "high"), 300.0, "low = 306.0 must be below high = 300.0"),
         (("sensitivity", "inputs", "gag.temperature_K", "source"), "", "sensitivity.inputs.gag.temperature_K.source"),
         (("sensitivity", "concentration_mEq_l"), 110.0, "must be a step of the swelling ramp (25, 50, 75, 100, 125"),
-        (("sensitivity", "sobol", "inputs"), 99, "sensitivity.sobol.inputs = 99 exceeds the number of inputs (15)"),
+        (
+            ("sensitivity", "methods", "sobol", "inputs"),
+            99,
+            "sensitivity.methods.sobol.inputs = 99 exceeds the number of inputs (15)",
+        ),
         (("sensitivity", "map", "angular_extents_deg"), [3.0, 89.0], "would reach a symmetry edge"),
     ],
 )
 def test_a_bad_sensitivity_range_is_rejected_naming_the_input_and_its_allowed_range(full_config, path, value, expected):
+    assert expected in bad(full_config, path, value)
+
+
+@pytest.mark.parametrize(
+    "path, value, expected",
+    [
+        (("sensitivity", "methods", "rank"), {}, "sensitivity.methods = 'rank' is invalid: 'rank' is not one of"),
+        (("sensitivity", "methods", "morris"), KeyError, "sensitivity.methods.sobol screens its inputs with morris"),
+        (("sensitivity", "methods", "sobol", "seed"), KeyError, "missing key 'sensitivity.methods.sobol.seed'"),
+    ],
+)
+def test_the_sensitivity_methods_are_checked_by_name_and_by_their_own_settings(full_config, path, value, expected):
     assert expected in bad(full_config, path, value)
 
 

@@ -792,7 +792,9 @@ def test_removing_a_charge_law_reruns_no_simulation(workdir, ci_config, tmp_path
     print("\nremoving a charge law reruns:", jobs)
     # the Sobol inputs are those Morris ranks highest over every law: they may change, and their samples with them
     se = ci_config["sensitivity"]
-    sobol_batches = math.ceil(se["sobol"]["base_samples"] * (se["sobol"]["inputs"] + 2) / se["batch_size"])
+    sobol_batches = math.ceil(
+        se["methods"]["sobol"]["base_samples"] * (se["methods"]["sobol"]["inputs"] + 2) / se["batch_size"]
+    )
     assert jobs.pop("sensitivity_batch", 0) in (0, sobol_batches), jobs
     assert jobs and not SIMULATIONS & set(jobs), jobs
 
@@ -926,8 +928,8 @@ def test_the_sensitivity_study_accounts_for_every_sample_and_maps_every_level(wo
     failures = pd.read_csv(workdir / "results/sensitivity/failures.csv")
     sizes = dict(
         nominal=1,
-        morris=se["morris"]["trajectories"] * (k + 1),
-        sobol=se["sobol"]["base_samples"] * (se["sobol"]["inputs"] + 2),
+        morris=se["methods"]["morris"]["trajectories"] * (k + 1),
+        sobol=se["methods"]["sobol"]["base_samples"] * (se["methods"]["sobol"]["inputs"] + 2),
     )
     for method, n in sizes.items():
         for law in laws:
@@ -940,11 +942,11 @@ def test_the_sensitivity_study_accounts_for_every_sample_and_maps_every_level(wo
             m = morris[(morris.charge_law == law) & (morris.output == output)]
             assert sorted(m.input.unique()) == sorted(inputs) and set(m["index"]) == {"mu_star", "mu", "sigma"}
             s = sobol[(sobol.charge_law == law) & (sobol.output == output)]
-            assert s.input.nunique() == se["sobol"]["inputs"] and set(s.input) <= set(inputs)
+            assert s.input.nunique() == se["methods"]["sobol"]["inputs"] and set(s.input) <= set(inputs)
             assert set(s["index"]) == {"S1", "ST"}
             # a sample without the output is counted; the used ones are whole trajectories or base rows
             runs = samples[(samples.charge_law == law)]
-            for method, rows, block in (("morris", m, k + 1), ("sobol", s, se["sobol"]["inputs"] + 2)):
+            for method, rows, block in (("morris", m, k + 1), ("sobol", s, se["methods"]["sobol"]["inputs"] + 2)):
                 y = runs[runs.method == method][output]
                 assert (rows.samples_missing == y.isna().sum()).all(), (law, output, method)
                 assert (rows.samples_used % block == 0).all() and (rows.samples_used <= len(y)).all()
@@ -1056,13 +1058,13 @@ def test_everything_plans_every_job_the_configuration_defines(fresh_copy):
             lambda cfg: cfg["swelling"].update(conversion_steps=3),
             {"swell", "pool_stresses", "tip_stress", "fig4", "paraview_swelling", "swelling_convergence_dx"}
             | {"swelling_convergence_stresses", "swelling_convergence", "swelling_convergence_figure", "swelling_gci"}
-            | {"sensitivity_batch", "sensitivity_method", "sobol_design", "sensitivity_tables", "sensitivity_figure"}
+            | {"sensitivity_batch", "sensitivity_method", "screened_design", "sensitivity_tables", "sensitivity_figure"}
             | {"delamination_map_figure", "variant", "variants_figure", "variants_tip_stress", "variants_fig4"}
             | {"procedure_equilibrium", "procedure_summary", "procedure_figure"}  # not the explicit runs
             | {"paper_settings_run", "paper_settings_table", "paper_settings_figure"},
         ),
         (  # a sensitivity key: the bootstrap of the Sobol intervals; read by the Sobol indices alone
-            lambda cfg: cfg["sensitivity"]["sobol"].update(resamples=50),
+            lambda cfg: cfg["sensitivity"]["methods"]["sobol"].update(resamples=50),
             {"sensitivity_method", "sensitivity_tables", "sensitivity_figure"},
         ),
         (  # a figure-only key: which pool sets figure 6 shows
@@ -1070,7 +1072,7 @@ def test_everything_plans_every_job_the_configuration_defines(fresh_copy):
             {"fig6"},
         ),
     ],
-    ids=["delamination.criteria", "swelling.conversion_steps", "sensitivity.sobol.resamples", "figures.fig6"],
+    ids=["delamination.criteria", "swelling.conversion_steps", "sensitivity.methods.sobol.resamples", "figures.fig6"],
 )
 def test_an_edit_plans_only_the_jobs_that_read_the_key_and_what_follows(workdir, ci_config, tmp_path, edit, rerun):
     cfg = copy.deepcopy(ci_config)

@@ -1,7 +1,8 @@
-"""Variants of one's own through the pipeline: a damage law, a charge law and a pool model, each written in one file
-(tests/plugins), named in the configuration's key ``plugins`` and selected by a configuration value, run a job of
-the CI configuration's DAG (in a copy of the session's finished run) and show up by name in its table. Only the job
-the value selects reruns: a plug-in file is a code input of the jobs whose scripts import its kind's module."""
+"""Variants of one's own through the pipeline: a damage law, a charge law, a pool model and a sensitivity method, each
+written in one file (tests/plugins), named in the configuration's key ``plugins`` and selected by a configuration
+value, run the jobs of the CI configuration's DAG that the value selects (in a copy of the session's finished run)
+and show up by name in their table. Nothing else reruns: a plug-in file is a code input of the jobs whose scripts
+import its kind's module."""
 
 import copy
 import re
@@ -88,3 +89,19 @@ def test_a_pool_model_of_one_file_swells_a_pool(workdir, ci_config, tmp_path):
     assert runs(project, target, config) == {"swell": 1, "pool_stresses": 1}
     table = pd.read_csv(project / target)
     assert set(table.pool_model) == {"cavity_as_configured"} and len(table) > 1
+
+
+def test_a_sensitivity_method_of_one_file_fills_its_index_table(workdir, ci_config, tmp_path):
+    cfg = copy.deepcopy(ci_config)
+    cfg["sensitivity"]["methods"]["rank_correlation"] = dict(samples=3, seed=7)
+    project, config = plugged(workdir, tmp_path, cfg, "sensitivity_method")
+    target = "results/sensitivity/rank_correlation/indices.csv"
+    laws = len(cfg["gag"]["charge_laws"])
+    assert runs(project, target, config) == {
+        "sensitivity_design": 1,
+        "sensitivity_batch": laws,
+        "sensitivity_method": 1,
+    }
+    indices = pd.read_csv(project / target)
+    assert set(indices.method) == {"rank_correlation"} and set(indices["index"]) == {"rho"}
+    assert set(indices.input) == set(cfg["sensitivity"]["inputs"]) and indices.charge_law.nunique() == laws

@@ -123,7 +123,7 @@ def test_a_kind_names_its_paths_and_runs_by_its_key():
     )
     assert kinds.verify_pool_ratio.log == "logs/verify_pool/ab{ratio}.log"
     assert kinds.delamination_map_point.log == "logs/sensitivity/map/{law}/{width}deg_{sigma}kPa.log"
-    assert kinds.sobol_design.name({}) == "sensitivity_sobol_design"
+    assert kinds.screened_design.name(dict(method="sobol")) == "sensitivity_sobol_design"
     assert jobs.kind("sensitivity_batch") is kinds.sensitivity_batch
     with pytest.raises(KeyError, match="no kind of job"):
         jobs.kind("no_such_rule")

@@ -35,6 +35,7 @@ from .studies.paper_settings import PaperSettings
 from .studies.pool_response import Sensitivity
 from .studies.pool_swelling import POOL_MODELS
 from .studies.pressure_diameter import Calibration
+from .studies.sensitivity import SENSITIVITY_METHODS
 from .studies.swelling import Swelling, SwellingConvergence
 from .studies.verification import Verification
 from .studies.wall_loading import BilayerCalibration, HomeostasisSettings
@@ -201,6 +202,7 @@ def _registries() -> dict:
         ("verification", "annulus", "pool_models"): annulus.ANNULUS_POOL_MODELS,
         ("verification", "profiles", "lumen_loads"): lumen.LUMEN_LOADS,
         ("verification", "profiles", "recoveries"): recovery.RECOVERIES,
+        ("sensitivity", "methods"): SENSITIVITY_METHODS,
     }
 
 
@@ -212,7 +214,8 @@ def schema(schema_path) -> dict:
         node = out
         for key in path:
             node = node["properties"][key]
-        (node["items"] if "items" in node else node)["enum"] = list(registry)
+        # a list's items, a mapping's keys (propertyNames) or the key's one value
+        (node.get("items") or node.get("propertyNames") or node)["enum"] = list(registry)
         titles = "; ".join(f"{n}: {v.title}" + (" [the paper's]" if v.paper else "") for n, v in registry.items())
         node["description"] = f"{node.get('description', '')}. One of: {titles}"
     return out
@@ -262,9 +265,10 @@ def _delamination(config: dict) -> list[str]:
 
 
 def _variants(config: dict) -> list[str]:
-    """The checks the variants' registries own: the pool models' (:func:`_pool_models`) and the onset criteria's
-    (:func:`_delamination`)."""
-    return _pool_models(config) + _delamination(config)
+    """The checks the variants' registries own: the pool models' (:func:`_pool_models`), the onset criteria's
+    (:func:`_delamination`) and the sensitivity methods' (their settings)."""
+    methods = config.get("sensitivity", {}).get("methods", {})
+    return _pool_models(config) + _delamination(config) + SENSITIVITY_METHODS.problems(config, "sensitivity", methods)
 
 
 #: the options of every section of the configuration, in its order: each checks the relations between its keys and

@@ -23,19 +23,21 @@ pool_response.check_inputs(SE_SCENARIO, SE["inputs"])  # config.validate names t
 # the inputs' ranges without their sources (a source is documentation: editing it reruns nothing)
 SE_RANGES = {name: dict(low=r["low"], high=r["high"]) for name, r in SE["inputs"].items()}
 SE_K = len(SE_RANGES)
-# a method's samples, the settings of sensitivity.<method> its design reads and those its indices read (a resampling
-# setting reruns no sample); the nominal design is the configuration's own values (one sample)
+# the methods run (sensitivity.methods), in the registry's order
+SE_METHODS = {n: m for n, m in SENSITIVITY_METHODS.items() if n in SE["methods"]}
+# a method's samples, the settings of sensitivity.methods.<method> its design reads and those its indices read (a
+# resampling setting reruns no sample); the nominal design is the configuration's own values (one sample)
 SE_SETTINGS = {
-    purpose: {n: {k: SE[n][k] for k in getattr(m, f"{purpose}_keys")} for n, m in SENSITIVITY_METHODS.items()}
+    purpose: {n: {k: SE["methods"][n][k] for k in getattr(m, f"{purpose}_keys")} for n, m in SE_METHODS.items()}
     for purpose in ("design", "index")
 }
-SE_SIZES = dict(nominal=1, **{n: m.size(SE_K, **SE_SETTINGS["design"][n]) for n, m in SENSITIVITY_METHODS.items()})
+SE_SIZES = dict(nominal=1, **{n: m.size(SE_K, **SE_SETTINGS["design"][n]) for n, m in SE_METHODS.items()})
 SE_SETTINGS["design"]["nominal"] = {n: pool_response.nominal(SE_SCENARIO, n) for n in SE_RANGES}
 SE_BATCHES = {m: range(math.ceil(n / SE["batch_size"])) for m, n in SE_SIZES.items()}
-# the method whose design reads another's indices (Sobol screens with the Morris indices, written after the Morris
-# design): rule sobol_design; the nominal design and the others': rule sensitivity_design
-(SE_SCREENED,) = [m for m in SENSITIVITY_METHODS.values() if m.screening]
-SE_UNSCREENED = ("nominal", *(n for n, m in SENSITIVITY_METHODS.items() if not m.screening))
+# the methods whose design reads another's indices (Sobol screens with the Morris indices, written after the Morris
+# design): rule screened_design; the nominal design and the others': rule sensitivity_design
+SE_SCREENED = [n for n, m in SE_METHODS.items() if m.screening]
+SE_UNSCREENED = ("nominal", *(n for n, m in SE_METHODS.items() if not m.screening))
 # a method's design, indices and samples
 SE_DESIGN = "results/sensitivity/{method}/design.csv"
 SE_INDICES = "results/sensitivity/{method}/indices.csv"
@@ -44,7 +46,7 @@ SE_MAP = SE["map"]
 
 
 wildcard_constraints:
-    method="|".join(("nominal", *SENSITIVITY_METHODS)),
+    method="|".join(("nominal", *SE_METHODS)),
     batch=r"\d+",
     width=r"[0-9.]+",
 
@@ -70,22 +72,24 @@ rule sensitivity_design:
         "../scripts/sensitivity_design.py"
 
 
-rule sobol_design:
-    """The Saltelli samples of the Sobol indices, over the inputs with the largest Morris mu* (read from the Morris
-    indices)."""
+rule screened_design:
+    """The samples of the {method} design over the inputs its screening method ranks highest, read from that method's
+    indices (e.g. Saltelli's samples of the Sobol indices over the inputs with the largest Morris mu*)."""
     input:
         code=code_of("sensitivity_design"),
-        screening=SE_INDICES.format(method=SE_SCREENED.screening),
+        screening=lambda wildcards: SE_INDICES.format(method=SE_METHODS[wildcards.method].screening),
     output:
-        SE_DESIGN.format(method=SE_SCREENED.name),
+        SE_DESIGN,
     log:
-        JOBS.sobol_design.log,
+        JOBS.screened_design.log,
     benchmark:
-        JOBS.sobol_design.benchmark
+        JOBS.screened_design.benchmark
+    wildcard_constraints:
+        method="|".join(SE_SCREENED),
     params:
         ranges=SE_RANGES,
-        method=SE_SCREENED.name,
-        settings=SE_SETTINGS["design"][SE_SCREENED.name],
+        method=lambda wildcards: wildcards.method,
+        settings=lambda wildcards: SE_SETTINGS["design"][wildcards.method],
     script:
         "../scripts/sensitivity_design.py"
 
@@ -131,7 +135,7 @@ rule sensitivity_method:
     benchmark:
         JOBS.sensitivity_method.benchmark
     wildcard_constraints:
-        method="|".join(SENSITIVITY_METHODS),
+        method="|".join(SE_METHODS),
     params:
         ranges=SE_RANGES,
         settings=lambda wildcards: SE_SETTINGS["index"][wildcards.method],
@@ -144,8 +148,8 @@ rule sensitivity_tables:
     and the samples without an output (a failed run, or no equilibrium at the stated concentration), by their inputs."""
     input:
         code=code_of("sensitivity_tables"),
-        indices=expand(rules.sensitivity_method.output.indices, method=SENSITIVITY_METHODS.names),
-        samples=expand(rules.sensitivity_method.output.samples, method=SENSITIVITY_METHODS.names),
+        indices=expand(rules.sensitivity_method.output.indices, method=SE_METHODS),
+        samples=expand(rules.sensitivity_method.output.samples, method=SE_METHODS),
         nominal=expand(rules.sensitivity_batch.output.table, method="nominal", law=LAWS, batch=0),
     output:
         indices=report(

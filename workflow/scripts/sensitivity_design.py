@@ -1,4 +1,4 @@
-"""Rules sensitivity_design and sobol_design: the samples of one design of the sensitivity study (one row each): a
+"""Rules sensitivity_design and screened_design: the samples of one design of the sensitivity study (one row each): a
 method's (sphgag.studies.sensitivity.SENSITIVITY_METHODS), or the nominal one, the configuration's own values."""
 
 import pandas as pd

@@ -76,7 +76,7 @@ delamination_convergence_dx = _named(
 # The sensitivity study: a design per method, a batch of its samples per charge law, its indices and tables; the
 # delamination map, one point per (charge law, angular extent, sigma_cr), logged with the study
 sensitivity_design = _named("sensitivity_design", "{method}_design", "sensitivity")
-sobol_design = _named("sobol_design", "sobol_design", "sensitivity")
+screened_design = _named("screened_design", "{method}_design", "sensitivity")
 sensitivity_batch = _named("sensitivity_batch", "{method}/{law}/batch{batch}", "sensitivity")
 sensitivity_method = _named("sensitivity_method", "{method}_indices", "sensitivity")
 sensitivity_tables = _named("sensitivity_tables", "aggregate", "sensitivity")

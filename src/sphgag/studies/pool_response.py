@@ -49,30 +49,6 @@ OUTPUTS = SWELLING_OUTPUTS + DELAMINATION_OUTPUTS
 
 
 @dataclass(frozen=True)
-class Morris(Options):
-    """Morris screening of every input: ``trajectories`` r on a ``levels``-level grid, the bootstrap of the mu*
-    interval (``resamples``, ``confidence``)."""
-
-    trajectories: int
-    levels: int
-    seed: int
-    resamples: int
-    confidence: float
-
-
-@dataclass(frozen=True)
-class Sobol(Options):
-    """Sobol indices of the ``inputs`` inputs Morris ranks highest: ``base_samples`` N, the bootstrap of the S1 and
-    ST intervals (``resamples``, ``confidence``)."""
-
-    inputs: int
-    base_samples: int
-    seed: int
-    resamples: int
-    confidence: float
-
-
-@dataclass(frozen=True)
 class DelaminationMap(Options):
     """Figure 5's pool at each angular extent and sigma_cr, every level of the ramp classed."""
 
@@ -99,17 +75,16 @@ def _bounds(node: Mapping) -> tuple[list, str]:
 class Sensitivity(Options):
     """The ``sensitivity`` configuration section: figure 5's pool rerun (:func:`respond`) with the ``inputs``
     (dotted paths into its scenario, uniform on ``[low, high]``) sampled, figure 4's quantities read at
-    ``concentration_mEq_l``, ``batch_size`` samples per job; Morris screening (:class:`Morris`) and Sobol indices
-    (:class:`Sobol`) of :mod:`sphgag.studies.sensitivity`, and the map of figure 5's pool
-    (:class:`DelaminationMap`)."""
+    ``concentration_mEq_l``, ``batch_size`` samples per job; the ``methods`` run, each by its name with its settings
+    (:data:`sphgag.studies.sensitivity.SENSITIVITY_METHODS`, whose checks vouch for them), and the map of figure 5's
+    pool (:class:`DelaminationMap`)."""
 
     SECTION = "sensitivity"
 
     concentration_mEq_l: float
     batch_size: int
     inputs: Mapping
-    morris: Morris
-    sobol: Sobol
+    methods: Mapping
     map: DelaminationMap
 
     #: the sections an input may set (``pool``: figure 5's pool)
@@ -130,7 +105,7 @@ class Sensitivity(Options):
         """Every input names a number of the configuration that a sample may set (:data:`INPUT_SECTIONS`), and its
         range lies inside that key's own allowed range (its node of the schema, ``schema_node(key)``; for the pool,
         inside the media and away from the symmetry edges); the stated concentration is a step of the swelling ramp;
-        Sobol takes no more inputs than there are. The inputs refer to keys the other sections' checks vouch for
+        (a method's own settings are its check's). The inputs refer to keys the other sections' checks vouch for
         (e.g. figure 5's pool): check them only for a configuration whose other relations hold."""
         se = config.get("sensitivity")
         if not se:
@@ -189,10 +164,6 @@ class Sensitivity(Options):
             out.append(
                 f"sensitivity.concentration_mEq_l = {se['concentration_mEq_l']} must be a step of the swelling ramp "
                 f"({steps})"
-            )
-        if se["sobol"]["inputs"] > len(se["inputs"]):
-            out.append(
-                f"sensitivity.sobol.inputs = {se['sobol']['inputs']} exceeds the number of inputs ({len(se['inputs'])})"
             )
         return out
 

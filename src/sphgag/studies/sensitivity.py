@@ -92,6 +92,16 @@ class SensitivityMethod(Variant):
     screening: str | None = None
     paper: bool = False
 
+    def check(self, config, key: str) -> None:
+        """Its settings (``sensitivity.methods.<name>``) hold the keys its design and its indices read, and the method
+        it screens its inputs with runs too (ValueError naming the key)."""
+        methods = config["sensitivity"]["methods"]
+        missing = [k for k in dict.fromkeys(self.design_keys + self.index_keys) if k not in methods[self.name]]
+        if missing:
+            raise ValueError(f"sensitivity.methods.{self.name} lacks {', '.join(missing)}")
+        if self.screening and self.screening not in methods:
+            raise ValueError(f"sensitivity.methods.{self.name} screens its inputs with {self.screening}: run it too")
+
     def rows(self, problem: Problem, indices: dict, counts: dict) -> list[dict]:
         """Index rows (``method``, ``input``, :data:`INDEX_COLUMNS`) of ``indices`` (index name -> ``(value,
         half-width of its interval)`` per input) with the ``counts`` of :func:`sample_counts`."""
@@ -178,6 +188,16 @@ class Morris(SensitivityMethod):
 class Sobol(SensitivityMethod):
     """Sobol first-order and total indices (Sobol 1993; Saltelli 2002, 2010) of the ``inputs`` inputs its screening
     method ranks highest (:meth:`Morris.most_influential`)."""
+
+    def check(self, config, key: str) -> None:
+        """Its settings, and no more ``inputs`` than the study has."""
+        super().check(config, key)
+        se = config["sensitivity"]
+        if se["methods"][self.name]["inputs"] > len(se["inputs"]):
+            count = se["methods"][self.name]["inputs"]
+            raise ValueError(
+                f"sensitivity.methods.{self.name}.inputs = {count} exceeds the number of inputs ({len(se['inputs'])})"
+            )
 
     def size(self, k, inputs, base_samples, **design):
         """``base_samples (inputs + 2)`` samples."""

@@ -84,18 +84,23 @@ def morris_panel(ax, rows: pd.DataFrame, labelled: int = 4):
     ax.set_ylabel("sigma")
 
 
-def sobol_panel(ax, rows: pd.DataFrame):
-    """S1 and ST per input with their bootstrap intervals (horizontal bars)."""
+#: the colours of a method's indices in an index panel, in the order of its table (Sobol: S1, ST)
+INDEX_COLOURS = ("#1b9e77", "#d95f02", "#7570b3", "#e7298a")
+
+
+def index_panel(ax, rows: pd.DataFrame):
+    """Each index of a method per input with its interval (horizontal bars): Sobol's S1 and ST, or a plug-in's."""
     if not rows.value.abs().max() > 0:
         return _no_indices(ax, rows)
     names = list(dict.fromkeys(rows.input))
-    y = np.arange(len(names))
-    for offset, (index, colour) in zip((-0.18, 0.18), (("S1", "#1b9e77"), ("ST", "#d95f02"))):
+    indices = list(dict.fromkeys(rows["index"]))
+    y, step = np.arange(len(names)), 0.72 / len(indices)
+    for k, (index, colour) in enumerate(zip(indices, INDEX_COLOURS)):
         r = rows[rows["index"] == index].set_index("input").loc[names]
         ax.barh(
-            y + offset,
+            y + (k - (len(indices) - 1) / 2) * step,
             r.value,
-            height=0.34,
+            height=step * 17.0 / 18.0,
             color=colour,
             label=index,
             xerr=[r.value - r.conf_low, r.conf_high - r.value],
@@ -104,11 +109,12 @@ def sobol_panel(ax, rows: pd.DataFrame):
     ax.set_yticks(y, [input_label(n) for n in names], fontsize=6)
     ax.invert_yaxis()
     ax.axvline(0, color="0.5", lw=0.6)
-    ax.set_xlabel("Sobol index")
+    ax.set_xlabel(f"{SENSITIVITY_METHODS[rows.method.iloc[0]].title} index")
     ax.legend(loc="lower right", fontsize=6, frameon=False)
 
 
-PANELS = dict(morris=morris_panel, sobol=sobol_panel)  # a panel per method of SENSITIVITY_METHODS, by its name
+#: a method's own panel (SENSITIVITY_METHODS, by its name); any other method's indices are drawn as bars (index_panel)
+PANELS = dict(morris=morris_panel)
 
 
 def sensitivity(indices: pd.DataFrame, laws):
@@ -129,7 +135,7 @@ def sensitivity(indices: pd.DataFrame, laws):
         for j, (method, law) in enumerate(columns):
             ax = axes[i, j]
             rows = indices[(indices.method == method) & (indices.charge_law == law) & (indices.output == output)]
-            PANELS[method](ax, rows)
+            PANELS.get(method, index_panel)(ax, rows)
             if i == 0:
                 ax.set_title(f"{SENSITIVITY_METHODS[method].title}: {law_short(law)}", fontsize=8)
             if j == 0:
