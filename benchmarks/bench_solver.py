@@ -54,12 +54,11 @@ def measure(dx: float, config_path: str) -> dict:
 
     from sphgag import config
     from sphgag.engine import geometry, solver
-    from sphgag.engine.history import HistoryMaterial
+    from sphgag.engine.history import HistoryMaterial, swelling_load
     from sphgag.engine.loading import MMHG_TO_KPA, Load
     from sphgag.engine.model import Model
     from sphgag.physics import materials
     from sphgag.studies import artery
-    from sphgag.studies.pool_swelling import swelling_load
     from sphgag.studies.wall_loading import homeostasis, pressurise
 
     threads.use(1)

@@ -25,9 +25,9 @@ sys.path.insert(0, str(ROOT / "src"))
 
 from sphgag import config, threads  # noqa: E402
 from sphgag.engine import dynamics  # noqa: E402
+from sphgag.engine.history import swelling_load  # noqa: E402
 from sphgag.physics.materials import law_gag  # noqa: E402
 from sphgag.studies import convergence  # noqa: E402
-from sphgag.studies.pool_swelling import swelling_load  # noqa: E402
 
 SCRIPT_SECONDS_PER_STEP = 2.55  # the authors' script at 1430 particles
 

@@ -34,10 +34,10 @@ sys.path.insert(0, str(ROOT / "src"))
 
 from sphgag import config, threads  # noqa: E402
 from sphgag.engine import measure, solver  # noqa: E402
+from sphgag.engine.history import swelling_load  # noqa: E402
 from sphgag.engine.numerics import Numerics  # noqa: E402
 from sphgag.physics import cavity, materials  # noqa: E402
 from sphgag.studies import annulus, convergence, swollen_pool  # noqa: E402
-from sphgag.studies.pool_swelling import swelling_load  # noqa: E402
 
 
 def particle_ratios(model, state, members) -> np.ndarray:

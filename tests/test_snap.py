@@ -7,13 +7,13 @@ import numpy as np
 import pytest
 
 from sphgag.engine import geometry, pool_volume, snap, solver
-from sphgag.engine.history import DAMAGED, HistoryMaterial
+from sphgag.engine.history import DAMAGED, HistoryMaterial, swelling_load
 from sphgag.engine.numerics import Numerics
 from sphgag.studies import artery
 from sphgag.studies.delamination.growth import grow
 from sphgag.studies.delamination.settings import Settings
 from sphgag.studies.delamination.snapshots import load_snapshot, save_snapshots
-from sphgag.studies.pool_swelling import state_model, swell_pool, swelling_load
+from sphgag.studies.pool_swelling import state_model, swell_pool
 
 from .conftest import law_gag
 from .test_delamination import mirror_map

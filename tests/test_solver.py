@@ -6,11 +6,11 @@ import numpy as np
 import pytest
 
 from sphgag.engine import solver
+from sphgag.engine.history import swelling_load
 from sphgag.engine.loading import MMHG_TO_KPA, Load
 from sphgag.engine.numerics import Numerics
 from sphgag.engine.solver import PathOptions
 from sphgag.studies import artery
-from sphgag.studies.pool_swelling import swelling_load
 from sphgag.studies.wall_loading import homeostasis, pressurise
 
 from .conftest import law_gag

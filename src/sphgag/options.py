@@ -12,16 +12,31 @@ lists them), each in the module of the concept it configures. The relations betw
 express are checked beside them: :meth:`Options.problems` of each section's options reads the whole configuration
 (once it satisfies the schema) and returns what is wrong, naming the keys; :func:`sphgag.config.validate` calls them
 all.
+
+**What a job reads.** A field of a section's options is, by default, a setting every job of the section reads. A field
+declared with :func:`role` is not: a list the pipeline fans out over (:data:`FANS_OUT`: one job per value, its
+wildcard), a key only a measurement reads (:data:`MEASUREMENT`), or a value shown beside the results and read by no
+computation (:data:`REFERENCE`). :meth:`Options.job_settings` gives a job's slice of its section from these
+declarations, so that the rules write no key filter of their own and a key read by no run reruns none.
 """
 
 from __future__ import annotations
 
 import typing
 from collections.abc import Mapping
-from dataclasses import MISSING, fields
+from dataclasses import MISSING, field, fields
 from types import MappingProxyType
 
 from .jobs import text
+
+#: the roles of a section's keys that are not every job's settings (:func:`role`)
+FANS_OUT, MEASUREMENT, REFERENCE = "fans out", "measurement", "reference"
+
+
+def role(kind: str):
+    """A field of a section's options that is no setting of its jobs: ``kind`` is :data:`FANS_OUT`, :data:`MEASUREMENT`
+    or :data:`REFERENCE` (module docstring, "What a job reads")."""
+    return field(metadata=dict(role=kind))
 
 
 def _frozen(value):
@@ -61,6 +76,14 @@ class Options:
         """What is wrong with the relations between this section's keys and the rest of ``config``, a configuration
         that satisfies the schema (each message names the keys); none by default."""
         return []
+
+    @classmethod
+    def job_settings(cls, mapping: Mapping, *roles: str) -> dict:
+        """The keys of the section ``mapping`` that a job of one run reads, in their order: its settings, and the keys
+        of the roles ``roles`` (a measurement's job: :data:`MEASUREMENT`); not those it fans out over, nor references
+        (:func:`role`)."""
+        kinds = {f.name: f.metadata.get("role") for f in fields(cls)}
+        return {k: v for k, v in mapping.items() if kinds[k] is None or kinds[k] in roles}
 
     @classmethod
     def of(cls, value):

@@ -16,6 +16,8 @@ from sphgag.studies.delamination.settings import MATCHED
 from sphgag.studies.delamination.settings import Settings as DelaminationSettings
 from sphgag.studies.onset import CRITERIA
 from sphgag.studies.pool_swelling import POOL_MODELS
+from sphgag.studies.swelling import Swelling
+from sphgag.studies.wall_loading import BilayerCalibration, HomeostasisSettings
 from sphgag.views.names import law_figure
 
 # the Donnan laws run side by side (wildcard {law}); a run's params hold its own law only (gag.charge_law), so that
@@ -80,11 +82,11 @@ def code_of(script):
 
 
 # Configuration slices that saved states depend on: a later rule refuses a state made with others.
-# (homeostasis.target_pressure_mmHg is only a reference value: it is not part of the slice)
+# (homeostasis.target_pressure_mmHg is only a reference value: it is not part of the slice; Options.job_settings)
 HOMEOSTATIC_SLICE = {
     "bilayer": config["bilayer"],
     "numerics": config["numerics"],
-    "homeostasis": {k: v for k, v in config["homeostasis"].items() if k != "target_pressure_mmHg"},
+    "homeostasis": HomeostasisSettings.job_settings(config["homeostasis"]),
 }
 PRESSURISED_SLICE = dict(HOMEOSTATIC_SLICE, bilayer_calibration=config["bilayer_calibration"])
 STATE_PRESSURES = text(config["bilayer_calibration"]["state_pressures_mmHg"])
@@ -96,13 +98,9 @@ STATE = "results/states/{model}_{pressure}mmHg.npz"
 SW = config["swelling"]
 CASES = list(SW["cases"])
 SWELL_PRESSURES = text(SW["pressures_mmHg"])
-# what the simulations depend on; probe_length_um and tip_probe only set where rule pool_stresses measures
-SWELL_PROBES = ("probe_length_um", "tip_probe")
-SWELL_SETTINGS = {
-    k: v
-    for k, v in SW.items()
-    if k not in ("cases", "models", "pool_models", "variant_pool_models", "pressures_mmHg") + SWELL_PROBES
-}
+# what the simulations depend on (the section's settings, sphgag.studies.swelling.Swelling): not the lists the runs fan
+# out over, nor probe_length_um and tip_probe, which only set where rule pool_stresses measures
+SWELL_SETTINGS = Swelling.job_settings(SW)
 # the pool models run side by side (wildcard {pool}), each under the charge laws it carries
 # (sphgag.studies.pool_swelling.POOL_MODELS); a run's settings hold its own pool model only. Figure 4's pool models
 # (swelling.pool_models) run in `all`; the variants' (swelling.variant_pool_models) in target `variants` only.

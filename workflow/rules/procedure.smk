@@ -11,7 +11,7 @@ PP_SIMULATION = dict(
         bilayer=config["bilayer"],
         numerics=config["numerics"],
         homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
-        calibration={k: config["bilayer_calibration"][k] for k in ("activation_pressure_mmHg", "activation_steps")},
+        calibration=BilayerCalibration.activation(config["bilayer_calibration"]),
         pressure_mmHg=PP["pressure_mmHg"],
     ),
     gag=canonical(dict(law_gag(config["gag"], PAPER_LAW), temperature_K=PP["temperature_K"])),  # configured or not

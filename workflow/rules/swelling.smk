@@ -91,7 +91,7 @@ SC_SIMULATION = dict(
     cases={c: SW["cases"][c] for c in SC["cases"]},
     grading=config["grading"],
     pressure=SC["pressure_mmHg"],
-    calibration={k: config["bilayer_calibration"][k] for k in ("activation_pressure_mmHg", "activation_steps")},
+    calibration=BilayerCalibration.activation(config["bilayer_calibration"]),
     volume_ratios=SC["volume_ratios"],
 )
 

@@ -1,3 +1,8 @@
+from sphgag.studies.annulus import AnnulusVerification
+from sphgag.studies.inclusion import PoolVerification
+from sphgag.studies.swollen_pool import CircularPoolVerification
+
+
 VP = config["verification"]["pool"]
 ASPECT_RATIOS = text(VP["aspect_ratios"])
 # the matrix of the verification is the elastin law of the bi-layered model (unweighted); GAG as in the study
@@ -32,7 +37,7 @@ rule verify_pool_ratio:
     resources:
         mem_mb=2000,
     params:
-        pool={k: v for k, v in VP.items() if k != "aspect_ratios"},
+        pool=PoolVerification.job_settings(VP),
         matrix=POOL_MATRIX,
         gag={k: config["gag"][k] for k in ("shear_modulus_kPa", "hourglass_modulus_kPa")},
         numerics=config["numerics"],
@@ -194,7 +199,7 @@ rule verify_circular_pool_model:
         runtime=30,
         mem_mb=2000,
     params:
-        pool={k: v for k, v in VCP.items() if k != "pool_models"},
+        pool=CircularPoolVerification.job_settings(VCP),
         matrix=POOL_MATRIX,
         gag=POOL_GAG,
         numerics=config["numerics"],
@@ -265,7 +270,7 @@ rule verify_annulus_model:
         runtime=60,
         mem_mb=2000,
     params:
-        annulus={k: v for k, v in VAN.items() if k != "pool_models"},
+        annulus=AnnulusVerification.job_settings(VAN),
         matrix=POOL_MATRIX,
         gag=POOL_GAG,
         numerics=config["numerics"],
@@ -359,9 +364,7 @@ rule verify_profiles_wall:
         numerics=config["numerics"],
         calibration={"axial_stretch_steps": config["calibration"]["axial_stretch_steps"]},
         homeostasis=HOMEOSTATIC_SLICE["homeostasis"],
-        bilayer_calibration={
-            k: config["bilayer_calibration"][k] for k in ("activation_pressure_mmHg", "activation_steps")
-        },
+        bilayer_calibration=BilayerCalibration.activation(config["bilayer_calibration"]),
     script:
         "../scripts/verify_profiles_wall.py"
 

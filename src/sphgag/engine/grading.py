@@ -33,7 +33,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..options import Options
-from .geometry import QUARTER, Sector
+from .geometry import QUARTER
 
 SAMPLES = 401  # points at which the field's minimum over an interval is sampled
 
@@ -146,8 +146,3 @@ def _profile(field: Field, lo: float, hi: float, finest: float, rc: float):
         return np.clip(s, finest, width)
 
     return spacing
-
-
-def pools_of(sectors) -> tuple:
-    """The pools of a layout as a tuple of :class:`sphgag.engine.geometry.Sector`."""
-    return tuple(s if isinstance(s, Sector) else Sector(*s) for s in sectors)

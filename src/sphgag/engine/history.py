@@ -126,6 +126,12 @@ class ParticleHistory:
         )
 
 
+def swelling_load(base: Load, conversion: float, concentration: float) -> Load:
+    """``base`` (a pressure-controlled state) with the pools' conversion fraction (the ``transition`` of
+    :class:`HistoryMaterial`) and their GAG concentration (its ``concentration``, eqs. 2.25-2.27)."""
+    return base.with_material(transition=float(conversion), concentration=float(concentration))
+
+
 class HistoryMaterial:
     """Property table of a wall as a pure function of ``(load, history)``, on a path from ``before`` to ``after``.
 

@@ -38,7 +38,7 @@ import pandas as pd
 
 from ..engine import pool_volume, solver
 from ..engine.numerics import Numerics
-from ..options import Options
+from ..options import FANS_OUT, Options, role
 from ..physics import cavity
 from ..registry import Registry, Variant
 from . import inclusion, swollen_pool
@@ -92,7 +92,7 @@ class AnnulusVerification(Options):
     beyond: float
     dx_um: tuple
     max_volume_ratio: float
-    pool_models: tuple
+    pool_models: tuple = role(FANS_OUT)
 
     @classmethod
     def problems(cls, config) -> list[str]:

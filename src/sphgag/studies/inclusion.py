@@ -46,7 +46,7 @@ from ..engine import kernel, measure, solver
 from ..engine.loading import Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
-from ..options import Options
+from ..options import FANS_OUT, Options, role
 from ..physics import inglis, materials, volumetric
 
 
@@ -57,7 +57,7 @@ class PoolVerification(Options):
     ``extent_factor`` a beyond it, under the swelling pressure ``swelling_pressure_kPa`` (Inglis; Lame for a circle)."""
 
     semi_axis_b_um: float
-    aspect_ratios: tuple
+    aspect_ratios: tuple = role(FANS_OUT)
     resolutions: tuple
     extent_factor: float
     swelling_pressure_kPa: float

@@ -32,7 +32,7 @@ import numpy as np
 import pandas as pd
 
 from ..engine import dynamics, solver
-from ..engine.history import SEEDED, HistoryMaterial
+from ..engine.history import SEEDED, HistoryMaterial, swelling_load
 from ..engine.loading import Load
 from ..engine.model import Model
 from ..options import Options, file_name_problems
@@ -41,7 +41,7 @@ from . import artery
 from .delamination.damage_pass import damage_step, onset_measure, with_ruptures
 from .delamination.front import Front
 from .delamination.settings import Settings
-from .pool_swelling import lumen_load, pool_measurements, swelling_load, with_hourglass_factor
+from .pool_swelling import lumen_load, pool_measurements, with_hourglass_factor
 
 log = logging.getLogger(__name__)
 

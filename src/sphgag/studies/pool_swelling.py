@@ -13,6 +13,7 @@ import numpy as np
 import pandas as pd
 
 from ..engine import measure, pool_cavity, pool_volume, solver
+from ..engine.history import swelling_load
 from ..engine.loading import MMHG_TO_KPA, Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
@@ -21,12 +22,6 @@ from ..physics.materials import Gag
 from ..registry import Registry, Variant
 
 log = logging.getLogger("sphgag")
-
-
-def swelling_load(base: Load, conversion: float, concentration: float) -> Load:
-    """``base`` (a pressure-controlled state) with the pool's conversion fraction (the ``transition`` of
-    :class:`sphgag.engine.history.HistoryMaterial`) and GAG concentration."""
-    return base.with_material(transition=float(conversion), concentration=float(concentration))
 
 
 #: how the tip radial stress of figure 4 is measured (``swelling.tip_probe``): over the region ``probe_length_um``

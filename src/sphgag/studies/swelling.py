@@ -7,7 +7,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from ..options import Options, file_name_problems
+from ..options import FANS_OUT, MEASUREMENT, Options, file_name_problems, role
 from .artery import pool_placement_problems
 from .wall_loading import BilayerCalibration
 
@@ -24,18 +24,18 @@ class Swelling(Options):
 
     SECTION = "swelling"
 
-    models: tuple
-    pool_models: tuple
-    variant_pool_models: tuple
-    pressures_mmHg: tuple
+    models: tuple = role(FANS_OUT)
+    pool_models: tuple = role(FANS_OUT)
+    variant_pool_models: tuple = role(FANS_OUT)
+    pressures_mmHg: tuple = role(FANS_OUT)
     conversion_steps: int
     max_concentration_mEq_l: float
     concentration_points: int
-    probe_length_um: float
-    tip_probe: str
+    probe_length_um: float = role(MEASUREMENT)  # read where rule pool_stresses measures
+    tip_probe: str = role(MEASUREMENT)
     lumen_control: str
     hourglass_factor: float
-    cases: Mapping
+    cases: Mapping = role(FANS_OUT)
 
     @classmethod
     def problems(cls, config) -> list[str]:

@@ -44,7 +44,7 @@ from ..engine import geometry, grading, kernel, measure, pool_cavity, solver
 from ..engine.model import Model
 from ..engine.numerics import Numerics
 from ..engine.recovery import normal_stress_state
-from ..options import Options
+from ..options import FANS_OUT, Options, role
 from ..physics import cavity
 from . import artery, inclusion
 from .pool_swelling import POOL_MODELS, pool_measurements
@@ -72,7 +72,7 @@ class CircularPoolVerification(Options):
     volume_ratios: tuple
     dx_um: tuple
     steps: int
-    pool_models: tuple
+    pool_models: tuple = role(FANS_OUT)
 
     @classmethod
     def problems(cls, config) -> list[str]:

@@ -7,6 +7,7 @@ tone on; :func:`bilayer_pressure_diameter` sweeps the pressure beside the semi-a
 from __future__ import annotations
 
 import logging
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -16,7 +17,7 @@ from ..engine import measure, solver
 from ..engine.loading import MMHG_TO_KPA, Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
-from ..options import Options, file_name_problems
+from ..options import REFERENCE, Options, file_name_problems, role
 from ..physics import analytic
 from . import artery
 from .pressure_diameter import (
@@ -39,7 +40,7 @@ class HomeostasisSettings(Options):
     SECTION = "homeostasis"
 
     prestretch_steps: int
-    target_pressure_mmHg: float
+    target_pressure_mmHg: float = role(REFERENCE)  # a reference value: not part of the states' slice
 
 
 @dataclass(frozen=True)
@@ -56,6 +57,12 @@ class BilayerCalibration(Options):
     max_pressure_mmHg: float
     pressure_points: int
     state_pressures_mmHg: tuple
+
+    @staticmethod
+    def activation(section: Mapping) -> dict:
+        """The keys of the section ``section`` that switch the active tone on (eq. 2.24): what a job that activates a
+        wall anew reads of it."""
+        return {k: section[k] for k in ("activation_pressure_mmHg", "activation_steps")}
 
     @classmethod
     def problems(cls, config) -> list[str]:

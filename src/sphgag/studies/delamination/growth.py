@@ -62,12 +62,11 @@ import numpy as np
 
 from ...engine import measure, pool_volume, snap, solver
 from ...engine.geometry import Sector
-from ...engine.history import HistoryMaterial, ParticleHistory
+from ...engine.history import HistoryMaterial, ParticleHistory, swelling_load
 from ...engine.loading import MMHG_TO_KPA, Load
 from ...engine.model import Model
 from ...engine.numerics import Numerics
 from ...engine.solver import Solver
-from ...studies.pool_swelling import swelling_load
 from .. import artery
 from .damage_pass import damage_step, onset_measure, with_ruptures
 from .events import RUNAWAY_EXTENT_FACTOR, LimitPoint, critical
@@ -143,7 +142,7 @@ class GrowthRun:
 
     # -- making a run ---------------------------------------------------------------------------------------------
     @classmethod
-    def seed(cls, model, start, sectors, settings, numerics, gag, base, run=None, snapshot_steps=()) -> GrowthRun:
+    def seed(cls, model, start, sectors, settings, numerics, gag, base, *, run=None, snapshot_steps=()) -> GrowthRun:
         """Convert the medial particles of ``sectors`` to GAG pools at c = 0 in the converged pressurised state
         ``start`` (``settings.conversion_steps`` converged increments of the seeding path)."""
         path_solver, run = Numerics.of(numerics).solver(model), run or model.name
@@ -165,14 +164,17 @@ class GrowthRun:
         fractions = np.linspace(0, 1, settings.conversion_steps + 1)[1:]
         seeding = [swelling_load(base_load, f, 0.0) for f in fractions]
         state = path_solver.follow_path(start.x, base_load, seeding, run=run)[-1]
-        grown = cls(path_solver, run, Front.of(model, sectors, settings), settings, material, state)
+        front = Front.of(model, sectors, settings)
+        grown = cls(solver=path_solver, name=run, front=front, settings=settings, material=material, state=state)
         grown.wanted = frozenset(int(s) for s in snapshot_steps)
         grown._settle(material.settled())
         grown._accept(state)
         return grown
 
     @classmethod
-    def resume(cls, model, snapshot, sectors, settings, numerics, gag, base, run=None, snapshot_steps=()) -> GrowthRun:
+    def resume(
+        cls, model, snapshot, sectors, settings, numerics, gag, base, *, run=None, snapshot_steps=()
+    ) -> GrowthRun:
         """Continue from ``snapshot = (state, history, pseudo_time)`` of this run (:func:`load_snapshot`)."""
         path_solver, run = Numerics.of(numerics).solver(model), run or model.name
         state, hist, step = snapshot
@@ -189,7 +191,10 @@ class GrowthRun:
             ev = model.evaluate(state.x, state.load)
             conv = state.convergence or solver.Convergence(solver.relative_residual(model, ev), 0, 1, 0, 0.0)
             state = solver.State(state.load, state.x, ev, conv)
-        resumed = cls(path_solver, run, Front.of(model, sectors, settings), settings, material, state, step)
+        front = Front.of(model, sectors, settings)
+        resumed = cls(
+            solver=path_solver, name=run, front=front, settings=settings, material=material, state=state, step=step
+        )
         resumed.wanted = frozenset(int(s) for s in snapshot_steps)
         resumed._accept(state)
         resumed._detect_merge()
@@ -552,8 +557,8 @@ def grow(
     the last state are always kept). ``resume``: ``(state, history, pseudo_time)`` of a snapshot of this run
     (:func:`load_snapshot`) to continue from instead of seeding; the rows then start there.
     """
-    args = (model, resume if resume is not None else start, sectors, settings, numerics, gag, base, run, snapshot_steps)
-    return (GrowthRun.resume(*args) if resume is not None else GrowthRun.seed(*args)).run()
+    make, begin = (GrowthRun.seed, start) if resume is None else (GrowthRun.resume, resume)
+    return make(model, begin, sectors, settings, numerics, gag, base, run=run, snapshot_steps=snapshot_steps).run()
 
 
 def seeded_only(
