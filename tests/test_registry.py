@@ -212,4 +212,3 @@ def test_the_figures_name_the_pool_models_as_the_registry_titles_them():
     from sphgag.views import style
 
     assert style.PAPER_POOL == PAPER_POOL == POOL_MODELS.paper.name
-    assert style.POOL_TITLES == {m.name: m.title for m in POOL_MODELS.deviations()}

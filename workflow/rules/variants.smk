@@ -64,7 +64,7 @@ rule variants_figure:
         "results/benchmarks/variants_figure.tsv"
     threads: 1
     params:
-        forms=list(HOURGLASS_FORMS),
+        forms={name: form.short for name, form in HOURGLASS_FORMS.items()},
         default=config["numerics"]["hourglass"],
     script:
         "../scripts/variants_figure.py"

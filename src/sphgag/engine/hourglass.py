@@ -44,11 +44,13 @@ from ..registry import Registry, Variant
 class HourglassForm(Variant):
     """A form of the hourglass control of eq. (2.14): what it adds to a model's forces and stiffness, given the pair
     coefficients ``c_ij`` and the stencil ``F~`` the forms share. It owns the key ``numerics.hourglass`` (with
-    ``numerics.hourglass_alpha``, every form's alpha)."""
+    ``numerics.hourglass_alpha``, every form's alpha). ``short``: its label in a figure's legend (its name if
+    empty)."""
 
     name: str
     title: str
     paper: bool = False
+    short: str = ""
 
     def contribute(self, model, ah, sh, hgc) -> tuple[np.ndarray, np.ndarray | None]:
         """``(hgc, K)``: the coefficients of eq. (2.14)'s pair forces, which the elastic kernels compute with the
@@ -82,8 +84,17 @@ class EnergyForm(HourglassForm):
 HOURGLASS_FORMS: Registry[HourglassForm] = Registry(
     "hourglass form",
     (
-        PairForm("paper", "eq. (2.14) as printed: pair forces along the current pair direction", paper=True),
-        EnergyForm("energy", "the energy form of eq. (2.14): a symmetric, positive semi-definite stiffness"),
+        PairForm(
+            "paper",
+            "eq. (2.14) as printed: pair forces along the current pair direction",
+            paper=True,
+            short="eq. (2.14) as printed",
+        ),
+        EnergyForm(
+            "energy",
+            "the energy form of eq. (2.14): a symmetric, positive semi-definite stiffness",
+            short="energy form of eq. (2.14)",
+        ),
     ),
 )
 

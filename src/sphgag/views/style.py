@@ -118,9 +118,6 @@ def is_paper_law(law: str) -> bool:
 # the pool models of the swelling runs (sphgag.studies.pool_swelling.POOL_MODELS, column pool_model of the pool tables):
 # ``particles`` is the paper's; the others are named beside their law in the figures
 PAPER_POOL = "particles"
-POOL_TITLES = {
-    "cavity": "the pool as a pressurised cavity (our deviation: its lining carries Pi, its contents swell uniformly)"
-}
 
 
 def variants(table: pd.DataFrame, laws) -> list[tuple[str, str]]:

@@ -9,11 +9,11 @@ import pandas as pd
 
 from .style import _style, distinct_colours, style_legend
 
-FORM_LABELS = {"paper": "eq. (2.14) as printed", "energy": "energy form of eq. (2.14)"}
 
-
-def form_label(form: str, default: str) -> str:
-    label = FORM_LABELS.get(form, form)
+def form_label(form: str, forms: dict, default: str) -> str:
+    """The legend's label of the hourglass form ``form``: its label of ``forms`` (its name if it has none), marked
+    where it is the configured ``default``."""
+    label = forms.get(form) or form
     return f"{label} (default)" if form == default else label
 
 
@@ -31,11 +31,13 @@ def stop_note(summary: pd.DataFrame) -> str:
 
 
 def hourglass_comparison(
-    swelling: pd.DataFrame, growth: pd.DataFrame, summary: pd.DataFrame, forms, default: str
+    swelling: pd.DataFrame, growth: pd.DataFrame, summary: pd.DataFrame, forms: dict, default: str
 ) -> plt.Figure:
     """(a) figure 4's first pool: the tip radial stress and (b) the pool's volume ratio against the GAG concentration;
     (c) figure 5's pool: the delaminated length and (d) the tip radial stress against pseudo-time; a line per form,
-    every state converged; a cross marks each run's last equilibrium, where it stopped (``stop_kind`` in the note)."""
+    every state converged; a cross marks each run's last equilibrium, where it stopped (``stop_kind`` in the note).
+    ``forms``: each form's legend label by its name (:data:`sphgag.engine.hourglass.HOURGLASS_FORMS`, as the rule passes
+    them), in the order of the lines."""
     _style()
     colours = dict(zip(forms, distinct_colours(len(forms))))
     fig, axes = plt.subplots(1, 4, figsize=(13.0, 3.3), layout="constrained")
@@ -43,7 +45,7 @@ def hourglass_comparison(
     for form in forms:
         sw = converted[converted.hourglass == form]
         g = growth[growth.hourglass == form]
-        kw = dict(color=colours[form], label=form_label(form, default), lw=1.4)
+        kw = dict(color=colours[form], label=form_label(form, forms, default), lw=1.4)
         axes[0].plot(sw.concentration_mEq_l, sw.tip_radial_stress_kPa, marker="o", ms=3, **kw)
         axes[1].plot(sw.concentration_mEq_l, 1.0 + sw.pool_volume_change, marker="o", ms=3, **kw)
         axes[2].plot(g.step, g.delaminated_length_um, **kw)
