@@ -16,7 +16,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from ..physics import materials
-from . import forces, hourglass, kernel, pool_cavity, recovery
+from . import forces, hourglass, kernel, recovery
 from .geometry import Layout
 from .kernel import Neighbours
 from .loading import Load, prescribed_inner_positions, pressure_stiffness_blocks
@@ -104,7 +104,9 @@ class Model:
         depend on it.
     cavities : pools modelled as pressurised cavities (:class:`sphgag.engine.pool_cavity.Cavity`): the swelling pressure
         their particles' rows carry acts on their linings, their particles are held and carry nothing, and every
-        deformation gradient sees its own material only.
+        deformation gradient sees its own material only. The model calls each one's hooks (``loading``,
+        ``hollow_rows``, ``add_forces``, ``stiffness_blocks``, ``add_stiffness``, ``rank_one``, ``lining_pressure``,
+        ``members``, ``held``) and knows nothing else of it.
     boundary : optional ``boundary(load) -> (indices, positions)`` of particles with
         prescribed positions; by default the inner surface is held at
         ``load.inner_radius`` when the load prescribes one.
@@ -154,31 +156,14 @@ class Model:
         key = (load.material if callable(self.props) else None, self.hourglass_alpha)
         if "props" not in self._cache or self._cache["key"] != key:
             props = np.ascontiguousarray(self.props(load) if callable(self.props) else self.props)
-            pressures = self._cavity_pressures(props)
+            loadings = [c.loading(props, self.name) for c in self.cavities]
             if self.cavities:
                 props = props.copy()
                 for c in self.cavities:
-                    props[c.members, materials.PI] = 0.0
-                    props[c.members, materials.MU] = props[c.members, materials.LAM] = 0.0
-                    props[c.members, materials.KAPPA] = 0.0
-                    props[c.members, materials.HG_E] = 0.0
-            self._cache.update(key=key, props=props, cavity_pressures=pressures)
+                    c.hollow_rows(props)
+            self._cache.update(key=key, props=props, cavity_loadings=loadings)
             self._stencil(props)
         return self._cache["props"], self._cache["hgc"], self._cache["pairs"]
-
-    def _cavity_pressures(self, props) -> list[tuple]:
-        """The prescribed swelling pressure (eqs. 2.25-2.27) of each cavity's particles, its lining's load, and
-        their shear modulus and volumetric term (``(Pi, (mu_g, kappa, form code))``, :mod:`sphgag.physics.volumetric`;
-        a cavity's contents are GAG, no tissue's ``LAM`` left)."""
-        out = []
-        for c in self.cavities:
-            rows = props[c.members]
-            if np.any(rows[:, materials.FCD] > 0.0) or np.ptp(rows[:, materials.PI]) > 0.0:
-                raise ValueError(f"{self.name}: a cavity carries one prescribed pressure (the law 'prescribed')")
-            row = rows[0]
-            contents = (float(row[materials.MU]), float(row[materials.KAPPA]), int(row[materials.VOLUMETRIC]))
-            out.append((float(row[materials.PI]), contents))
-        return out
 
     #: what :meth:`_stencil` caches (a function of the hourglass form, alpha and the stencil's columns alone)
     STENCIL = ("nb_elastic", "stencil_of", "hgc", "pairs", "hg", "hg_stiffness", "hg_matrix")
@@ -282,8 +267,8 @@ class Model:
         Fh = FP[:, 8:].reshape(n, 2, 2)
         p = load.pressure_kPa or 0.0
         f_ext = self._lumen.forces(self, x, pairs, load.axial_stretch, p)
-        for c, (pc, contents) in zip(self.cavities, self._cache["cavity_pressures"]):
-            c.add_forces(f_ext, x, pc, load.axial_stretch, contents)
+        for c, loading in zip(self.cavities, self._cache["cavity_loadings"]):
+            c.add_forces(f_ext, x, loading, load.axial_stretch)
         cons, target = self.constraints(load)
         return Evaluation(
             x=x,
@@ -330,30 +315,27 @@ class Model:
         )
         if self._cache["hg_stiffness"] is not None:
             data -= self._cache["hg_stiffness"]
-        for c, blocks, (pc, contents) in zip(self.cavities, self.cavity_blocks, self._cache["cavity_pressures"]):
-            net = pool_cavity.pool_pressure(c.volume_ratio(ev.x), pc, load.axial_stretch, *contents)
-            c.add_stiffness(data, blocks, net, 1.0)
+        for c, blocks, loading in zip(self.cavities, self.cavity_blocks, self._cache["cavity_loadings"]):
+            c.add_stiffness(data, blocks, ev.x, loading, load.axial_stretch)
         self._lumen.add_stiffness(self, data, ev, load.pressure_kPa or 0.0)
         return data
 
     def lining_pressures(self, ev: Evaluation) -> list[float]:
         """The pressure [kPa] on each cavity's lining at ``ev``: the normal Cauchy traction the prescribed Pi and the
-        contents exert, :func:`sphgag.engine.pool_cavity.pool_pressure` (per reference length) over the axial
-        stretch (a hole's: Pi)."""
+        contents exert, its :meth:`sphgag.engine.pool_cavity.Cavity.lining_pressure` (per reference length) over the
+        axial stretch (a hole's: Pi)."""
         self.material(ev.load)
         lz = ev.load.axial_stretch
-        pairs = zip(self.cavities, self._cache["cavity_pressures"])
-        return [pool_cavity.pool_pressure(c.volume_ratio(ev.x), pc, lz, *contents) / lz for c, (pc, contents) in pairs]
+        pairs = zip(self.cavities, self._cache["cavity_loadings"])
+        return [c.lining_pressure(ev.x, loading, lz) / lz for c, loading in pairs]
 
     def rank_one_terms(self, ev: Evaluation) -> list[tuple[float, np.ndarray]]:
         """The Jacobian's dense rank-one parts, ``(c, g)`` with ``d(f_int + f_ext)/dx += c g g^T`` (``g`` flat over
         the dofs): each cavity's contents (:meth:`sphgag.engine.pool_cavity.Cavity.rank_one`). The solver applies them
         by Sherman-Morrison (:func:`sphgag.engine.solver.factorise`)."""
         self.material(ev.load)
-        return [
-            c.rank_one(ev.x, ev.load.axial_stretch, contents)
-            for c, (_, contents) in zip(self.cavities, self._cache["cavity_pressures"])
-        ]
+        pairs = zip(self.cavities, self._cache["cavity_loadings"])
+        return [c.rank_one(ev.x, loading, ev.load.axial_stretch) for c, loading in pairs]
 
     def block_index(self, p: int, q: int) -> int:
         lo, hi = self.block_indptr[p], self.block_indptr[p + 1]

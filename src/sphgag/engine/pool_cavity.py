@@ -34,6 +34,10 @@ the Donnan pressure as a follower load:
   material-split stencil of :func:`sphgag.engine.kernel.hourglass_gradients`, used for the elastic forces too);
 * the pool's particles (the filler) no longer touch the tissue and are held where the pool's conversion left them
   (their positions carry no meaning).
+
+A :class:`Cavity` is one of a :class:`sphgag.engine.model.Model`'s ``cavities``: the model asks it for its hooks, the
+property rows it empties (:meth:`Cavity.hollow_rows`), its loading read from them (:meth:`Cavity.loading`), its
+lining's forces, stiffness blocks and rank-one term at that loading, and the particles it holds.
 """
 
 from __future__ import annotations
@@ -43,6 +47,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 from scipy.spatial import cKDTree
 
+from ..physics import materials
 from ..physics.volumetric import NONE, unit_terms
 from .loading import add_pressure_stiffness, lumen_area_gradient, pressure_stiffness_blocks
 
@@ -99,13 +104,36 @@ class Cavity:
         nxt, prv = np.roll(q, -1, axis=0), np.roll(q, 1, axis=0)
         return 0.5 * np.column_stack([nxt[:, 1] - prv[:, 1], prv[:, 0] - nxt[:, 0]])
 
-    def add_forces(self, f: np.ndarray, x: np.ndarray, pressure_kPa: float, lz: float, contents=(0.0,)) -> None:
-        """Add the nodal forces ``(Pi lz - w'(J)) dA/dx`` to ``f`` (``contents``: ``(mu_g, kappa, form code)``, the
-        arguments of :func:`pool_pressure` after ``lz``)."""
-        p = pool_pressure(self.volume_ratio(x), pressure_kPa, lz, *contents)
-        f[self.loop] += p * self.area_gradient(x)
+    def loading(self, props: np.ndarray, run: str) -> tuple[float, tuple]:
+        """``(Pi, contents)``: the prescribed swelling pressure (eqs. 2.25-2.27) its particles' rows of ``props`` carry,
+        its lining's load, and their shear modulus and volumetric term (``contents = (mu_g, kappa, form code)``,
+        :mod:`sphgag.physics.volumetric`; a cavity's contents are GAG, no tissue's ``LAM`` left). ValueError, naming
+        the run ``run``, where the rows carry no one prescribed pressure."""
+        rows = props[self.members]
+        if np.any(rows[:, materials.FCD] > 0.0) or np.ptp(rows[:, materials.PI]) > 0.0:
+            raise ValueError(f"{run}: a cavity carries one prescribed pressure (the law 'prescribed')")
+        row = rows[0]
+        contents = (float(row[materials.MU]), float(row[materials.KAPPA]), int(row[materials.VOLUMETRIC]))
+        return float(row[materials.PI]), contents
 
-    def rank_one(self, x: np.ndarray, lz: float, contents=(0.0,)) -> tuple[float, np.ndarray]:
+    def hollow_rows(self, props: np.ndarray) -> None:
+        """Empty its particles' rows of ``props`` (in place): they carry no stress, their pressure is the lining's."""
+        props[self.members, materials.PI] = 0.0
+        props[self.members, materials.MU] = props[self.members, materials.LAM] = 0.0
+        props[self.members, materials.KAPPA] = 0.0
+        props[self.members, materials.HG_E] = 0.0
+
+    def lining_pressure(self, x: np.ndarray, loading: tuple, lz: float) -> float:
+        """The net pressure ``Pi lz - w'(J)`` on the lining per reference length at ``x`` (:func:`pool_pressure`;
+        ``loading``: :meth:`loading`)."""
+        pressure_kPa, contents = loading
+        return pool_pressure(self.volume_ratio(x), pressure_kPa, lz, *contents)
+
+    def add_forces(self, f: np.ndarray, x: np.ndarray, loading: tuple, lz: float) -> None:
+        """Add the nodal forces ``(Pi lz - w'(J)) dA/dx`` to ``f`` (``loading``: :meth:`loading`)."""
+        f[self.loop] += self.lining_pressure(x, loading, lz) * self.area_gradient(x)
+
+    def rank_one(self, x: np.ndarray, loading: tuple, lz: float) -> tuple[float, np.ndarray]:
         """The part of the Jacobian the blocks leave out: ``(c, g)`` with ``d(f)/dx += c g g^T``, ``g = dA/dx`` on
         the lining (a flat vector over all particles) and ``c = p'(J) / V_pool``, ``p'(J) = -w''(J)`` the contents'
         stiffness (:func:`pool_pressure`; the prescribed Pi does not depend on J): it couples every lining particle to
@@ -113,7 +141,7 @@ class Cavity:
         J = self.volume_ratio(x)
         g = np.zeros_like(x)
         g[self.loop] = self.area_gradient(x)
-        return -contents_stiffness(J, lz, *contents) / self.pool_area, g.ravel()
+        return -contents_stiffness(J, lz, *loading[1]) / self.pool_area, g.ravel()
 
     def stiffness_blocks(self, block_index) -> tuple:
         """The Jacobian blocks ``(p, next)`` and ``(p, previous)`` of each lining particle (``block_index(p, q)``;
@@ -132,14 +160,16 @@ class Cavity:
             ) from None
         return nxt, prv
 
-    def add_stiffness(self, data: np.ndarray, blocks: tuple, pressure_kPa: float, lz: float) -> None:
-        """Add ``d(Pi lz dA/dx)/dx`` to the Jacobian blocks ``data`` (``blocks``: :meth:`stiffness_blocks`):
+    def add_stiffness(self, data: np.ndarray, blocks: tuple, x: np.ndarray, loading: tuple, lz: float) -> None:
+        """Add ``d(p dA/dx)/dx`` at the lining's net pressure ``p`` (:meth:`lining_pressure`) to the Jacobian blocks
+        ``data`` (``blocks``: :meth:`stiffness_blocks`):
         ``d(dA/dx_k)/dy_(k+1) = 1/2``, ``d(dA/dx_k)/dy_(k-1) = -1/2``, ``d(dA/dy_k)/dx_(k-1) = 1/2``,
         ``d(dA/dy_k)/dx_(k+1) = -1/2`` (mirrored: :func:`sphgag.engine.loading.add_pressure_stiffness`)."""
+        pressure_kPa = self.lining_pressure(x, loading, lz)
         if self.mirrored:
-            add_pressure_stiffness(data, blocks, pressure_kPa, lz)
+            add_pressure_stiffness(data, blocks, pressure_kPa, 1.0)
             return
-        c = 0.5 * pressure_kPa * lz
+        c = 0.5 * pressure_kPa
         nxt, prv = blocks
         np.add.at(data, (nxt, 0, 1), c)
         np.add.at(data, (nxt, 1, 0), -c)
