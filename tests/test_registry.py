@@ -212,3 +212,22 @@ def test_the_figures_name_the_pool_models_as_the_registry_titles_them():
     from sphgag.views import style
 
     assert style.PAPER_POOL == PAPER_POOL == POOL_MODELS.paper.name
+
+
+def test_a_plugin_file_registers_its_variant_once_and_a_bad_one_is_named(tmp_path):
+    """sphgag.plugins loads a file of the configuration's key ``plugins``: its VARIANT joins its REGISTRY (once, however
+    often the file is loaded); a missing file, or one without REGISTRY and VARIANT, is refused naming the key."""
+    from sphgag import plugins
+
+    path = ROOT / "tests" / "plugins" / "damage_law.py"
+    try:
+        (first,), (again,) = plugins.load([path]), plugins.load([path])
+        assert damage.DAMAGE_LAWS["linear"] is first.VARIANT and again.VARIANT is not first.VARIANT
+        assert plugins.kind_module(path) == "physics/damage.py"
+    finally:
+        damage.DAMAGE_LAWS.unregister("linear")
+    with pytest.raises(ValueError, match="plugins: .*nowhere.py is no Python file"):
+        plugins.load([tmp_path / "nowhere.py"])
+    (tmp_path / "empty.py").write_text("x = 1\n")
+    with pytest.raises(ValueError, match="plugins: .*empty.py defines no REGISTRY and VARIANT"):
+        plugins.load([tmp_path / "empty.py"])
