@@ -291,9 +291,13 @@ def test_a_bad_sensitivity_range_is_rejected_naming_the_input_and_its_allowed_ra
         (("sensitivity", "methods", "rank"), {}, "sensitivity.methods = 'rank' is invalid: 'rank' is not one of"),
         (("sensitivity", "methods", "morris"), KeyError, "sensitivity.methods.sobol screens its inputs with morris"),
         (("sensitivity", "methods", "sobol", "seed"), KeyError, "missing key 'sensitivity.methods.sobol.seed'"),
+        (("delamination", "damage_law"), "fracture_energy", "damage_law = 'fracture_energy' needs a G_c per run"),
+        (("delamination", "damage_law"), "linear", "delamination.damage_law = 'linear' is invalid"),
     ],
 )
-def test_the_sensitivity_methods_are_checked_by_name_and_by_their_own_settings(full_config, path, value, expected):
+def test_the_sensitivity_methods_and_the_damage_law_are_checked_by_name_and_by_their_own_settings(
+    full_config, path, value, expected
+):
     assert expected in bad(full_config, path, value)
 
 

@@ -160,7 +160,7 @@ def configured(ci_config, module, name):
 def test_the_configuration_accepts_a_plugin_by_name_and_refuses_an_unknown_one(plugin, ci_config):
     name = plugin.VARIANT.name
     assert name in plugin.REGISTRY and plugin.REGISTRY.lookup(name) is plugin.VARIANT
-    if plugin.REGISTRY is damage.DAMAGE_LAWS:  # a damage law is a run's setting (the pipeline's runs), not a listed key
+    if plugin.REGISTRY is damage.DAMAGE_LAWS:  # also a run's setting (Settings.damage_law), refused by name there
         base = Settings.from_config(ci_config["delamination"], 40.0, "particle")
         settings = dataclasses.replace(base, damage_law=name)
         assert isinstance(settings.law, plugin.VARIANT)
@@ -223,7 +223,7 @@ def test_a_plugin_file_registers_its_variant_once_and_a_bad_one_is_named(tmp_pat
     try:
         (first,), (again,) = plugins.load([path]), plugins.load([path])
         assert damage.DAMAGE_LAWS["linear"] is first.VARIANT and again.VARIANT is not first.VARIANT
-        assert plugins.kind_module(path) == "physics/damage.py"
+        assert plugins.variant_of(path) == (damage.DAMAGE_LAWS, "linear")
     finally:
         damage.DAMAGE_LAWS.unregister("linear")
     with pytest.raises(ValueError, match="plugins: .*nowhere.py is no Python file"):

@@ -2,6 +2,7 @@
 linear function and on Ishigami), failed samples, the registry of methods and a method of one file
 (tests/plugins/sensitivity_method.py), the scenario's inputs, and the delamination map's classes."""
 
+import os
 import subprocess
 import sys
 
@@ -12,6 +13,7 @@ import pytest
 from sphgag.studies import pool_response, sensitivity
 from sphgag.studies.delamination.tables import level_classes
 
+from .conftest import ROOT
 from .plugins import sensitivity_method as plugin
 
 MORRIS, SOBOL = sensitivity.SENSITIVITY_METHODS.values()
@@ -152,7 +154,8 @@ def test_the_figure_draws_a_panel_per_method_titled_by_the_registry_without_the_
     """views/sensitivity.py reads the methods from the registry's module, which imports no engine (Numba) code; a
     method without a panel of its own has its indices drawn as bars."""
     code = "import sys, sphgag.views.sensitivity as v; print(list(v.PANELS), 'numba' in sys.modules)"
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    env = dict(os.environ, PYTHONPATH=str(ROOT / "src"))  # this checkout's package, whatever is installed
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True, env=env).stdout
     assert out == "['morris'] False\n"
     assert sensitivity.SENSITIVITY_METHODS.titles == {"morris": "Morris", "sobol": "Sobol"}
 

@@ -185,8 +185,8 @@ def _literal_problems(node, path=()) -> list[str]:
 
 def _registries() -> dict:
     """The schema's enumerations that sphgag's registries (:class:`sphgag.registry.Registry`) define, by the path of
-    their key (a list of names or one name): a new variant is an entry of its registry, and the configuration accepts
-    it with no edit of the schema."""
+    their key (a list of names, one name, or a mapping's keys): a new variant is an entry of its registry, and the
+    configuration accepts it with no edit of the schema."""
     return {
         ("numerics", "hourglass"): hourglass.HOURGLASS_FORMS,
         ("numerics", "stress_recovery"): recovery.RECOVERIES,
@@ -256,19 +256,25 @@ def _pool_models(config: dict) -> list[str]:
 
 
 def _delamination(config: dict) -> list[str]:
-    """Each onset criterion passes its own check (:meth:`sphgag.studies.onset.OnsetCriterion.check`: one that
-    averages does so over more than one particle at the coarsest spacing it is run at)."""
+    """The section's damage law and each onset criterion pass their own checks (:meth:`sphgag.physics.damage.Law.check`:
+    a law the section can grow by; :meth:`sphgag.studies.onset.OnsetCriterion.check`: one that averages does so over
+    more than one particle at the coarsest spacing it is run at)."""
     de = config.get("delamination", {})
     if not de:
         return []
-    return onset.CRITERIA.problems(config, "delamination.criteria", de["criteria"])
+    law = damage.DAMAGE_LAWS.problems(config, "delamination.damage_law", de["damage_law"])
+    return law + onset.CRITERIA.problems(config, "delamination.criteria", de["criteria"])
 
 
 def _variants(config: dict) -> list[str]:
     """The checks the variants' registries own: the pool models' (:func:`_pool_models`), the onset criteria's
     (:func:`_delamination`) and the sensitivity methods' (their settings)."""
     methods = config.get("sensitivity", {}).get("methods", {})
-    return _pool_models(config) + _delamination(config) + SENSITIVITY_METHODS.problems(config, "sensitivity", methods)
+    return (
+        _pool_models(config)
+        + _delamination(config)
+        + SENSITIVITY_METHODS.problems(config, "sensitivity.methods", methods)
+    )
 
 
 #: the options of every section of the configuration, in its order: each checks the relations between its keys and

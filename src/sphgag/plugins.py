@@ -5,8 +5,10 @@ it: ``REGISTRY``, the registry of its kind (e.g. :data:`sphgag.physics.damage.DA
 variant (docs/contributing.md, "Variants"). :func:`load` registers each; the Snakefile loads them before it validates
 the configuration, so that the schema's enumerations name them, and exports them in :data:`ENVIRONMENT`, from which
 every job loads them again (:func:`sphgag.jobs.run`): a job is a process of its own. A plug-in's file is a code input
-of every job whose script imports the module of its kind (:func:`kind_module`; workflow/rules/common.smk), so an edit
-of it reruns what may compute with it, and nothing else.
+of the jobs that may compute with its variant (workflow/rules/common.smk, ``code_of``): those whose wildcards name it
+(a charge law, pool model, hourglass form or sensitivity method runs as jobs of its own), and, for a variant a
+setting selects (a damage law, the hourglass form), those whose scripts import the module that builds it from the
+settings. An edit of the file reruns those jobs, and nothing else.
 """
 
 from __future__ import annotations
@@ -14,6 +16,7 @@ from __future__ import annotations
 import hashlib
 import importlib.util
 import os
+import sys
 from pathlib import Path
 
 #: the environment variable that carries the plug-in files to the jobs (``os.pathsep``-separated paths)
@@ -30,6 +33,7 @@ def load(paths) -> list:
         if spec is None or not path.is_file():
             raise ValueError(f"plugins: {path} is no Python file")
         module = importlib.util.module_from_spec(spec)
+        sys.modules[name] = module  # as an import does: dataclasses and typing look the module up by its name
         spec.loader.exec_module(module)
         if not (hasattr(module, "REGISTRY") and hasattr(module, "VARIANT")):
             raise ValueError(f"plugins: {path} defines no REGISTRY and VARIANT (docs/contributing.md, 'Variants')")
@@ -39,17 +43,17 @@ def load(paths) -> list:
     return modules
 
 
-def kind_module(path) -> str:
-    """The module (its path in the package, ``physics/damage.py``) that defines the kind of the plug-in in the file
-    ``path``: that of the first class of the package its variant is, or is an instance of, a subclass of."""
+def variant_of(path) -> tuple:
+    """``(registry, name)`` of the plug-in in the file ``path``: the registry of its kind and its variant's name."""
     (module,) = load([path])
-    variant = module.VARIANT if isinstance(module.VARIANT, type) else type(module.VARIANT)
-    home = next(c.__module__ for c in variant.__mro__ if c.__module__.startswith("sphgag."))
-    return "/".join(home.split(".")[1:]) + ".py"
+    return module.REGISTRY, module.VARIANT.name
 
 
 def export(paths) -> None:
-    """Load ``paths`` here and hand them to every job of this workflow (:data:`ENVIRONMENT`)."""
+    """Load ``paths`` here and hand them to every job of this workflow (:data:`ENVIRONMENT`); a value that is no list
+    is left to the configuration's check, which names it."""
+    if not isinstance(paths, list | tuple):
+        return
     load(paths)
     os.environ[ENVIRONMENT] = os.pathsep.join(str(Path(p).resolve()) for p in paths)
 

@@ -1,2 +1,4 @@
-"""Variants written by a contributor, one file each, registered by :mod:`tests.test_registry` for a test only: a new
-pool model, a new damage law and a new hourglass form (docs/contributing.md, "Variants")."""
+"""Variants written by a contributor, one file each (a module naming ``REGISTRY`` and ``VARIANT``): a charge law, a
+damage law, a pool model, an hourglass form and a sensitivity method (docs/contributing.md, "Variants"). The unit tests
+register them for a test only; tests/test_plugins.py names them in the configuration's key ``plugins`` and runs them
+through the pipeline's jobs."""

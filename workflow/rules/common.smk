@@ -3,10 +3,12 @@
 # defines only the names it alone uses.
 
 import hashlib
+import re
 
 from sphgag import plugins
 from sphgag.jobs import kinds as JOBS
 from sphgag.jobs import text
+from sphgag.engine.hourglass import HOURGLASS_FORMS
 from sphgag.physics.damage import DAMAGE_LAWS, FractureEnergyLaw
 from sphgag.physics.donnan import CHARGE_LAWS
 from sphgag.physics.donnan import PAPER_LAW
@@ -69,16 +71,37 @@ MODULES = {p.relative_to(PACKAGE).as_posix(): os.path.relpath(p) for p in sorted
 CODE = {script: [MODULES[m] for m in modules] for script, modules in code_inputs(WORKFLOW / "scripts", PACKAGE).items()}
 
 
-# each plug-in file of the configuration (key plugins) by the module of its kind (sphgag.plugins.kind_module)
-PLUGIN_KINDS = {path: MODULES[plugins.kind_module(path)] for path in config["plugins"]}
+# each plug-in file of the configuration (key plugins): its variant's registry and name (sphgag.plugins)
+PLUGINS = {path: plugins.variant_of(path) for path in config["plugins"]}
+# a variant that a setting selects (not a wildcard of its own) is built where the settings are read: the jobs whose
+# scripts import that module may compute with it
+PLUGIN_READERS = {
+    DAMAGE_LAWS.kind: MODULES["studies/delamination/settings.py"],
+    HOURGLASS_FORMS.kind: MODULES["engine/model.py"],
+}
+
+
+def one_of(names):
+    """A wildcard constraint that matches exactly the names ``names`` (none: no name; an empty constraint would match
+    any text)."""
+    return "|".join(re.escape(n) for n in names) or "(?!)"
 
 
 def code_of(script):
     """Rule input: the digest of the modules that the job of workflow/scripts/``script``.py imports (CODE), none
-    where it imports no module that computes a number; and each plug-in file whose kind's module it imports."""
-    return ([f"results/code/{script}.sha256"] if CODE[script] else []) + [
-        path for path, module in PLUGIN_KINDS.items() if module in CODE[script]
-    ]
+    where it imports no module that computes a number; and the plug-in files whose variant the job may compute with:
+    those its wildcards name, and those a setting selects whose reader module (PLUGIN_READERS) it imports."""
+    digest = [f"results/code/{script}.sha256"] if CODE[script] else []
+    if not PLUGINS:
+        return digest
+    read = [path for path, (reg, _) in PLUGINS.items() if PLUGIN_READERS.get(reg.kind) in CODE[script]]
+
+    def inputs(wildcards):
+        values = set(dict(wildcards.items()).values())
+        named = [path for path, (_, name) in PLUGINS.items() if name in values]
+        return digest + sorted(set(read + named))
+
+    return inputs
 
 
 # Configuration slices that saved states depend on: a later rule refuses a state made with others.

@@ -48,7 +48,7 @@ rule delaminate_fracture_energy:
     benchmark:
         JOBS.delaminate_fracture_energy.benchmark
     wildcard_constraints:
-        gc="|".join(re.escape(g) for g in DE_TOUGHNESS),
+        gc=one_of(DE_TOUGHNESS),
     threads: 1
     params:
         state_slice=dict(PRESSURISED_SLICE, model="passive"),

@@ -85,7 +85,7 @@ rule screened_design:
     benchmark:
         JOBS.screened_design.benchmark
     wildcard_constraints:
-        method="|".join(SE_SCREENED),
+        method=one_of(SE_SCREENED),
     params:
         ranges=SE_RANGES,
         method=lambda wildcards: wildcards.method,

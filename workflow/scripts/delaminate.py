@@ -1,5 +1,6 @@
 """Rules delaminate and delaminate_fracture_energy: seed one pool set in the passive wall, swell it under one charge law
-and let damage grow it, by eq. (2.28) as printed (figures 5-7) or by the damage law with a fracture energy G_c
+and let damage grow it, by the configured damage law (delamination.damage_law; eq. 2.28 as printed by default: figures
+5-7) or by the damage law with a fracture energy G_c
 (wildcard ``gc``: J/m^2, or the energy the paper's law dissipates in the matched run, MATCHED)."""
 
 from sphgag import jobs

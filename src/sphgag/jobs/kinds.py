@@ -46,7 +46,7 @@ PAPER_SETTINGS = "{base}/{setting}/{model}"
 paper_settings_run = Kind("paper_settings_run", PAPER_SETTINGS, log_path=f"logs/paper_settings/{PAPER_SETTINGS}.log")
 
 # The views of every run: a ParaView series of each swelling and delamination run ("{law}/{run}": any delamination
-# run, of the paper's damage law or of one with a fracture energy), and an animation of each delamination run
+# run, of the configured damage law or of one with a fracture energy), and an animation of each delamination run
 ANY_DELAMINATION = "{law}/{run}"
 paraview_swelling = Kind("paraview_swelling", swell.key, log_path=f"logs/paraview/swelling/{swell.key}.log")
 paraview_delamination = Kind(

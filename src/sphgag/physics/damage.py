@@ -78,7 +78,15 @@ class Law(Variant):
 
     @classmethod
     def check(cls, config, key: str) -> None:
-        """The law's keys are checked by the schema (their ranges) and by its constructor: nothing more here."""
+        """The law's keys are checked by the schema (their ranges) and by its constructor. As the section's law
+        (``delamination.damage_law``) it needs no setting a run lacks: a law with a fracture energy has its G_c per run
+        (the fracture-energy runs, ``delamination.fracture_energy``), none in the section."""
+        if FRACTURE_ENERGY in cls.keys:
+            usable = ", ".join(n for n, law in DAMAGE_LAWS.items() if FRACTURE_ENERGY not in law.keys)
+            raise ValueError(
+                f"{key} = {cls.name!r} needs a G_c per run: it grows the runs of delamination.fracture_energy, beside "
+                f"the section's law (one of {usable})"
+            )
 
 
 @dataclass(frozen=True)

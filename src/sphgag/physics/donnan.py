@@ -50,7 +50,7 @@ def concentration_for_pressure(pi_kPa, c_bath, temperature_K=310.0):
 
 def pressure_at(c_fc, c_bath, rt):
     """Eq. (2.26) with ``rt`` = R T in kPa per mEq/l: the Donnan pressure [kPa] of the concentration ``c_fc``."""
-    return rt * (np.sqrt(c_fc * c_fc + c_bath * c_bath) - c_bath)
+    return rt * (np.sqrt(c_fc**2 + c_bath * c_bath) - c_bath)
 
 
 def charge_at(pressure_kPa, c_bath, rt):

@@ -17,7 +17,7 @@ from ..engine.history import swelling_load
 from ..engine.loading import MMHG_TO_KPA, Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
-from ..physics.donnan import CHARGE_LAWS, swelling_pressure
+from ..physics.donnan import CHARGE_LAWS, ChargeLaw, swelling_pressure
 from ..physics.materials import Gag
 from ..registry import Registry, Variant
 
@@ -184,15 +184,15 @@ class PoolState:
 class PoolModel(Variant):
     """A model of the pool in the figure 4 runs (a :class:`sphgag.registry.Variant` of :data:`POOL_MODELS`): its
     ``name`` (``swelling.pool_models``, ``swelling.variant_pool_models``, ``verification.circular_pool.pool_models``,
-    wildcard ``{pool}``, column ``pool_model``), ``title`` (the figures' heading of its rows), the charge ``laws`` it
-    carries (:data:`sphgag.physics.donnan.CHARGE_LAWS`), ``noun`` (what the verification's run names call the pool) and
-    whether it is the paper's. Its behaviour: the wall of a pool swollen from rest (:meth:`around`, the
+    wildcard ``{pool}``, column ``pool_model``), ``title`` (the figures' heading of its rows), ``noun`` (what the
+    verification's run names call the pool) and whether it is the paper's. Its behaviour: the charge laws it carries
+    (:meth:`carries`, :attr:`laws`, read from the registry :data:`sphgag.physics.donnan.CHARGE_LAWS` when asked, so a
+    plug-in's law too), the wall of a pool swollen from rest (:meth:`around`, the
     verification), what becomes of the wall once the pool is converted (:meth:`convert`, figure 4), and the wall a
     converted state is in equilibrium with (:meth:`converted_model`, :meth:`converts`)."""
 
     name: str
     title: str
-    laws: tuple[str, ...]
     noun: str
     paper: bool = False
 
@@ -203,6 +203,15 @@ class PoolModel(Variant):
     )
     #: its converted states are in a wall of its own (:meth:`converted_model`), not the run's
     rebuilds: ClassVar[bool] = False
+
+    def carries(self, law: ChargeLaw) -> bool:
+        """Whether it can hold a pool under the charge law ``law``: the paper's particles hold every law."""
+        return True
+
+    @property
+    def laws(self) -> tuple[str, ...]:
+        """The names of the registered charge laws it carries (:meth:`carries`), in the registry's order."""
+        return tuple(name for name, law in CHARGE_LAWS.items() if self.carries(law))
 
     def check(self, config, key: str) -> None:
         """A pool model of the swelling runs carries one of the configured charge laws (it runs under those)."""
@@ -253,6 +262,11 @@ class CavityPool(PoolModel):
     hourglass: str | None = None
     rebuilds: ClassVar[bool] = True
 
+    def carries(self, law: ChargeLaw) -> bool:
+        """A cavity carries one pressure whatever its J: a law that holds the pressure (:meth:`ChargeLaw.
+        holds_pressure`)."""
+        return law.holds_pressure()
+
     def around(self, model, members, mirrored=False):
         cavity = pool_cavity.Cavity.around(model.layout, members, model.layout.X, mirrored=mirrored)
         return replace(model, cavities=(cavity,))
@@ -291,13 +305,10 @@ class CavityPool(PoolModel):
 POOL_MODELS: Registry[PoolModel] = Registry(
     "pool model",
     (
-        PoolModel(
-            "particles", "the pool's GAG particles (eq. 2.27; the paper's)", CHARGE_LAWS.names, "pool", paper=True
-        ),
+        PoolModel("particles", "the pool's GAG particles (eq. 2.27; the paper's)", "pool", paper=True),
         CavityPool(
             "cavity",
             "the pool as a pressurised cavity (our deviation: its lining carries Pi, its contents swell uniformly)",
-            tuple(name for name, law in CHARGE_LAWS.items() if law.holds_pressure()),
             "cavity",
             hourglass="energy",
         ),

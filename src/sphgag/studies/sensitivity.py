@@ -7,7 +7,7 @@ instead of dropping it); the indices come back as one tidy table (:func:`indices
 sample: editing it redoes the designs and the indices, not the runs.
 
 A method is a :class:`SensitivityMethod` of the registry :data:`SENSITIVITY_METHODS` (wildcard ``{method}``, column
-``method``, settings ``sensitivity.<name>``), which owns its design and its indices:
+``method``, settings ``sensitivity.methods.<name>``), which owns its design and its indices:
 
 * **Morris** (Morris 1991; Campolongo et al. 2007): ``r`` one-at-a-time trajectories of ``k + 1`` samples on a grid
   of ``levels`` levels. The elementary effect of input ``i`` is ``(y(x + Delta e_i) - y(x)) / Delta`` with ``Delta``
@@ -80,7 +80,7 @@ class Problem:
 @dataclass(frozen=True)
 class SensitivityMethod(Variant):
     """A method of the sensitivity study: ``name``, ``title`` (the figure's panel titles), ``paper``, the settings of
-    ``sensitivity.<name>`` its design reads (``design_keys``) and its indices read (``index_keys``), and
+    ``sensitivity.methods.<name>`` its design reads (``design_keys``) and its indices read (``index_keys``), and
     ``screening``: the method whose indices choose its inputs (None: every input). Its behaviour, with its settings
     as keywords: ``size(k, **design)`` samples over ``k`` inputs; ``design(problem, screening=None, **design)``, a
     :meth:`Problem.design`; ``indices(problem, design, y, failed, **indices)``, its :meth:`rows` of one output."""

@@ -8,7 +8,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 
-from ..studies.sensitivity import SENSITIVITY_METHODS
+from ..studies.sensitivity import MORRIS, SENSITIVITY_METHODS
 from .style import GAG_CONCENTRATION, LAST_CONVERGED, _style, is_paper_law, law_short, paper_pool
 
 SENSITIVITY_OUTPUTS = {  # results/sensitivity/indices.csv output -> axis label
@@ -114,7 +114,7 @@ def index_panel(ax, rows: pd.DataFrame):
 
 
 #: a method's own panel (SENSITIVITY_METHODS, by its name); any other method's indices are drawn as bars (index_panel)
-PANELS = dict(morris=morris_panel)
+PANELS = {MORRIS.name: morris_panel}
 
 
 def sensitivity(indices: pd.DataFrame, laws):

@@ -1,6 +1,7 @@
 """The settings of one delamination run (paper section 2.7): the ``delamination`` configuration section
-(config/schema.yaml) with the run's own critical stress sigma_cr, onset criterion and damage law (eq. 2.28), and the
-concentration ramp they make."""
+(config/schema.yaml), its damage law among them (``damage_law``: eq. 2.28 as printed by default), with the run's own
+critical stress sigma_cr, onset criterion and, for a law with a fracture energy, G_c, and the concentration ramp they
+make."""
 
 from __future__ import annotations
 
