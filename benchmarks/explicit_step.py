@@ -57,8 +57,8 @@ def main():
     case = cfg["swelling"]["cases"][pp["cases"][0]]
     out = []
     for where, dx in (("procedure", pp["dx_um"]), ("full", cfg["bilayer"]["dx_um"])):
-        start = convergence.pressurised_wall(dx, cfg["bilayer"], numerics, cfg["homeostasis"], calibration, False,
-                                             pp["pressure_mmHg"], "bench")  # fmt: skip
+        wall = (cfg["bilayer"], numerics, cfg["homeostasis"], calibration)
+        start = convergence.pressurised_wall(dx, *wall, False, pp["pressure_mmHg"], "bench")
         model = convergence.case_model(dx, cfg["bilayer"], numerics, gag, case, "bench")
         load = swelling_load(start.load, 0.0, 0.0)  # the cost per step does not depend on the state
         swell, relax = (pp["swelling"][k] for k in ("swell", "relax"))

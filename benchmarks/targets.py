@@ -30,8 +30,18 @@ ORDER = (
     "sensitivity",
     "everything",
 )
-COLUMNS = ["target", "configuration", "jobs", "jobs_measured", "wall_s", "wall_after_all_s", "job_wall_sum_s",
-           "longest_job_s", "measured_on", "commit"]  # fmt: skip
+COLUMNS = [
+    "target",
+    "configuration",
+    "jobs",
+    "jobs_measured",
+    "wall_s",
+    "wall_after_all_s",
+    "job_wall_sum_s",
+    "longest_job_s",
+    "measured_on",
+    "commit",
+]
 
 
 def row(
