@@ -2,7 +2,6 @@ from sphgag.studies.annulus import AnnulusVerification
 from sphgag.studies.inclusion import PoolVerification
 from sphgag.studies.swollen_pool import CircularPoolVerification
 
-
 VP = config["verification"]["pool"]
 ASPECT_RATIOS = text(VP["aspect_ratios"])
 # the matrix of the verification is the elastin law of the bi-layered model (unweighted); GAG as in the study
