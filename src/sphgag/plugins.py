@@ -28,7 +28,7 @@ def load(paths) -> list:
     where it defines neither). Returns the modules."""
     modules = []
     for path in map(Path, paths):
-        name = f"sphgag_plugin_{hashlib.sha256(str(path.resolve()).encode()).hexdigest()[:12]}"
+        name = _module_name(path)
         spec = importlib.util.spec_from_file_location(name, path)
         if spec is None or not path.is_file():
             raise ValueError(f"plugins: {path} is no Python file")
@@ -43,9 +43,15 @@ def load(paths) -> list:
     return modules
 
 
+def _module_name(path: Path) -> str:
+    """The name a plug-in file's module is loaded under (one per file)."""
+    return f"sphgag_plugin_{hashlib.sha256(str(path.resolve()).encode()).hexdigest()[:12]}"
+
+
 def variant_of(path) -> tuple:
-    """``(registry, name)`` of the plug-in in the file ``path``: the registry of its kind and its variant's name."""
-    (module,) = load([path])
+    """``(registry, name)`` of the plug-in in the file ``path``: the registry of its kind and its variant's name (the
+    module :func:`export` loaded, else the file loaded now)."""
+    module = sys.modules.get(_module_name(Path(path))) or load([path])[0]
     return module.REGISTRY, module.VARIANT.name
 
 

@@ -232,9 +232,9 @@ def law_and_run(names):
 
 
 wildcard_constraints:
-    law="|".join(LAWS),
-    pool="|".join(SWELL_POOLS),
-    criterion="|".join(CRITERIA),
+    law=one_of(LAWS),
+    pool=one_of(SWELL_POOLS),
+    criterion=one_of(CRITERIA),
     run=r"[^/]+",
 
 

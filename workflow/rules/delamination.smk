@@ -1,10 +1,7 @@
-import re
-
-
 wildcard_constraints:
-    poolset="|".join(re.escape(c) for c in DE["pool_sets"]),
+    poolset=one_of(DE["pool_sets"]),
     sigma=r"[0-9.]+",
-    dedx="|".join(re.escape(dx) for dx in DE_DX),
+    dedx=one_of(DE_DX),
 
 
 rule delaminate:

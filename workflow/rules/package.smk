@@ -14,7 +14,7 @@ rule package_digest:
     benchmark:
         "results/benchmarks/package_digest_{script}.tsv"
     wildcard_constraints:
-        script="|".join(script for script, modules in CODE.items() if modules),
+        script=one_of(script for script, modules in CODE.items() if modules),
     localrule: True
     script:
         "../scripts/package_digest.py"

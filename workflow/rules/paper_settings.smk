@@ -10,8 +10,8 @@ PS_RUNS = PAPER_SETTINGS.runs(PS)
 
 
 wildcard_constraints:
-    base="|".join(PAPER_SETTINGS.BASES),
-    setting="|".join([PAPER_SETTINGS.NONE, *PS["settings"]]),
+    base=one_of(PAPER_SETTINGS.BASES),
+    setting=one_of([PAPER_SETTINGS.NONE, *PS["settings"]]),
 
 
 rule paper_settings_run:

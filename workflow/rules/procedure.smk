@@ -30,7 +30,7 @@ PP_DAMAGE_RUNS = [
 
 
 wildcard_constraints:
-    factor="|".join(PP_FACTORS),
+    factor=one_of(PP_FACTORS),
 
 
 rule procedure_start:

@@ -46,7 +46,7 @@ SE_MAP = SE["map"]
 
 
 wildcard_constraints:
-    method="|".join(("nominal", *SE_METHODS)),
+    method=one_of(("nominal", *SE_METHODS)),
     batch=r"\d+",
     width=r"[0-9.]+",
 
@@ -63,7 +63,7 @@ rule sensitivity_design:
     benchmark:
         JOBS.sensitivity_design.benchmark
     wildcard_constraints:
-        method="|".join(SE_UNSCREENED),
+        method=one_of(SE_UNSCREENED),
     params:
         ranges=SE_RANGES,
         method=lambda wildcards: wildcards.method,
@@ -135,7 +135,7 @@ rule sensitivity_method:
     benchmark:
         JOBS.sensitivity_method.benchmark
     wildcard_constraints:
-        method="|".join(SE_METHODS),
+        method=one_of(SE_METHODS),
     params:
         ranges=SE_RANGES,
         settings=lambda wildcards: SE_SETTINGS["index"][wildcards.method],

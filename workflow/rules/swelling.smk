@@ -1,9 +1,6 @@
-import re
-
-
 wildcard_constraints:
-    case="|".join(re.escape(c) for c in CASES),
-    pressure="|".join(re.escape(p) for p in SWELL_PRESSURES),
+    case=one_of(CASES),
+    pressure=one_of(SWELL_PRESSURES),
 
 
 rule swell:
@@ -97,7 +94,7 @@ SC_SIMULATION = dict(
 
 
 wildcard_constraints:
-    dx="|".join(re.escape(dx) for dx in CONVERGENCE_DX),
+    dx=one_of(CONVERGENCE_DX),
 
 
 rule swelling_convergence_dx:

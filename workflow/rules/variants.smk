@@ -19,7 +19,7 @@ rule variant:
     benchmark:
         JOBS.variant.benchmark
     wildcard_constraints:
-        form="|".join(HOURGLASS_FORMS),
+        form=one_of(HOURGLASS_FORMS),
     threads: 1
     resources:
         runtime=30,

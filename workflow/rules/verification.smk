@@ -17,7 +17,7 @@ POOL_GAG = {
 
 
 wildcard_constraints:
-    ratio="|".join(re.escape(r) for r in ASPECT_RATIOS),
+    ratio=one_of(ASPECT_RATIOS),
 
 
 rule verify_pool_ratio:
@@ -117,7 +117,7 @@ rule verify_crack_length:
     benchmark:
         JOBS.verify_crack_length.benchmark
     wildcard_constraints:
-        length="|".join(re.escape(a) for a in CRACK_LENGTHS),
+        length=one_of(CRACK_LENGTHS),
     threads: 1
     resources:
         runtime=45,
@@ -192,7 +192,7 @@ rule verify_circular_pool_model:
     benchmark:
         JOBS.verify_circular_pool_model.benchmark
     wildcard_constraints:
-        model="|".join(VCP["pool_models"]),
+        model=one_of(VCP["pool_models"]),
     threads: 1
     resources:
         runtime=30,
@@ -263,7 +263,7 @@ rule verify_annulus_model:
     benchmark:
         JOBS.verify_annulus_model.benchmark
     wildcard_constraints:
-        model="|".join(VAN["pool_models"]),
+        model=one_of(VAN["pool_models"]),
     threads: 1
     resources:
         runtime=60,
@@ -348,7 +348,7 @@ rule verify_profiles_wall:
     wildcard_constraints:
         section="mean|bilayer",
         level=r"\d+",
-        load="|".join(VPR["lumen_loads"]),
+        load=one_of(VPR["lumen_loads"]),
     threads: 1
     resources:
         runtime=120,

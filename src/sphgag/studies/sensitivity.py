@@ -193,8 +193,8 @@ class Sobol(SensitivityMethod):
         """Its settings, and no more ``inputs`` than the study has."""
         super().check(config, key)
         se = config["sensitivity"]
-        if se["methods"][self.name]["inputs"] > len(se["inputs"]):
-            count = se["methods"][self.name]["inputs"]
+        count = se["methods"][self.name]["inputs"]
+        if count > len(se["inputs"]):
             raise ValueError(
                 f"sensitivity.methods.{self.name}.inputs = {count} exceeds the number of inputs ({len(se['inputs'])})"
             )
