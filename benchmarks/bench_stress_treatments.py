@@ -24,7 +24,7 @@ sys.path.insert(0, str(ROOT / "src"))
 from bench_solver import median_time  # noqa: E402
 
 from sphgag import config, threads  # noqa: E402
-from sphgag.engine import lumen, recovery  # noqa: E402
+from sphgag.engine import loading, measure  # noqa: E402
 from sphgag.studies import artery  # noqa: E402
 from sphgag.studies.wall_loading import homeostasis, pressurise  # noqa: E402
 
@@ -53,17 +53,17 @@ def load_row(cfg: dict, dx: float, load_name: str):
 
 def read_row(model, ev, name: str) -> dict:
     """The stress reading ``name``'s row: one read of every particle's stress from the evaluation ``ev``."""
-    ms = median_ms(lambda: recovery.recovered(model, ev, name).cauchy(), 10)
+    ms = median_ms(lambda: measure.recovered(model, ev, name).cauchy(), 10)
     return dict(dx_um=model.layout.dx, particles=model.n, treatment=f"reading {name}", read_ms=ms)
 
 
-def measure(cfg: dict, dx: float) -> list[dict]:
+def rows_at(cfg: dict, dx: float) -> list[dict]:
     """One row per lumen load and per stress reading at spacing ``dx``."""
     rows = []
-    for load_name in lumen.LUMEN_LOADS:
+    for load_name in loading.LUMEN_LOADS:
         row, model, ev = load_row(cfg, dx, load_name)
         rows.append(row)
-    return rows + [read_row(model, ev, name) for name in recovery.RECOVERIES]
+    return rows + [read_row(model, ev, name) for name in measure.RECOVERIES]
 
 
 def main():
@@ -72,7 +72,7 @@ def main():
     args = ap.parse_args()
     threads.use(1)
     cfg = config.validate(config.load_yaml(ROOT / "config" / "config.yaml"), ROOT / "config" / "schema.yaml")
-    table = pd.DataFrame([r for dx in args.dx for r in measure(cfg, dx)])
+    table = pd.DataFrame([r for dx in args.dx for r in rows_at(cfg, dx)])
     (ROOT / "benchmarks" / "out").mkdir(exist_ok=True)
     table.to_csv(ROOT / "benchmarks" / "out" / "stress_treatments.csv", index=False)
     print(table.round(3).to_string(index=False))

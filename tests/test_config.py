@@ -305,8 +305,7 @@ def test_the_schemas_enumerations_are_the_registries():
     """A new charge law, onset criterion or candidate rule is an entry of its registry: the schema accepts it with no
     edit."""
     from sphgag.physics.donnan import CHARGE_LAWS
-    from sphgag.studies.candidates import CANDIDATE_RULES
-    from sphgag.studies.onset import CRITERIA
+    from sphgag.studies.delamination.settings import CANDIDATE_RULES, CRITERIA
     from sphgag.studies.pool_swelling import POOL_MODELS
 
     s = config.schema(SCHEMA)
@@ -318,7 +317,7 @@ def test_the_schemas_enumerations_are_the_registries():
 
 @pytest.mark.parametrize("value", ["foo", ["contact"], 1, KeyError])
 def test_a_bad_candidate_rule_is_rejected_naming_the_key_and_the_rules(ci_config, value):
-    """``delamination.candidates`` is one name of :data:`sphgag.studies.candidates.CANDIDATE_RULES`."""
+    """``delamination.candidates`` is one name of :data:`sphgag.studies.delamination.settings.CANDIDATE_RULES`."""
     msg = bad(ci_config, ["delamination", "candidates"], value)
     if value is KeyError:
         assert "missing key 'delamination.candidates'" in msg

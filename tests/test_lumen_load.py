@@ -1,5 +1,5 @@
 """The lumen load through the force operator's boundary term (``numerics.lumen_load: operator``,
-:data:`sphgag.engine.lumen.LUMEN_LOADS`): a uniform pressure is an exact discrete equilibrium, the tangent is exact,
+:data:`sphgag.engine.loading.LUMEN_LOADS`): a uniform pressure is an exact discrete equilibrium, the tangent is exact,
 and the ring beside the lumen reads the exact wall's radial stress where the surface load leaves it 25 % of P off."""
 
 from dataclasses import replace
@@ -7,7 +7,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from sphgag.engine import loading, lumen
+from sphgag.engine import loading
 from sphgag.engine.loading import MMHG_TO_KPA, Load
 from sphgag.studies import wall_profiles
 
@@ -31,7 +31,7 @@ def test_a_uniform_pressure_is_in_equilibrium_through_the_operator_and_not_on_th
     p = 10.0
     operator = replace(coarse_mean_model, lumen_load="operator")
     scale = p * np.linalg.norm(loading.pressure_forces(operator.layout.X, operator.layout.inner_surface, 1.0, 1.0))
-    inner = lumen.inner_layer(operator.layout.X, operator.layout.inner_surface, operator.layout.outer_surface)
+    inner = loading.inner_layer(operator.layout.X, operator.layout.inner_surface, operator.layout.outer_surface)
     assert np.abs(_uniform_pressure_residual(operator, p)[inner]).max() < 1e-9 * scale
     assert np.abs(_uniform_pressure_residual(coarse_mean_model, p)[inner]).max() > 1e-2 * scale
 

@@ -1,4 +1,4 @@
-"""Stress recovery (engine.recovery): homogeneous deformations stay exact, linear fields are averaged exactly, the
+"""Stress recovery (engine.measure): homogeneous deformations stay exact, linear fields are averaged exactly, the
 surface particles carry their traction, and the equilibrium does not depend on the recovery."""
 
 from dataclasses import replace
@@ -6,7 +6,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from sphgag.engine import measure, recovery
+from sphgag.engine import measure
 from sphgag.engine.loading import MMHG_TO_KPA, Load
 from sphgag.engine.numerics import Numerics
 from sphgag.physics import materials
@@ -21,8 +21,8 @@ def ghost_free(model) -> np.ndarray:
 
 
 def test_the_registry_has_the_papers_reading_first():
-    assert recovery.RECOVERIES.paper.name == "paper"
-    assert set(recovery.RECOVERIES) >= {"paper", "volumetric", "traction"}
+    assert measure.RECOVERIES.paper.name == "paper"
+    assert set(measure.RECOVERIES) >= {"paper", "volumetric", "traction"}
 
 
 @pytest.mark.parametrize("name", ["volumetric"])
@@ -31,7 +31,7 @@ def test_a_homogeneous_deformation_keeps_its_stress(coarse_mean_model, name):
     J and the recovered stress is the kernel stress, to round-off."""
     m = coarse_mean_model
     ev = m.evaluate(m.layout.X @ np.diag([1.3, 0.8]).T, Load(1.4, 0.0))
-    sig, J = recovery.recovered(m, ev, name).cauchy()
+    sig, J = measure.recovered(m, ev, name).cauchy()
     kernel = ev.kernel_cauchy()[0]
     assert np.abs(kernel).max() > 1.0  # stressed
     assert np.abs(sig - kernel).max() <= 1e-10 * np.abs(kernel).max()
@@ -45,7 +45,7 @@ def test_linear_fields_are_averaged_exactly_beside_the_surfaces(coarse_mean_mode
     v = 3.0 + 0.02 * m.layout.X[:, 0] - 0.05 * m.layout.X[:, 1]
     keep = ghost_free(m)
     assert np.isin(m.layout.inner_surface, np.flatnonzero(keep)).any()
-    assert np.abs(recovery.averaged(m, props, v) - v)[keep].max() <= 1e-10
+    assert np.abs(measure.averaged(m, props, v) - v)[keep].max() <= 1e-10
 
 
 def test_the_average_stays_within_a_volumetric_law(ci_config):
@@ -56,7 +56,7 @@ def test_the_average_stays_within_a_volumetric_law(ci_config):
     m = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-bilayer")
     props = m.material(Load(1.0, 0.0, material=(("activation", 0.0), ("prestretch", 1.0))))[0]
     v = np.where(m.layout.layer == 0, 1.0, 2.0)
-    assert np.abs(recovery.averaged(m, props, v) - v).max() <= 1e-12
+    assert np.abs(measure.averaged(m, props, v) - v).max() <= 1e-12
 
 
 def test_the_normal_stress_condition_is_solved(coarse_mean_model):
@@ -68,7 +68,7 @@ def test_the_normal_stress_condition_is_solved(coarse_mean_model):
     J = lr * lt * lz
     rows = np.array([0])
     srr, stt, Js = np.empty(1), np.empty(1), np.empty(1)
-    recovery.normal_stress_state(props, rows, np.array([lt]), lz, np.array([lr * lr * s_rr / J]), srr, stt, Js)
+    measure.normal_stress_state(props, rows, np.array([lt]), lz, np.array([lr * lr * s_rr / J]), srr, stt, Js)
     assert Js[0] == pytest.approx(J, rel=1e-10)
     assert stt[0] == pytest.approx(lt * lt * s_tt / J, rel=1e-8)
 
@@ -76,7 +76,7 @@ def test_the_normal_stress_condition_is_solved(coarse_mean_model):
 def test_a_surfaces_stretch_is_exact_for_a_uniform_dilation(coarse_mean_model):
     lay = coarse_mean_model.layout
     for ring in (lay.inner_surface, lay.outer_surface):
-        assert np.abs(recovery.surface_stretch(lay, 1.7 * lay.X, ring) - 1.7).max() <= 1e-12
+        assert np.abs(measure.surface_stretch(lay, 1.7 * lay.X, ring) - 1.7).max() <= 1e-12
 
 
 def test_the_surfaces_carry_their_traction_and_the_equilibrium_is_unchanged(coarse_mean_model, ci_config):

@@ -10,13 +10,13 @@ import numpy as np
 import pytest
 
 from sphgag import config
-from sphgag.engine import hourglass, kernel, recovery
+from sphgag.engine import hourglass, kernel, measure
 from sphgag.engine.loading import Load
 from sphgag.engine.model import Model
 from sphgag.physics import damage, donnan
 from sphgag.registry import Registry, Variant
-from sphgag.studies import annulus, candidates, inclusion, onset, sensitivity, swollen_pool
-from sphgag.studies.delamination.settings import Settings
+from sphgag.studies import annulus, inclusion, sensitivity, swollen_pool
+from sphgag.studies.delamination.settings import CANDIDATE_RULES, CRITERIA, Settings
 from sphgag.studies.pool_swelling import POOL_MODELS
 
 from .conftest import ROOT, Lattice, isotropic_props
@@ -26,12 +26,12 @@ SCHEMA = ROOT / "config" / "schema.yaml"
 REGISTRIES = {
     "charge law": donnan.CHARGE_LAWS,
     "damage law": damage.DAMAGE_LAWS,
-    "onset criterion": onset.CRITERIA,
-    "candidate rule": candidates.CANDIDATE_RULES,
+    "onset criterion": CRITERIA,
+    "candidate rule": CANDIDATE_RULES,
     "pool model": POOL_MODELS,
     "hourglass form": hourglass.HOURGLASS_FORMS,
     "pool model of the annulus": annulus.ANNULUS_POOL_MODELS,
-    "stress recovery": recovery.RECOVERIES,
+    "stress recovery": measure.RECOVERIES,
     "sensitivity method": sensitivity.SENSITIVITY_METHODS,
 }
 
@@ -74,13 +74,13 @@ def test_the_names_the_pipeline_and_the_figures_know_are_unchanged():
     assert tuple(donnan.CHARGE_LAWS) == ("prescribed", "conserved") and donnan.PAPER_LAW == "prescribed"
     assert tuple(damage.DAMAGE_LAWS) == ("paper", "fracture_energy") and damage.DAMAGE_LAWS.paper is damage.DamageLaw
     assert damage.matches_paper("paper") and not damage.matches_paper("0.5") and not damage.matches_paper(None)
-    assert tuple(onset.CRITERIA) == ("particle", "averaged") and tuple(candidates.CANDIDATE_RULES) == (
+    assert tuple(CRITERIA) == ("particle", "averaged") and tuple(CANDIDATE_RULES) == (
         "contact",
         "window",
     )
     assert tuple(POOL_MODELS) == ("particles", "cavity") and tuple(hourglass.HOURGLASS_FORMS) == ("paper", "energy")
     assert tuple(annulus.ANNULUS_POOL_MODELS) == ("hole", "particles")
-    assert tuple(recovery.RECOVERIES) == ("paper", "volumetric", "traction")
+    assert tuple(measure.RECOVERIES) == ("paper", "volumetric", "traction")
     assert POOL_MODELS["cavity"].laws == ("prescribed",) and POOL_MODELS["cavity"].hourglass
 
 
@@ -89,8 +89,8 @@ def test_the_schema_enumerates_and_titles_every_registry(ci_config):
     hg = s["numerics"]["properties"]["hourglass"]
     assert hg["enum"] == ["paper", "energy"] and hourglass.HOURGLASS_FORMS["energy"].title in hg["description"]
     reading = s["numerics"]["properties"]["stress_recovery"]
-    assert reading["enum"] == list(recovery.RECOVERIES)
-    assert recovery.RECOVERIES["traction"].title in reading["description"]
+    assert reading["enum"] == list(measure.RECOVERIES)
+    assert measure.RECOVERIES["traction"].title in reading["description"]
     annulus_pools = s["verification"]["properties"]["annulus"]["properties"]["pool_models"]
     assert annulus_pools["items"]["enum"] == ["hole", "particles"]
     circle = s["verification"]["properties"]["circular_pool"]["properties"]["pool_models"]
@@ -100,7 +100,7 @@ def test_the_schema_enumerates_and_titles_every_registry(ci_config):
 def test_a_variants_own_check_names_the_key_and_its_range(ci_config):
     cfg = copy.deepcopy(ci_config)
     cfg["delamination"]["averaging_length_um"] = 0.01
-    problems = onset.CRITERIA.problems(cfg, "delamination.criteria", ["particle", "averaged"])
+    problems = CRITERIA.problems(cfg, "delamination.criteria", ["particle", "averaged"])
     assert len(problems) == 1 and problems[0].startswith("delamination.averaging_length_um = 0.01 is below")
     cfg["gag"]["charge_laws"] = ["conserved"]
     problems = POOL_MODELS.problems(cfg, "swelling.pool_models", ["particles", "cavity"])

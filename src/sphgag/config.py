@@ -21,14 +21,15 @@ from pathlib import Path
 import jsonschema
 import yaml
 
-from .engine import hourglass, lumen, recovery
+from .engine import hourglass, loading, measure
 from .engine.grading import Grading
 from .engine.numerics import Numerics
 from .options import key_text
 from .physics import damage, donnan, volumetric
 from .physics.materials import GagSection
-from .studies import annulus, artery, candidates, onset
+from .studies import annulus, artery
 from .studies.artery import Bilayer, Mean
+from .studies.delamination import settings as delamination_settings
 from .studies.delamination.section import Delamination
 from .studies.paper_procedure import PaperProcedure
 from .studies.paper_settings import PaperSettings
@@ -189,19 +190,19 @@ def _registries() -> dict:
     configuration accepts it with no edit of the schema."""
     return {
         ("numerics", "hourglass"): hourglass.HOURGLASS_FORMS,
-        ("numerics", "stress_recovery"): recovery.RECOVERIES,
-        ("numerics", "lumen_load"): lumen.LUMEN_LOADS,
+        ("numerics", "stress_recovery"): measure.RECOVERIES,
+        ("numerics", "lumen_load"): loading.LUMEN_LOADS,
         ("gag", "charge_laws"): donnan.CHARGE_LAWS,
         ("gag", "volumetric"): volumetric.VOLUMETRIC_FORMS,
         ("swelling", "pool_models"): POOL_MODELS,
         ("swelling", "variant_pool_models"): POOL_MODELS,
-        ("delamination", "criteria"): onset.CRITERIA,
-        ("delamination", "candidates"): candidates.CANDIDATE_RULES,
+        ("delamination", "criteria"): delamination_settings.CRITERIA,
+        ("delamination", "candidates"): delamination_settings.CANDIDATE_RULES,
         ("delamination", "damage_law"): damage.DAMAGE_LAWS,
         ("verification", "circular_pool", "pool_models"): POOL_MODELS,
         ("verification", "annulus", "pool_models"): annulus.ANNULUS_POOL_MODELS,
-        ("verification", "profiles", "lumen_loads"): lumen.LUMEN_LOADS,
-        ("verification", "profiles", "recoveries"): recovery.RECOVERIES,
+        ("verification", "profiles", "lumen_loads"): loading.LUMEN_LOADS,
+        ("verification", "profiles", "recoveries"): measure.RECOVERIES,
         ("sensitivity", "methods"): SENSITIVITY_METHODS,
     }
 
@@ -257,13 +258,13 @@ def _pool_models(config: dict) -> list[str]:
 
 def _delamination(config: dict) -> list[str]:
     """The section's damage law and each onset criterion pass their own checks (:meth:`sphgag.physics.damage.Law.check`:
-    a law the section can grow by; :meth:`sphgag.studies.onset.OnsetCriterion.check`: one that averages does so over
-    more than one particle at the coarsest spacing it is run at)."""
+    a law the section can grow by; :meth:`sphgag.studies.delamination.settings.OnsetCriterion.check`: one that
+    averages does so over more than one particle at the coarsest spacing it is run at)."""
     de = config.get("delamination", {})
     if not de:
         return []
     law = damage.DAMAGE_LAWS.problems(config, "delamination.damage_law", de["damage_law"])
-    return law + onset.CRITERIA.problems(config, "delamination.criteria", de["criteria"])
+    return law + delamination_settings.CRITERIA.problems(config, "delamination.criteria", de["criteria"])
 
 
 def _variants(config: dict) -> list[str]:

@@ -16,7 +16,7 @@ from sphgag.physics.materials import law_gag
 from sphgag.studies.artery import Bilayer
 from sphgag.studies.delamination.settings import MATCHED
 from sphgag.studies.delamination.settings import Settings as DelaminationSettings
-from sphgag.studies.onset import CRITERIA
+from sphgag.studies.delamination.settings import CRITERIA
 from sphgag.studies.pool_swelling import POOL_MODELS
 from sphgag.studies.swelling import Swelling
 from sphgag.studies.wall_loading import BilayerCalibration, HomeostasisSettings

@@ -16,11 +16,10 @@ import numpy as np
 import scipy.sparse as sp
 
 from ..physics import materials
-from . import forces, hourglass, kernel, recovery
+from . import forces, hourglass, kernel, measure
 from .geometry import Layout
 from .kernel import Neighbours
-from .loading import Load, prescribed_inner_positions, pressure_stiffness_blocks
-from .lumen import LUMEN_LOADS
+from .loading import LUMEN_LOADS, Load, prescribed_inner_positions, pressure_stiffness_blocks
 
 
 @dataclass
@@ -37,7 +36,7 @@ class Evaluation:
     constrained: np.ndarray  # particle indices with prescribed positions
     target: np.ndarray  # their prescribed positions
     F_hourglass: np.ndarray | None = None  # F~ of the hourglass penalty (kernel.hourglass_gradients)
-    # ev -> (sigma, J): the stress every measurement reads (engine.recovery), bound to the model; None: eq. 2.10
+    # ev -> (sigma, J): the stress every measurement reads (engine.measure), bound to the model; None: eq. 2.10
     recovery: Callable | None = field(default=None, repr=False, compare=False)
     recovered: tuple | None = field(default=None, repr=False, compare=False)  # its value, once computed
 
@@ -50,7 +49,7 @@ class Evaluation:
 
     def cauchy(self) -> tuple[np.ndarray, np.ndarray]:
         """``(sigma, J)`` as the measurements read them: the stress recovered by the model's recovery
-        (:mod:`sphgag.engine.recovery`, computed once), or the kernel stress (eq. 2.10) without one."""
+        (:mod:`sphgag.engine.measure`, computed once), or the kernel stress (eq. 2.10) without one."""
         if self.recovery is None:
             return self.kernel_cauchy()
         if self.recovered is None:
@@ -100,7 +99,7 @@ class Model:
     hourglass : the name of the hourglass control's form (the registry :data:`sphgag.engine.hourglass.HOURGLASS_FORMS`):
         ``paper`` (eq. 2.14 as printed) or ``energy`` (its energy form, :mod:`sphgag.engine.hourglass`).
     stress_recovery : the name of the stress its evaluations are read with (the registry
-        :data:`sphgag.engine.recovery.RECOVERIES`; ``paper``: the kernel stress of eq. 2.10). The forces do not
+        :data:`sphgag.engine.measure.RECOVERIES`; ``paper``: the kernel stress of eq. 2.10). The forces do not
         depend on it.
     cavities : pools modelled as pressurised cavities (:class:`sphgag.engine.pool_cavity.Cavity`): the swelling pressure
         their particles' rows carry acts on their linings, their particles are held and carry nothing, and every
@@ -121,14 +120,14 @@ class Model:
     hourglass: str = "paper"
     cavities: tuple = ()
     stress_recovery: str = "paper"
-    lumen_load: str = "surface"  # lumen.LUMEN_LOADS: how the lumen pressure becomes particle forces
+    lumen_load: str = "surface"  # loading.LUMEN_LOADS: how the lumen pressure becomes particle forces
     # derived data of the fields above (material tables, hourglass stencil): every model object, a replaced one too,
     # starts with its own, empty
     _cache: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     def __post_init__(self):
         hourglass.HOURGLASS_FORMS.lookup(self.hourglass)
-        recovery.RECOVERIES.lookup(self.stress_recovery)
+        measure.RECOVERIES.lookup(self.stress_recovery)
         self._lumen = LUMEN_LOADS.lookup(self.lumen_load)
         self.cth = np.cos(self.layout.theta)
         self.sth = np.sin(self.layout.theta)
@@ -281,7 +280,7 @@ class Model:
             constrained=cons,
             target=target,
             F_hourglass=Fh,
-            recovery=recovery.RECOVERIES[self.stress_recovery].bind(self),
+            recovery=measure.RECOVERIES[self.stress_recovery].bind(self),
         )
 
     def jacobian(self, ev: Evaluation) -> np.ndarray:

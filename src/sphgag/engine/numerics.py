@@ -16,9 +16,9 @@ class Numerics(Options):
     ``tolerance``: the relative residual of a
     converged state; ``max_newton_iterations`` and ``max_bisections``: Newton's method per load step and the halvings
     of a step; ``reuse_factorisation``: chord steps with the last factorisation before refactorising;
-    ``stress_recovery``: how the measurements read the stress (:data:`sphgag.engine.recovery.RECOVERIES`: ``paper``,
+    ``stress_recovery``: how the measurements read the stress (:data:`sphgag.engine.measure.RECOVERIES`: ``paper``,
     the kernel stress of eq. 2.10; ``volumetric``; ``traction``), with the equilibrium unchanged; ``lumen_load``: how
-    the lumen pressure becomes particle forces (:data:`sphgag.engine.lumen.LUMEN_LOADS`: ``surface`` or
+    the lumen pressure becomes particle forces (:data:`sphgag.engine.loading.LUMEN_LOADS`: ``surface`` or
     ``operator``)."""
 
     SECTION = "numerics"

@@ -325,7 +325,7 @@ def volumetric_stress(props, J, out):
     on ``J`` alone (eqs. 2.18, 2.21, 2.26-2.27): ``U = -MU ln J + LAM/2 (ln J)^2 + KAPPA u(J) - PI (J - 1) + W_D(J)``,
     so ``U' = (h - MU) / J - PI - PI_D(J)`` with ``h = J (LAM ln J / J + KAPPA u')`` of :func:`_volumetric` (the
     isotropic part of :func:`pk2` that is not ``MU G^2``). The stress recovery averages it
-    (:mod:`sphgag.engine.recovery`)."""
+    (:mod:`sphgag.engine.measure`)."""
     for i in range(J.shape[0]):
         h = _volumetric(props, i, J[i], np.log(J[i]))[1]
         pi = props[i, PI] + donnan(J[i], props[i, FCD], props[i, CBATH], props[i, RT])[0]

@@ -51,7 +51,7 @@ from ..engine.numerics import Numerics
 from ..options import Options
 from ..physics import damage, donnan, fracture, materials
 from ..physics.donnan import PAPER_LAW
-from .delamination.damage_pass import intact_energy
+from .delamination.front import intact_energy
 from .inclusion import ExactBoundary, Materials
 
 MAX_PASSES_PER_LEVEL = 400  # damage passes at one pressure level at most (growth under pressure control runs away)

@@ -38,8 +38,7 @@ from ..engine.model import Model
 from ..options import Options, file_name_problems
 from ..physics import donnan, materials
 from . import artery
-from .delamination.damage_pass import damage_step, onset_measure, with_ruptures
-from .delamination.front import Front
+from .delamination.front import Front, damage_step, onset_measure, with_ruptures
 from .delamination.settings import Settings
 from .pool_swelling import lumen_load, pool_measurements, with_hourglass_factor
 

@@ -41,9 +41,9 @@ import numpy as np
 import pandas as pd
 
 from ..engine import geometry, grading, kernel, measure, pool_cavity, solver
+from ..engine.measure import normal_stress_state
 from ..engine.model import Model
 from ..engine.numerics import Numerics
-from ..engine.recovery import normal_stress_state
 from ..options import FANS_OUT, Options, role
 from ..physics import cavity
 from . import artery, inclusion
@@ -175,11 +175,11 @@ def measure_circle(model, state: solver.State, exact: cavity.CircularPool, h: fl
 
 def traction_hoop(model, ev, A: float) -> float:
     """The hoop stress [kPa] at the hole's surface ``R = A`` recovered from its traction (as the wall's surfaces,
-    :class:`sphgag.engine.recovery.SurfaceTraction`): the normal stress is the pressure on the lining
+    :class:`sphgag.engine.measure.SurfaceTraction`): the normal stress is the pressure on the lining
     (:meth:`sphgag.engine.model.Model.lining_pressures`), the hoop stretch that of the first two matrix rings (each
     ring's mean current radius over its reference one) extrapolated linearly to ``R = A``, the axial stretch the
     load's, and the radial stretch solves the normal-stress condition of the lining's material
-    (:func:`sphgag.engine.recovery.normal_stress_state`). Second order in the spacing (docs/physics.md). NaN for a
+    (:func:`sphgag.engine.measure.normal_stress_state`). Second order in the spacing (docs/physics.md). NaN for a
     pool of particles: its lining's traction is the contents' own stress, not a known load."""
     if not model.cavities:
         return np.nan

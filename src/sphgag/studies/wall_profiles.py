@@ -22,7 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from ..engine import measure, recovery
+from ..engine import measure
 from ..engine.loading import MMHG_TO_KPA, Load
 from ..engine.numerics import Numerics
 from ..options import Options
@@ -127,13 +127,13 @@ def exact_at(tube, P_kPa: float, radius: np.ndarray, layer: np.ndarray) -> tuple
 
 
 def ring_errors(model, tube, state, stress_recovery: str) -> pd.DataFrame:
-    """Every ring of ``state`` read by ``stress_recovery`` (:data:`sphgag.engine.recovery.RECOVERIES`): its radial
+    """Every ring of ``state`` read by ``stress_recovery`` (:data:`sphgag.engine.measure.RECOVERIES`): its radial
     error [% of P] and hoop error [% of the exact] against the exact tube at the ring's current radius and
     (``*_material_*``) at its material point: the exact tube's radius of the ring's reference radius (the SPH wall's
     diameter is off by about 0.1 %, which on the stiff end of the pressure-diameter curve moves the hoop stress at a
     given radius by several %)."""
     ev = state.evaluation
-    profile = measure.ring_profile(model, recovery.recovered(model, ev, stress_recovery))
+    profile = measure.ring_profile(model, measure.recovered(model, ev, stress_recovery))
     P = state.load.pressure_kPa
     layer = profile.layer.to_numpy()
     srr, stt = exact_at(tube, P, profile.radius_um.to_numpy(), layer)

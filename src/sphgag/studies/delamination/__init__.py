@@ -2,12 +2,13 @@
 
 One module per concept:
 
-* :mod:`.settings`: the settings of one run (:class:`Settings`) and its concentration ramp;
+* :mod:`.settings`: the settings of one run (:class:`Settings`) and its concentration ramp, and the registries of
+  onset criteria and candidate rules they name;
 * :mod:`.front`: the pools' front: damage candidates, connectivity of the converted particles, delaminated length,
-  islands (:class:`Front`);
+  islands (:class:`Front`), and one damage pass of eq. (2.28) on a converged state (shared with the explicit
+  procedure);
 * :mod:`.growth`: the staggered protocol of one run, seeding, damage passes, snaps (:class:`GrowthRun`,
   :func:`grow`);
-* :mod:`.damage_pass`: one damage pass of eq. (2.28) on a converged state (shared with the explicit procedure);
 * :mod:`.events`: the concentrations of a run's onset, runaway and merge, bisected between levels;
 * :mod:`.tables`: a run's records and the tables of them: rows, summary and its statistics, labels, the
   delamination map's classes, the pool as a pressurised crack (:func:`griffith`);

@@ -1,8 +1,8 @@
 """The pools' front (paper section 2.7): their seeded sectors, the damage candidates around them, the connectivity of
 the particles damage converts, and the measures of growth (converted particles, delaminated length, islands).
 
-**Candidates** (``candidates``, :data:`sphgag.studies.candidates.CANDIDATE_RULES`): tissue particles of the media in a
-pool's radial band (the reference radii of its seeded sector), not on a wall surface, within
+**Candidates** (``candidates``, :data:`sphgag.studies.delamination.settings.CANDIDATE_RULES`): tissue particles of
+the media in a pool's radial band (the reference radii of its seeded sector), not on a wall surface, within
 ``candidate_window_deg`` of the pool's current angular extent (the authors' script, ``window``), and by default
 (``contact``, the paper's "radial stress at the tip of the pool") only those with a GAG particle of the pool within
 1.5 dx in the reference configuration.
@@ -11,6 +11,11 @@ pool's radial band (the reference radii of its seeded sector), not on a wall sur
 neighbours within 1.5 dx among the pool's GAG particles, from its seeded ones) over the band's thickness. Converted
 particles not connected to their pool are *islands*, counted apart (``islands``, ``island_particles``,
 ``island_distance_um``); ``converted_particles`` counts both.
+
+**A damage pass** of eq. (2.28) on a converged state (:func:`damage_step`): the onset measure at the candidates, the
+intact energy density, the damage state it makes, and the ruptured candidates become GAG particles of their pools
+(:func:`with_ruptures`). The quasi-static growth (:mod:`.growth`) and the authors' explicit procedure
+(:mod:`sphgag.studies.paper_procedure`) take their passes with it.
 """
 
 from __future__ import annotations
@@ -22,11 +27,12 @@ from scipy.sparse import csr_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
+from ...engine import forces
 from ...engine.geometry import Sector
-from ...engine.history import DAMAGED, SEEDED, ParticleHistory
+from ...engine.history import DAMAGED, SEEDED, HistoryMaterial, ParticleHistory
 from ...engine.model import Model
-from ..candidates import CANDIDATE_RULES
-from .settings import Settings
+from ...physics import damage
+from .settings import CANDIDATE_RULES, CRITERIA, Settings
 
 #: the contact distance in the reference configuration, in particle spacings: two particles within it touch (pools
 #: merge, a candidate touches its pool, a converted particle is connected to its neighbour)
@@ -48,7 +54,7 @@ class Islands:
 class Front:
     """The pools' geometry: seeded sectors, candidates and the measures of growth.
 
-    ``rule``: the candidate rule (:data:`sphgag.studies.candidates.CANDIDATE_RULES`). ``adjacent``: the
+    ``rule``: the candidate rule (:data:`sphgag.studies.delamination.settings.CANDIDATE_RULES`). ``adjacent``: the
     reference-neighbour graph, particles within :data:`CONTACT_DX` spacings in the reference configuration (a symmetric
     sparse matrix).
     """
@@ -164,3 +170,43 @@ class Front:
         return any(
             np.any(self.touching(hist, k) & (hist.pool >= 0) & (hist.pool != k)) for k in range(len(self.sectors))
         )
+
+
+def onset_measure(model: Model, ev, hist: ParticleHistory, cand: np.ndarray, settings: Settings) -> np.ndarray:
+    """The radial Cauchy stress (eq. 2.10, current polar frame) the onset test of eq. (2.28) compares with sigma_cr,
+    at the candidates, by the run's onset criterion (:data:`sphgag.studies.delamination.settings.CRITERIA`)."""
+    return CRITERIA[settings.criterion].measure(model, ev, hist, cand, settings)
+
+
+def intact_energy(model: Model, ev, base_props: np.ndarray) -> np.ndarray:
+    """``W_0`` (eq. 2.23) of every particle with the undamaged material, at the state ``ev``."""
+    W = np.empty(model.n)
+    forces.energy_densities(ev.F, ev.load.axial_stretch, model.cth, model.sth, base_props, W)
+    return W
+
+
+def damage_step(model: Model, front: Front, settings: Settings, material: HistoryMaterial, ev, found):
+    """The damage state (eq. 2.28) that the state ``ev`` makes from the history of ``material``, and the intact energy
+    density ``W_0`` (eq. 2.23) of every particle there. ``found``: ``(candidates, their pools, their onset
+    measures)``. Only candidates start to damage; GAG particles keep their ``D``."""
+    hist, lay = material.history, model.layout
+    cand, pools, sigma = found
+    dmg = damage.DamageState(hist.D.copy(), hist.onset_stretch.copy(), hist.onset_energy.copy())
+    radial = np.full(lay.n, -np.inf)
+    radial[cand] = sigma
+    W0 = intact_energy(model, ev, material.base(ev.load))
+    band = np.full(lay.n, np.nan)
+    band[cand] = front.thickness[pools]  # the band a pool's growth converts: its radial extent
+    dmg.update(settings.law, cand, radial, damage.radial_stretch(ev.F, lay.theta), W0, band)
+    dmg.D[hist.gag] = hist.D[hist.gag]
+    return dmg, W0
+
+
+def with_ruptures(hist: ParticleHistory, ruptured: np.ndarray, cand: np.ndarray, pools: np.ndarray, step: int):
+    """``hist`` with the candidates ``ruptured`` become GAG particles of their pools (``pools``, per candidate) at
+    damage pass ``step`` (section 2.7)."""
+    if not ruptured.size:
+        return hist
+    owner = np.full(hist.n, -1)
+    owner[cand] = pools
+    return hist.rupture(ruptured, owner[ruptured], step)

@@ -68,9 +68,8 @@ from ...engine.model import Model
 from ...engine.numerics import Numerics
 from ...engine.solver import Solver
 from .. import artery
-from .damage_pass import damage_step, onset_measure, with_ruptures
 from .events import RUNAWAY_EXTENT_FACTOR, LimitPoint, critical
-from .front import Front
+from .front import Front, damage_step, onset_measure, with_ruptures
 from .settings import Settings
 from .tables import Critical, Pass, Result, Stop, growth_table, run_summary
 

@@ -1,21 +1,141 @@
-"""The settings of one delamination run (paper section 2.7): the ``delamination`` configuration section
-(config/schema.yaml), its damage law among them (``damage_law``: eq. 2.28 as printed by default), with the run's own
-critical stress sigma_cr, onset criterion and, for a law with a fracture energy, G_c, and the concentration ramp they
-make."""
+"""The settings of one delamination run (paper section 2.7) and the choices they name.
+
+* :class:`Settings`: the ``delamination`` configuration section (config/schema.yaml), its damage law among them
+  (``damage_law``: eq. 2.28 as printed by default), with the run's own critical stress sigma_cr, onset criterion and,
+  for a law with a fracture energy, G_c, and the concentration ramp they make.
+* **Onset criteria** (:data:`CRITERIA`, ``delamination.criteria``, wildcard ``{criterion}``): the radial Cauchy stress
+  a damage candidate compares with sigma_cr in eq. (2.28).
+* **Candidate rules** (:data:`CANDIDATE_RULES`, ``delamination.candidates``): which intact particles the damage law
+  tests against sigma_cr. Every rule starts from the same set, the authors' script's
+  (:meth:`sphgag.studies.delamination.front.Front.candidates`): tissue particles of the media, off the wall surfaces,
+  in a pool's radial band (the reference radii of its seeded sector) and within ``delamination.candidate_window_deg``
+  of the pool's current angular extent. A rule admits a subset of it, pool by pool. The paper compares "the radial
+  stress at the tip of the pool" with sigma_cr (section 2.7): the particles in contact with the pool (``contact``);
+  the authors' script tests the whole window (``window``), so damage can form islands ahead of a pool
+  (docs/physics.md, "Damage candidates").
+
+A criterion and a rule are each a :class:`sphgag.registry.Variant` of its registry. The configuration's schema
+(:func:`sphgag.config.schema`) and the pipeline's wildcards are built from the registries, so a new criterion or rule
+is one function and one entry here.
+"""
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, fields
 
 import numpy as np
 
+from ...engine import measure
+from ...engine.history import ParticleHistory
+from ...engine.model import Evaluation, Model
 from ...physics import damage
-from ..candidates import CANDIDATE_RULES
-from ..onset import CRITERIA
+from ...registry import Registry, Variant
 
 #: the G_c of a run of the damage law with a fracture energy (its wildcard ``gc``: J/m^2) that is no number but the
 #: energy the paper's damage law dissipated in its matched run (the same pool set at the same sigma_cr and criterion)
 MATCHED = "paper"
+
+
+@dataclass(frozen=True)
+class OnsetCriterion(Variant):
+    """``measure(model, ev, history, candidates, settings)``: the radial Cauchy stress (eq. 2.10, current polar
+    frame) at the ``candidates`` that the onset test of eq. (2.28) compares with sigma_cr (``settings``: the run's
+    :class:`sphgag.studies.delamination.settings.Settings`). ``title``: what the measure is; ``paper``: the paper's
+    measure. ``averages``: the measure averages over ``settings.averaging_length_um``, a key the criterion then owns
+    (:meth:`check`: that length at least the coarsest particle spacing it is run at)."""
+
+    name: str
+    title: str
+    measure: Callable[[Model, Evaluation, ParticleHistory, np.ndarray, object], np.ndarray]
+    averages: bool = False
+    paper: bool = False
+
+    @property
+    def keys(self) -> tuple[str, ...]:
+        return ("delamination.averaging_length_um",) if self.averages else ()
+
+    def check(self, config, key: str) -> None:
+        """An averaging criterion averages over more than one particle at the coarsest spacing it is run at (the
+        wall's ``bilayer.dx_um`` and ``delamination.convergence.dx_um``)."""
+        if not self.averages:
+            return
+        de = config["delamination"]
+        coarsest = max([config.get("bilayer", {}).get("dx_um", 0)] + de["convergence"]["dx_um"])
+        if de["averaging_length_um"] < coarsest:
+            raise ValueError(
+                f"delamination.averaging_length_um = {de['averaging_length_um']} is below the coarsest "
+                f"particle spacing ({coarsest:g} um): the average of {self.name} would be a single particle's value"
+            )
+
+
+def particle_stress(model: Model, ev: Evaluation, hist: ParticleHistory, cand: np.ndarray, settings) -> np.ndarray:
+    """The candidate particle's own radial stress (the paper's measure)."""
+    return measure.cauchy_polar(ev)[0][cand]
+
+
+def averaged_stress(model: Model, ev: Evaluation, hist: ParticleHistory, cand: np.ndarray, settings) -> np.ndarray:
+    """The radial stress of the intact pool layers (the media) averaged over a disc of diameter
+    ``settings.averaging_length_um`` around the candidate (:func:`sphgag.engine.measure.averaging_matrix`): the same
+    length at every resolution."""
+    lay = model.layout
+    intact = np.flatnonzero(lay.pool_mask & ~hist.gag)
+    W = measure.averaging_matrix(lay, settings.averaging_length_um, intact, rows=cand)
+    return W @ measure.cauchy_polar(ev)[0]
+
+
+#: the registry of onset criteria, by name (``delamination.criteria``, wildcard ``{criterion}``; the paper's first)
+CRITERIA: Registry[OnsetCriterion] = Registry(
+    "onset criterion",
+    (
+        OnsetCriterion(
+            "particle", "the candidate particle's own radial stress (the paper's)", particle_stress, paper=True
+        ),
+        OnsetCriterion(
+            "averaged",
+            "the intact media's radial stress averaged over a disc of averaging_length_um",
+            averaged_stress,
+            averages=True,
+        ),
+    ),
+)
+
+
+@dataclass(frozen=True)
+class CandidateRule(Variant):
+    """``admits(front, history, pool)``: the particles (a mask over all of them) that may be candidates of pool
+    ``pool`` (an index of ``front.sectors``), within the window of :class:`sphgag.studies.delamination.front.Front`.
+    ``title``: which particles; ``paper``: the rule of the paper's text. A rule owns no key beyond
+    ``delamination.candidates`` (the window, ``delamination.candidate_window_deg``, is every rule's)."""
+
+    name: str
+    title: str
+    admits: Callable[[object, ParticleHistory, int], np.ndarray]
+    paper: bool = False
+
+
+def anywhere(front, hist: ParticleHistory, pool: int) -> np.ndarray:
+    """Every particle of the window (the authors' script)."""
+    return np.ones(hist.n, dtype=bool)
+
+
+def in_contact(front, hist: ParticleHistory, pool: int) -> np.ndarray:
+    """The particles with a GAG particle of the pool (seeded or converted) within the contact distance in the
+    reference configuration (:meth:`sphgag.studies.delamination.front.Front.touching`): the tip of the pool (the
+    paper)."""
+    return front.touching(hist, pool)
+
+
+#: the registry of candidate rules, by name (``delamination.candidates``; the paper's first)
+CANDIDATE_RULES: Registry[CandidateRule] = Registry(
+    "candidate rule",
+    (
+        CandidateRule(
+            "contact", "the particles touching the pool, within the window (the paper's text)", in_contact, paper=True
+        ),
+        CandidateRule("window", "every particle within the window of the pool (the authors' script)", anywhere),
+    ),
+)
 
 
 @dataclass(frozen=True)
@@ -37,7 +157,7 @@ class Settings:
     # damage.DAMAGE_LAWS: the section's law (eq. 2.28 as printed by default), or the fracture-energy runs' law
     damage_law: str = damage.DAMAGE_LAWS.paper.name
     fracture_energy_J_m2: float = np.nan  # G_c of the fracture_energy law
-    # candidates.CANDIDATE_RULES: the particles touching the pool (the paper), or the window
+    # CANDIDATE_RULES: the particles touching the pool (the paper), or the window
     candidates: str = "contact"
 
     def __post_init__(self):
