@@ -11,6 +11,7 @@ from sphgag.physics import materials
 from sphgag.records import state
 from sphgag.records.state import StateMismatch
 from sphgag.studies import artery
+from sphgag.studies.pressure_diameter import bilayer_law, bilayer_tube
 from sphgag.studies.wall_loading import bilayer_pressure_diameter, homeostasis
 
 from .conftest import ROOT
@@ -53,7 +54,7 @@ def test_sph_material_and_semi_analytical_law_agree(ci, layer, active):
     lay = model.layout
     i = int(np.flatnonzero(lay.layer_mask(layer))[0])
     props = model.props(Load(1.0, 0.0, material=(("activation", float(active)), ("prestretch", 1.0))))
-    law = artery.bilayer_law(p, layer, active)
+    law = bilayer_law(p, layer, active)
     c, s = np.cos(lay.theta[i]), np.sin(lay.theta[i])
     Q = np.array([[c, -s], [s, c]])
     for lt in (0.7, 0.95, 1.0, 1.1, 1.3):
@@ -70,7 +71,7 @@ def test_homeostatic_state_carries_the_homeostatic_pressure(ci):
     carried = h.pressures_kPa["reactions"] / MMHG_TO_KPA
     assert carried == pytest.approx(target, rel=0.05)
     assert h.pressures_kPa["hoop_equilibrium"] / MMHG_TO_KPA == pytest.approx(carried, rel=0.01)
-    semi = artery.bilayer_tube(cfg["bilayer"], active=False).pressure(model.layout.inner_radius) / MMHG_TO_KPA
+    semi = bilayer_tube(cfg["bilayer"], active=False).pressure(model.layout.inner_radius) / MMHG_TO_KPA
     assert carried == pytest.approx(semi, rel=0.005)
 
 
@@ -89,7 +90,7 @@ def sweeps(ci):
     cal = dict(cfg["bilayer_calibration"], pressure_points=5)
     out = {}
     for label in ("passive", "active"):
-        tube = artery.bilayer_tube(cfg["bilayer"], active=label == "active")
+        tube = bilayer_tube(cfg["bilayer"], active=label == "active")
         out[label] = bilayer_pressure_diameter(
             model, tube, h.state, cfg["numerics"], cal, active=label == "active", label=label
         )
@@ -185,7 +186,7 @@ def test_a_three_layer_wall_built_from_config_alone_carries_its_exact_tube_press
     h = homeostasis(model, cfg["numerics"], cfg["homeostasis"])
     assert h.state.convergence.residual < cfg["numerics"]["tolerance"]
     carried = h.pressures_kPa["reactions"] / MMHG_TO_KPA
-    exact = artery.bilayer_tube(b, active=False).pressure(lay.inner_radius) / MMHG_TO_KPA
-    two_layer = artery.bilayer_tube(ci_config["bilayer"], active=False).pressure(lay.inner_radius) / MMHG_TO_KPA
+    exact = bilayer_tube(b, active=False).pressure(lay.inner_radius) / MMHG_TO_KPA
+    two_layer = bilayer_tube(ci_config["bilayer"], active=False).pressure(lay.inner_radius) / MMHG_TO_KPA
     assert carried == pytest.approx(exact, rel=0.002)
     assert abs(two_layer / exact - 1.0) > 0.005

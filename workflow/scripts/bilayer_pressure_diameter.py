@@ -4,6 +4,7 @@ from sphgag import jobs
 from sphgag.engine import solver
 from sphgag.records import state
 from sphgag.studies import artery, wall
+from sphgag.studies.pressure_diameter import bilayer_tube
 from sphgag.studies.wall_loading import bilayer_pressure_diameter
 
 with jobs.run(snakemake) as job:  # noqa: F821
@@ -12,7 +13,7 @@ with jobs.run(snakemake) as job:  # noqa: F821
     model = artery.bilayer_model(p, numerics, name=job.name)
     saved = state.load(job.input.homeostatic, job.params.homeostatic_slice)
     homeostatic = solver.State(saved.load, saved.x, model.evaluate(saved.x, saved.load), None)
-    tube = artery.bilayer_tube(p, active=job.params.active)
+    tube = bilayer_tube(p, active=job.params.active)
     res = bilayer_pressure_diameter(
         model, tube, homeostatic, numerics, calibration, active=job.params.active, label=label
     )

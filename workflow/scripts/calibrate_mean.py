@@ -2,12 +2,12 @@
 
 from sphgag import jobs
 from sphgag.studies import artery, wall
-from sphgag.studies.pressure_diameter import mean_pressure_diameter
+from sphgag.studies.pressure_diameter import mean_pressure_diameter, mean_thick_wall
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p, numerics, calibration = dict(job.params.mean), dict(job.params.numerics), dict(job.params.calibration)
     model = artery.mean_model(p, numerics, name=job.name)
-    result = mean_pressure_diameter(model, artery.mean_thick_wall(p), p, numerics, calibration)
+    result = mean_pressure_diameter(model, mean_thick_wall(p), p, numerics, calibration)
     result.states.to_csv(job.output.states, index=False)
     result.analytic.to_csv(job.output.exact, index=False)
     result.transmural.to_csv(job.output.transmural, index=False)

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -17,7 +18,7 @@ from ..engine.loading import Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
 from ..options import Options
-from ..physics import analytic, materials
+from ..physics import materials
 
 
 @dataclass(frozen=True)
@@ -94,13 +95,6 @@ def mean_model(p: dict, numerics: Numerics, name: str = "mean") -> Model:
         layout.n, p["shear_modulus_kPa"], p["lame_lambda_kPa"], mean_fibre_families(p), p["hourglass_modulus_kPa"]
     )
     return Model(name, layout, nb, props, **numerics.model_options())
-
-
-def mean_thick_wall(p: dict) -> analytic.ThickWallTube:
-    """Exact incompressible thick-walled tube for the same strain energy (eq. 2.18)."""
-    families = tuple(analytic.Family(1.0, a, c1, c2) for a, c1, c2 in mean_fibre_families(p))
-    law = analytic.Mixture(p["shear_modulus_kPa"], families)
-    return analytic.ThickWallTube.single(law, p["inner_radius_um"], p["outer_radius_um"], p["axial_stretch"])
 
 
 # ---------------------------------------------------------------------------
@@ -309,8 +303,22 @@ def has_smc(p: Bilayer | dict, layer: str) -> bool:
     return "smc" in Bilayer.of(p).mass_fractions[layer]
 
 
-def bilayer_families(p: Bilayer | dict, layer: str):
-    """Fibre families of one layer as :class:`analytic.Family` (eqs. 2.22-2.23, Table 2).
+class FibreFamily(NamedTuple):
+    """A fibre family of eqs. (2.22-2.23): mass fraction ``phi``, angle ``alpha_deg`` from the axial direction,
+    constants ``(c1, c2)`` in tension and ``(c1m, c2m)`` in compression (None: the tension constants), deposition
+    stretch ``prestretch`` (the fields of :class:`sphgag.physics.analytic.Family`, in its order)."""
+
+    phi: float
+    alpha_deg: float
+    c1: float
+    c2: float
+    c1m: float | None = None
+    c2m: float | None = None
+    prestretch: float = 1.0
+
+
+def bilayer_families(p: Bilayer | dict, layer: str) -> tuple[FibreFamily, ...]:
+    """Fibre families of one layer (eqs. 2.22-2.23, Table 2).
 
     A layer with an ``smc`` mass fraction (the media) has SMC + circumferential collagen (phi_M^s, 90 deg, SMC
     constants, pre-stretch G_M^2); a layer with a ``circumferential`` orientation (the adventitia) has circumferential
@@ -323,12 +331,12 @@ def bilayer_families(p: Bilayer | dict, layer: str):
     a0 = col.angle_deg
 
     def collagen(phi, alpha):
-        return analytic.Family(phi, alpha, col.c1_kPa, col.c2, col.c1_compression_kPa, col.c2_compression, pre.collagen)
+        return FibreFamily(phi, alpha, col.c1_kPa, col.c2, col.c1_compression_kPa, col.c2_compression, pre.collagen)
 
     fams = []
     if "smc" in frac:
         fams.append(
-            analytic.Family(frac["smc"], 90.0, smc.c1_kPa, smc.c2, smc.c1_compression_kPa, smc.c2_compression, pre.smc)
+            FibreFamily(frac["smc"], 90.0, smc.c1_kPa, smc.c2, smc.c1_compression_kPa, smc.c2_compression, pre.smc)
         )
     if "circumferential" in beta:
         fams.append(collagen(frac["collagen"] * beta["circumferential"], 90.0))
@@ -344,28 +352,6 @@ def elastin_prestretch(p: Bilayer | dict, fraction: float = 1.0):
     gt = 1.0 + fraction * (pre.elastin_circumferential - 1.0)
     gz = 1.0 + fraction * (pre.elastin_axial - 1.0)
     return 1.0 / (gt * gz), gt, gz
-
-
-def bilayer_law(p: Bilayer | dict, layer: str, active: bool) -> analytic.Mixture:
-    """Incompressible constituents of one layer at full pre-stretch, for the semi-analytical tube."""
-    p = Bilayer.of(p)
-    gr, gt, _ = elastin_prestretch(p)
-    act = p.active
-    return analytic.Mixture(
-        mu=p.mass_fractions[layer]["elastin"] * p.elastin_shear_modulus_kPa,
-        families=bilayer_families(p, layer),
-        Gr=gr,
-        Gt=gt,
-        tmax=act.max_stress_kPa if (active and has_smc(p, layer)) else 0.0,
-        lmax=act.stretch_max,
-        lmin=act.stretch_min,
-    )
-
-
-def bilayer_tube(p: Bilayer | dict, active: bool) -> analytic.ThickWallTube:
-    """Semi-analytical incompressible layered tube (same layers, constituents and pre-stretches)."""
-    p = Bilayer.of(p)
-    return analytic.ThickWallTube([(a, b, bilayer_law(p, name, active), name) for name, a, b in p.bands()], lz=1.0)
 
 
 class BilayerMaterial:

@@ -2,6 +2,10 @@
 reference, ramp the axial stretch at zero pressure, then pressurise at fixed axial stretch, recording the
 pressure-diameter response, the mean circumferential stress and stretch (eqs. 2.16-2.17) and transmural stress
 profiles, each beside the exact thick-walled solution; and the rows and profiles every wall's states are recorded as.
+
+The exact tubes the walls are compared with (:mod:`sphgag.physics.analytic`): the mean wall's
+(:func:`mean_thick_wall`) and the bi-layered wall's (:func:`bilayer_tube`), with the same constituents and
+pre-stretches, incompressible. The SPH models (:mod:`sphgag.studies.artery`) do not import them.
 """
 
 from __future__ import annotations
@@ -18,6 +22,7 @@ from ..engine.model import Model
 from ..engine.numerics import Numerics
 from ..options import Options, file_name_problems
 from ..physics import analytic
+from . import artery
 
 log = logging.getLogger("sphgag")
 
@@ -189,3 +194,32 @@ def mean_pressure_diameter(
     )
     curve = exact_curve(tube, np.linspace(0.0, calibration["max_pressure_mmHg"], 201), R_in, H)
     return PressureDiameter(table, profiles, curve)
+
+
+def mean_thick_wall(p: dict) -> analytic.ThickWallTube:
+    """Exact incompressible thick-walled tube for the same strain energy (eq. 2.18)."""
+    families = tuple(analytic.Family(1.0, a, c1, c2) for a, c1, c2 in artery.mean_fibre_families(p))
+    law = analytic.Mixture(p["shear_modulus_kPa"], families)
+    return analytic.ThickWallTube.single(law, p["inner_radius_um"], p["outer_radius_um"], p["axial_stretch"])
+
+
+def bilayer_law(p: artery.Bilayer | dict, layer: str, active: bool) -> analytic.Mixture:
+    """Incompressible constituents of one layer at full pre-stretch, for the semi-analytical tube."""
+    p = artery.Bilayer.of(p)
+    gr, gt, _ = artery.elastin_prestretch(p)
+    act = p.active
+    return analytic.Mixture(
+        mu=p.mass_fractions[layer]["elastin"] * p.elastin_shear_modulus_kPa,
+        families=tuple(analytic.Family(*f) for f in artery.bilayer_families(p, layer)),
+        Gr=gr,
+        Gt=gt,
+        tmax=act.max_stress_kPa if (active and artery.has_smc(p, layer)) else 0.0,
+        lmax=act.stretch_max,
+        lmin=act.stretch_min,
+    )
+
+
+def bilayer_tube(p: artery.Bilayer | dict, active: bool) -> analytic.ThickWallTube:
+    """Semi-analytical incompressible layered tube (same layers, constituents and pre-stretches)."""
+    p = artery.Bilayer.of(p)
+    return analytic.ThickWallTube([(a, b, bilayer_law(p, name, active), name) for name, a, b in p.bands()], lz=1.0)

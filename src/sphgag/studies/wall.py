@@ -19,8 +19,7 @@ import pandas as pd
 from ..engine import measure
 from ..engine.loading import MMHG_TO_KPA
 from ..engine.model import Model
-from . import artery
-from .pressure_diameter import PressureDiameter
+from .pressure_diameter import PressureDiameter, bilayer_tube
 from .wall_loading import Homeostasis
 
 log = logging.getLogger("sphgag")
@@ -69,7 +68,7 @@ def homeostasis_tables(model: Model, bilayer: dict, walls: dict[str, Homeostasis
     each layer's hoop stress and its variation), the ring profiles and the layers' statistics; logged."""
     rows, profiles, layers = [], [], []
     for label, h in walls.items():
-        tube = artery.bilayer_tube(bilayer, active=label == "active")
+        tube = bilayer_tube(bilayer, active=label == "active")
         semi = tube.pressure(model.layout.inner_radius) / MMHG_TO_KPA
         row = dict(
             model=label,

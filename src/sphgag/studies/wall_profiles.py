@@ -28,6 +28,7 @@ from ..engine.numerics import Numerics
 from ..options import Options
 from . import artery
 from .inclusion import observed_order
+from .pressure_diameter import bilayer_tube, mean_thick_wall
 from .wall_loading import activated
 from .wall_loading import homeostasis as homeostasis_
 
@@ -82,7 +83,7 @@ def _pressure_loads(pressures_mmHg, start_mmHg: float, material=()) -> list[list
 def mean_states(p: dict, numerics: dict, calibration: dict, pressures_mmHg) -> list:
     """``[(wall, model, tube, state)]``: the mean-behaviour wall ``p`` at ``pressures_mmHg`` by figure 2a's path (the
     axial stretch in ``calibration["axial_stretch_steps"]``, then the pressure in steps of at most 50 mmHg)."""
-    model, tube = artery.mean_model(p, numerics), artery.mean_thick_wall(p)
+    model, tube = artery.mean_model(p, numerics), mean_thick_wall(p)
     lz = p["axial_stretch"]
     steps = calibration["axial_stretch_steps"]
     ramp = np.arange(50.0, max(pressures_mmHg), 50.0)
@@ -106,7 +107,7 @@ def bilayer_states(p: dict, numerics: dict, homeostasis: dict, cal: dict, walls,
         states = [start]
         for loads in _pressure_loads(pressures_mmHg, start.load.pressure_mmHg, start.load.material):
             states += path_solver.follow_path(start.x, start.load, loads, run=f"{model.name} {wall}")
-        tube = artery.bilayer_tube(p, active=wall == "active")
+        tube = bilayer_tube(p, active=wall == "active")
         out += [(wall, model, tube, s) for s in states if _pressure(s) in wanted]
     return out
 
