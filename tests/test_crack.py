@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from sphgag.physics import donnan, fracture
+from sphgag.physics import damage, donnan
 from sphgag.studies import crack, inclusion
 
 NUMERICS = dict(
@@ -75,7 +75,7 @@ def test_a_band_column_damages_as_one_element_and_the_tip_is_the_end_of_the_brok
 
 def test_the_cohesive_length_and_griffith_pressure_of_the_problem():
     pr = problem()
-    assert pr.modulus == pytest.approx(fracture.plane_strain_modulus(MAT.mu, MAT.poisson_ratio))
+    assert pr.modulus == pytest.approx(damage.plane_strain_modulus(MAT.mu, MAT.poisson_ratio))
     assert pr.cohesive_length == pytest.approx(pr.modulus * 0.36 / 16.0)
     assert pr.griffith(20.0) == pytest.approx(np.sqrt(pr.modulus * 0.36 / (np.pi * 20.0)))
     load = crack.load_at(pr, 0.8)
@@ -88,5 +88,5 @@ def test_a_coarse_slit_opens_as_sneddons_crack_before_it_grows():
     pr = problem(rows=1)  # a slit 2 dx = 4 um thick: b / a = 0.1
     p = 0.5 * pr.griffith(20.0)
     g = crack.grow(pr, NUMERICS, [p], growth_cells=2)
-    assert g.opening_area == pytest.approx(fracture.opening_area(20.0, p, pr.modulus), rel=0.05)
+    assert g.opening_area == pytest.approx(damage.opening_area(20.0, p, pr.modulus), rel=0.05)
     assert g.max_residual < 1e-4 and np.isnan(g.critical_pressure)  # no growth at half Griffith's pressure

@@ -1,4 +1,4 @@
-"""The energy form of the hourglass control (sphgag.engine.hourglass): the gradient of its energy, symmetric and
+"""The energy form of the hourglass control (sphgag.engine.forces): the gradient of its energy, symmetric and
 positive semi-definite, silent for affine maps and rigid rotations, and an exact Jacobian with a GAG interface."""
 
 import dataclasses

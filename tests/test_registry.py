@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from sphgag import config
-from sphgag.engine import hourglass, kernel, measure
+from sphgag.engine import forces, kernel, measure
 from sphgag.engine.loading import Load
 from sphgag.engine.model import Model
 from sphgag.physics import damage, donnan
@@ -29,7 +29,7 @@ REGISTRIES = {
     "onset criterion": CRITERIA,
     "candidate rule": CANDIDATE_RULES,
     "pool model": POOL_MODELS,
-    "hourglass form": hourglass.HOURGLASS_FORMS,
+    "hourglass form": forces.HOURGLASS_FORMS,
     "pool model of the annulus": annulus.ANNULUS_POOL_MODELS,
     "stress recovery": measure.RECOVERIES,
     "sensitivity method": sensitivity.SENSITIVITY_METHODS,
@@ -78,7 +78,7 @@ def test_the_names_the_pipeline_and_the_figures_know_are_unchanged():
         "contact",
         "window",
     )
-    assert tuple(POOL_MODELS) == ("particles", "cavity") and tuple(hourglass.HOURGLASS_FORMS) == ("paper", "energy")
+    assert tuple(POOL_MODELS) == ("particles", "cavity") and tuple(forces.HOURGLASS_FORMS) == ("paper", "energy")
     assert tuple(annulus.ANNULUS_POOL_MODELS) == ("hole", "particles")
     assert tuple(measure.RECOVERIES) == ("paper", "volumetric", "traction")
     assert POOL_MODELS["cavity"].laws == ("prescribed",) and POOL_MODELS["cavity"].hourglass
@@ -87,7 +87,7 @@ def test_the_names_the_pipeline_and_the_figures_know_are_unchanged():
 def test_the_schema_enumerates_and_titles_every_registry(ci_config):
     s = config.schema(SCHEMA)["properties"]
     hg = s["numerics"]["properties"]["hourglass"]
-    assert hg["enum"] == ["paper", "energy"] and hourglass.HOURGLASS_FORMS["energy"].title in hg["description"]
+    assert hg["enum"] == ["paper", "energy"] and forces.HOURGLASS_FORMS["energy"].title in hg["description"]
     reading = s["numerics"]["properties"]["stress_recovery"]
     assert reading["enum"] == list(measure.RECOVERIES)
     assert measure.RECOVERIES["traction"].title in reading["description"]
@@ -150,7 +150,7 @@ def configured(ci_config, module, name):
     if module.REGISTRY is POOL_MODELS:
         cfg["swelling"]["variant_pool_models"] = ["cavity", name]
         cfg["verification"]["circular_pool"]["pool_models"] = ["particles", name]
-    elif module.REGISTRY is hourglass.HOURGLASS_FORMS:
+    elif module.REGISTRY is forces.HOURGLASS_FORMS:
         cfg["numerics"]["hourglass"] = name
     elif module.REGISTRY is donnan.CHARGE_LAWS:
         cfg["gag"]["charge_laws"] = [*cfg["gag"]["charge_laws"], name]

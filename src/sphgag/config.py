@@ -21,7 +21,7 @@ from pathlib import Path
 import jsonschema
 import yaml
 
-from .engine import hourglass, loading, measure
+from .engine import forces, loading, measure
 from .engine.grading import Grading
 from .engine.numerics import Numerics
 from .options import key_text
@@ -189,7 +189,7 @@ def _registries() -> dict:
     their key (a list of names, one name, or a mapping's keys): a new variant is an entry of its registry, and the
     configuration accepts it with no edit of the schema."""
     return {
-        ("numerics", "hourglass"): hourglass.HOURGLASS_FORMS,
+        ("numerics", "hourglass"): forces.HOURGLASS_FORMS,
         ("numerics", "stress_recovery"): measure.RECOVERIES,
         ("numerics", "lumen_load"): loading.LUMEN_LOADS,
         ("gag", "charge_laws"): donnan.CHARGE_LAWS,

@@ -4,7 +4,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from sphgag.engine.hourglass import HOURGLASS_FORMS, HourglassForm
+from sphgag.engine.forces import HOURGLASS_FORMS, HourglassForm
 
 REGISTRY = HOURGLASS_FORMS
 

@@ -8,7 +8,7 @@ import re
 from sphgag import plugins
 from sphgag.jobs import kinds as JOBS
 from sphgag.jobs import text
-from sphgag.engine.hourglass import HOURGLASS_FORMS
+from sphgag.engine.forces import HOURGLASS_FORMS
 from sphgag.physics.damage import DAMAGE_LAWS, FractureEnergyLaw
 from sphgag.physics.donnan import CHARGE_LAWS
 from sphgag.physics.donnan import PAPER_LAW

@@ -1,7 +1,7 @@
 # Numerical variants of the study (target variants): figure 4's first pool and figure 5's pool under each form of the
 # hourglass control, eq. (2.14) as printed beside its energy form (the default), each from a wall of its own.
 
-from sphgag.engine.hourglass import HOURGLASS_FORMS
+from sphgag.engine.forces import HOURGLASS_FORMS
 
 
 rule variant:

@@ -5,7 +5,7 @@ an independent route to the same equilibrium (:func:`relax`, the tests check tha
 the authors' fixed-step procedure (:mod:`sphgag.studies.paper_procedure`). The steps run in one Numba loop
 (:func:`leapfrog`) over the same forces as the quasi-static solver: the elastic and hourglass forces of
 :func:`sphgag.engine.forces.forces_and_stresses`, the energy hourglass form's ``-K (x - X)``
-(:mod:`sphgag.engine.hourglass`) and the lumen pressure (:func:`sphgag.engine.loading.pressure_forces`).
+(:mod:`sphgag.engine.forces`) and the lumen pressure (:func:`sphgag.engine.loading.pressure_forces`).
 
 Masses are scaled (``m_i = density * V_i``, a pseudo-density, not physical inertia); the viscous first
 Piola-Kirchhoff stress of section 2.3, ``P_visc = 2 eta J d F^-T`` with ``d = sym(F_dot F^-1)`` and

@@ -16,7 +16,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from ..physics import materials
-from . import forces, hourglass, kernel, measure
+from . import forces, kernel, measure
 from .geometry import Layout
 from .kernel import Neighbours
 from .loading import LUMEN_LOADS, Load, prescribed_inner_positions, pressure_stiffness_blocks
@@ -96,8 +96,8 @@ class Model:
     props : (N, NPROP) property table (:mod:`sphgag.physics.materials`), or a callable
         ``props(load) -> table`` for materials that change along a path.
     hourglass_alpha : alpha of eq. (2.14); E comes from the property table.
-    hourglass : the name of the hourglass control's form (the registry :data:`sphgag.engine.hourglass.HOURGLASS_FORMS`):
-        ``paper`` (eq. 2.14 as printed) or ``energy`` (its energy form, :mod:`sphgag.engine.hourglass`).
+    hourglass : the name of the hourglass control's form (the registry :data:`sphgag.engine.forces.HOURGLASS_FORMS`):
+        ``paper`` (eq. 2.14 as printed) or ``energy`` (its energy form, :mod:`sphgag.engine.forces`).
     stress_recovery : the name of the stress its evaluations are read with (the registry
         :data:`sphgag.engine.measure.RECOVERIES`; ``paper``: the kernel stress of eq. 2.10). The forces do not
         depend on it.
@@ -126,7 +126,7 @@ class Model:
     _cache: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     def __post_init__(self):
-        hourglass.HOURGLASS_FORMS.lookup(self.hourglass)
+        forces.HOURGLASS_FORMS.lookup(self.hourglass)
         measure.RECOVERIES.lookup(self.stress_recovery)
         self._lumen = LUMEN_LOADS.lookup(self.lumen_load)
         self.cth = np.cos(self.layout.theta)
@@ -185,7 +185,7 @@ class Model:
         nb_elastic = self.nb
         if self.cavities:  # a free surface at every cavity: each material's own stencil for F too
             nb_elastic = replace(self.nb, a=ah, s=sh)
-        hgc, stiffness = hourglass.HOURGLASS_FORMS[self.hourglass].contribute(self, ah, sh, hgc)
+        hgc, stiffness = forces.HOURGLASS_FORMS[self.hourglass].contribute(self, ah, sh, hgc)
         pairs = forces.PairData.pack(nb_elastic, V, hgc, ah)
         self._cache.update(
             nb_elastic=nb_elastic,
@@ -205,7 +205,7 @@ class Model:
         return K
 
     def hourglass_forces(self, x: np.ndarray, load: Load) -> np.ndarray | None:
-        """``-K (x - X)``: the forces of the ``energy`` hourglass form (:mod:`sphgag.engine.hourglass`); None under
+        """``-K (x - X)``: the forces of the ``energy`` hourglass form (:mod:`sphgag.engine.forces`); None under
         eq. (2.14), whose forces are part of the elastic kernel's."""
         self.material(load)
         K = self._cache["hg_matrix"]
@@ -214,7 +214,7 @@ class Model:
         return -(K @ (x - self.layout.X).ravel()).reshape(-1, 2)
 
     def hourglass_matrix(self, load: Load) -> sp.csr_matrix | None:
-        """``K``, the stiffness of the ``energy`` hourglass form for ``load`` (:mod:`sphgag.engine.hourglass`; its
+        """``K``, the stiffness of the ``energy`` hourglass form for ``load`` (:mod:`sphgag.engine.forces`; its
         forces are ``-K (x - X)``, its energy ``1/2 u K u``), None under eq. (2.14)."""
         self.material(load)
         return self._cache["hg_matrix"]

@@ -12,7 +12,7 @@ from .solver import PathOptions, Solver
 class Numerics(Options):
     """``kernel_support_factor``: the kernel's support radius over the particle spacing (eq. 2.5);
     ``hourglass_alpha``: the hourglass penalty's alpha (eq. 2.14); ``hourglass``: its form
-    (:data:`sphgag.engine.hourglass.HOURGLASS_FORMS`: ``paper``, eq. 2.14 as printed, or ``energy``, its energy form);
+    (:data:`sphgag.engine.forces.HOURGLASS_FORMS`: ``paper``, eq. 2.14 as printed, or ``energy``, its energy form);
     ``tolerance``: the relative residual of a
     converged state; ``max_newton_iterations`` and ``max_bisections``: Newton's method per load step and the halvings
     of a step; ``reuse_factorisation``: chord steps with the last factorisation before refactorising;

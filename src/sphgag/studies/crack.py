@@ -2,7 +2,7 @@
 
 A pool that splits the media is a crack whose faces carry the swelling pressure, so the
 fracture-energy law (:class:`sphgag.physics.damage.FractureEnergyLaw`) is verified on the
-closed-form problem closest to it (:mod:`sphgag.physics.fracture`): a straight crack of
+closed-form problem closest to it (:mod:`sphgag.physics.damage`): a straight crack of
 half-length ``a`` in an infinite plane-strain block of the elastin matrix (the
 neo-Hookean law of eq. 2.21 without pre-stretch or fibres, as :mod:`sphgag.studies.inclusion`),
 its faces loaded by a pressure ``p``, in the linear regime:
@@ -49,7 +49,7 @@ from ..engine.loading import Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
 from ..options import Options
-from ..physics import damage, donnan, fracture, materials
+from ..physics import damage, donnan, materials
 from ..physics.donnan import PAPER_LAW
 from .delamination.front import intact_energy
 from .inclusion import ExactBoundary, Materials
@@ -174,8 +174,8 @@ class Problem:
 
     @property
     def modulus(self) -> float:
-        """``E' = 2 mu / (1 - nu)`` of the linearised matrix (:func:`sphgag.physics.fracture.plane_strain_modulus`)."""
-        return float(fracture.plane_strain_modulus(self.mat.mu, self.mat.poisson_ratio))
+        """``E' = 2 mu / (1 - nu)`` of the linearised matrix (:func:`sphgag.physics.damage.plane_strain_modulus`)."""
+        return float(damage.plane_strain_modulus(self.mat.mu, self.mat.poisson_ratio))
 
     @property
     def law(self) -> damage.FractureEnergyLaw:
@@ -183,11 +183,11 @@ class Problem:
 
     @property
     def cohesive_length(self) -> float:
-        gc = self.fracture_energy_J_m2 * fracture.J_M2
-        return float(fracture.cohesive_length(self.modulus, gc, self.critical_stress_kPa))
+        gc = self.fracture_energy_J_m2 * damage.J_M2
+        return float(damage.cohesive_length(self.modulus, gc, self.critical_stress_kPa))
 
     def griffith(self, a: float) -> float:
-        return float(fracture.griffith_pressure(a, self.fracture_energy_J_m2 * fracture.J_M2, self.modulus))
+        return float(damage.griffith_pressure(a, self.fracture_energy_J_m2 * damage.J_M2, self.modulus))
 
 
 def load_at(problem: Problem, pressure: float, transition: float | None = None) -> Load:
@@ -317,7 +317,7 @@ def energy_per_area(growth: Growth) -> float:
     P = np.array([row for row in growth.passes if row[1] > 0.0])
     if len(P) < 2 or np.ptp(P[:, 1]) <= 0.0:
         return np.nan
-    return 2.0 * float(np.polyfit(P[:, 1], P[:, 2], 1)[0]) / fracture.J_M2
+    return 2.0 * float(np.polyfit(P[:, 1], P[:, 2], 1)[0]) / damage.J_M2
 
 
 def study(half_length: float, vc: dict, matrix: dict, gag: dict, numerics: Numerics, log=None) -> pd.DataFrame:
@@ -354,7 +354,7 @@ def study(half_length: float, vc: dict, matrix: dict, gag: dict, numerics: Numer
         steps = np.arange(vc["first_pressure"], vc["last_pressure"] + 1e-9, vc["pressure_step"])
         name = f"crack_a{half_length:g}_dx{dx:g}"
         g = grow(problem, numerics, pc * steps, vc["growth_cells"], log=log, name=name)
-        sneddon = float(fracture.opening_area(a, g.sneddon_pressure, problem.modulus))
+        sneddon = float(damage.opening_area(a, g.sneddon_pressure, problem.modulus))
         energy = energy_per_area(g)
         row = dict(
             dx_um=float(dx),

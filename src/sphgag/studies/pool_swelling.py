@@ -255,7 +255,7 @@ class CavityPool(PoolModel):
     """The pool as a pressurised cavity (:mod:`sphgag.engine.pool_cavity`; our deviation): its lining carries the
     prescribed Pi(c), its contents swell uniformly, so it carries only the laws that do not conserve the fixed charge
     (a cavity carries one pressure, whatever its J). Once converted, its wall is solved with the hourglass form
-    ``hourglass`` (:data:`sphgag.engine.hourglass.HOURGLASS_FORMS`), whatever ``numerics.hourglass`` says: the form as
+    ``hourglass`` (:data:`sphgag.engine.forces.HOURGLASS_FORMS`), whatever ``numerics.hourglass`` says: the form as
     printed loses the path next to the swollen cavity (docs/physics.md). The override is logged where it changes the
     form."""
 

@@ -36,7 +36,7 @@ def hourglass_comparison(
     """(a) figure 4's first pool: the tip radial stress and (b) the pool's volume ratio against the GAG concentration;
     (c) figure 5's pool: the delaminated length and (d) the tip radial stress against pseudo-time; a line per form,
     every state converged; a cross marks each run's last equilibrium, where it stopped (``stop_kind`` in the note).
-    ``forms``: each form's legend label by its name (:data:`sphgag.engine.hourglass.HOURGLASS_FORMS`, as the rule passes
+    ``forms``: each form's legend label by its name (:data:`sphgag.engine.forces.HOURGLASS_FORMS`, as the rule passes
     them), in the order of the lines."""
     _style()
     colours = dict(zip(forms, distinct_colours(len(forms))))

@@ -10,7 +10,7 @@ import pandas as pd
 import seaborn as sns
 from matplotlib.ticker import FormatStrFormatter, LogLocator, NullFormatter
 
-from ..physics import fracture
+from ..physics import damage
 from ..studies import annulus
 from ..studies.inclusion import TIP_PARTICLES, observed_order
 from .style import _style, palette, style_legend
@@ -192,18 +192,18 @@ def verification_crack(table: pd.DataFrame, modulus: float, fracture_energy_J_m2
     fig, axes = plt.subplots(1, 3, figsize=(11.5, 3.5), layout="constrained")
     spacings = sorted(table.dx_um.unique(), reverse=True)
     colours = dict(zip(spacings, sns.color_palette("viridis", len(spacings))))
-    gc = fracture_energy_J_m2 * fracture.J_M2
+    gc = fracture_energy_J_m2 * damage.J_M2
     a = np.linspace(0.8 * table.half_length_um.min(), 1.2 * table.half_length_um.max(), 200)
     ax = axes[0]
-    ax.plot(a, fracture.griffith_pressure(a, gc, modulus), "k-", lw=1.2, label="Griffith")
-    ax.plot(a, fracture.dugdale_pressure(a, gc, modulus, critical_stress), "k:", lw=1.0, label="Dugdale")
+    ax.plot(a, damage.griffith_pressure(a, gc, modulus), "k-", lw=1.2, label="Griffith")
+    ax.plot(a, damage.dugdale_pressure(a, gc, modulus, critical_stress), "k:", lw=1.0, label="Dugdale")
     for dx in spacings:
         t = table[table.dx_um == dx]
         ax.plot(t.half_length_um, t.critical_pressure_kPa, "o", color=colours[dx], ms=5, label=f"SPH, dx = {dx:g} um")
     ax.set(xlabel="crack half-length a [um]", ylabel="face pressure at growth [kPa]", title="(a) onset of growth")
     ax.legend(frameon=False, fontsize=6.5)
     ax = axes[1]
-    ax.plot(a, fracture.opening_area(a, 1.0, modulus), "k-", lw=1.2, label="Sneddon")
+    ax.plot(a, damage.opening_area(a, 1.0, modulus), "k-", lw=1.2, label="Sneddon")
     for dx in spacings:
         t = table[table.dx_um == dx]
         ax.plot(

@@ -2,7 +2,7 @@
 ``results/delamination/growth.csv`` per damage-and-relax pass (:class:`Pass`), a row of ``summary.csv`` per run
 (:func:`run_summary`) and the statistics it holds (growth rates, outcome), the run's labels (:func:`labelled`), what the
 pools do at each level of the ramp (:func:`level_classes`, the delamination map) and the pool as a pressurised crack
-(:func:`griffith`, the closed form of :func:`sphgag.physics.fracture.griffith_pool`).
+(:func:`griffith`, the closed form of :func:`sphgag.physics.damage.griffith_pool`).
 
 **Dissipated energy**: raising ``D`` at fixed deformation releases ``dD W_0 V`` (``W_0``
 the intact strain energy density of eq. 2.23, ``V`` the particle's reference area), per
@@ -19,7 +19,7 @@ import numpy as np
 import pandas as pd
 
 from ...engine.geometry import Sector
-from ...physics import fracture, materials
+from ...physics import damage, materials
 from .front import Islands
 from .settings import Settings
 
@@ -308,16 +308,16 @@ def labelled(result: Result, case: str, settings: Settings, dx: float) -> tuple[
 
 
 def griffith(sectors: list[Sector], fracture_energy_J_m2: float, modulus: float, gag: dict, concentration: float):
-    """The closed form of a pool as a pressurised straight crack (:func:`sphgag.physics.fracture.griffith_pool`), in
+    """The closed form of a pool as a pressurised straight crack (:func:`sphgag.physics.damage.griffith_pool`), in
     the media's plane-strain modulus ``E'`` [kPa], as summary columns: the concentration at which Griffith's criterion
     makes the longest seeded pool (half-length half its arc) propagate, and the half-length it needs at
     ``concentration``, both under Pi(c) of eqs. (2.25-2.26) (the prescribed law; the conserved law's Pi is lower where
     the pool has swollen)."""
     a = max(0.5 * np.deg2rad(s.angular_extent_deg) * s.centre_radius for s in sectors)
     gag = materials.Gag.of(gag)
-    pool = fracture.griffith_pool(
+    pool = damage.griffith_pool(
         a,
-        fracture_energy_J_m2 * fracture.J_M2,
+        fracture_energy_J_m2 * damage.J_M2,
         modulus,
         concentration,
         gag.bath_concentration_mEq_l,
