@@ -1,4 +1,4 @@
-"""Graded spacing around GAG pools (sphgag.engine.grading): the layout, the per-particle kernel support, and the
+"""Graded spacing around GAG pools (sphgag.engine.geometry): the layout, the per-particle kernel support, and the
 discretisation on it (an affine map is exact across the transitions; the wall carries the uniform layout's
 pressure-diameter curve)."""
 
@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 import scipy.sparse.linalg as spla
 
-from sphgag.engine import geometry, grading, kernel
+from sphgag.engine import geometry, kernel
 from sphgag.engine.loading import Load
 from sphgag.engine.model import Model
 from sphgag.physics import materials
@@ -14,11 +14,11 @@ from sphgag.physics import materials
 WALL = (646.8, 655.5, 670.5, 675.2, 687.0)
 NAMES = ("media", "media", "media", "adventitia")
 POOL = geometry.Sector(663.0, 51.5, 15.0, 3.0)
-GRADED = grading.Grading(pool=0.5, corners=1 / 6, reach_um=30.0, column_cells=3.0)
+GRADED = geometry.Grading(pool=0.5, corners=1 / 6, reach_um=30.0, column_cells=3.0)
 
 
 def graded_layout(dx=3.0, g=GRADED, pools=(POOL,)):
-    edges, profiles = grading.columns(grading.Field(pools, dx, g))
+    edges, profiles = geometry.columns(geometry.Field(pools, dx, g))
     return geometry.quarter_annulus(WALL, dx, layer_names=NAMES, pool_layers=("media",), columns=(edges, profiles))
 
 
@@ -55,7 +55,7 @@ def test_the_spacing_is_finest_at_the_corners_and_bounded(layout):
 
 def test_uniform_grading_is_the_uniform_layout():
     """Without refinement the graded layout is the uniform one, cut at the pool's ends."""
-    lay = graded_layout(g=grading.Grading(pool=1.0, corners=1.0))
+    lay = graded_layout(g=geometry.Grading(pool=1.0, corners=1.0))
     uniform = geometry.quarter_annulus(WALL, 3.0, layer_names=NAMES)
     assert abs(lay.n - uniform.n) <= 2 * len(uniform.ring_radius)
     assert np.all(lay.spacing == 3.0)

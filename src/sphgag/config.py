@@ -22,7 +22,7 @@ import jsonschema
 import yaml
 
 from .engine import forces, loading, measure
-from .engine.grading import Grading
+from .engine.geometry import Grading
 from .engine.numerics import Numerics
 from .options import key_text
 from .physics import damage, donnan, volumetric

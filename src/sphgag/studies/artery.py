@@ -13,7 +13,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ..engine import geometry, grading, history, kernel
+from ..engine import geometry, history, kernel
 from ..engine.loading import Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
@@ -472,11 +472,11 @@ def pool_sector(case: dict) -> geometry.Sector:
     )
 
 
-def bilayer_layout(p: Bilayer | dict, pools=(), graded: grading.Grading | dict | None = None) -> geometry.Layout:
+def bilayer_layout(p: Bilayer | dict, pools=(), graded: geometry.Grading | dict | None = None) -> geometry.Layout:
     """Particles of the layered wall: one band per entry of ``layers``, each split at the ``aligned_radii_um`` inside
     it (cell boundaries: the radial edges of GAG pools). With ``pools`` (:class:`geometry.Sector`), their angular ends
     are cell boundaries and the spacing is graded around them (finest at their corners) by ``graded``
-    (:class:`sphgag.engine.grading.Grading`); without it, or with its uniform grading, the layout is the wall's own
+    (:class:`sphgag.engine.geometry.Grading`); without it, or with its uniform grading, the layout is the wall's own
     uniform one (a pool is the particles whose centres lie in its sector)."""
     p = Bilayer.of(p)
     radii, names = [p.inner_radius_um], []
@@ -485,8 +485,8 @@ def bilayer_layout(p: Bilayer | dict, pools=(), graded: grading.Grading | dict |
         radii += [*inside, b]
         names += [name] * (len(inside) + 1)
     columns = None
-    if pools and graded is not None and not grading.Grading.of(graded).uniform:
-        columns = grading.columns(grading.Field(tuple(pools), p.dx_um, grading.Grading.of(graded)))
+    if pools and graded is not None and not geometry.Grading.of(graded).uniform:
+        columns = geometry.columns(geometry.Field(tuple(pools), p.dx_um, geometry.Grading.of(graded)))
     return geometry.quarter_annulus(radii, p.dx_um, layer_names=names, pool_layers=p.pool_layers, columns=columns)
 
 
@@ -496,7 +496,7 @@ def bilayer_model(
     name: str = "bilayer",
     pool=None,
     gag: materials.Gag | dict | None = None,
-    graded: grading.Grading | dict | None = None,
+    graded: geometry.Grading | dict | None = None,
 ) -> Model:
     """Bi-layered model (section 2.4.2, Table 2) in its in vivo reference configuration.
 
@@ -508,7 +508,7 @@ def bilayer_model(
     parameters, the material is a :class:`history.HistoryMaterial` on the path from
     the intact wall to the wall with those medial sectors seeded as GAG pools: the
     load's ``transition`` converts them and its ``concentration`` swells them. With a non-uniform ``graded``
-    (:mod:`sphgag.engine.grading`) the layout is graded around the pools, their ends cell boundaries
+    (:mod:`sphgag.engine.geometry`) the layout is graded around the pools, their ends cell boundaries
     (:func:`bilayer_layout`).
     """
     numerics = Numerics.of(numerics)

@@ -114,7 +114,7 @@ def pressurised_wall(
 
 def case_model(dx: float, bilayer: dict, numerics: dict, gag: dict, entry: dict, name: str, graded=None):
     """The bi-layered wall at spacing ``dx`` with the pool ``entry`` (a ``swelling.cases`` entry) seeded, laid out
-    around it (graded by ``graded``, :mod:`sphgag.engine.grading`)."""
+    around it (graded by ``graded``, :mod:`sphgag.engine.geometry`)."""
     return artery.bilayer_model(dict(bilayer, dx_um=float(dx)), numerics, name, artery.pool_sector(entry), gag, graded)
 
 

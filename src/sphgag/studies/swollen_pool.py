@@ -40,7 +40,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from ..engine import geometry, grading, kernel, measure, pool_cavity, solver
+from ..engine import geometry, kernel, measure, pool_cavity, solver
 from ..engine.measure import normal_stress_state
 from ..engine.model import Model
 from ..engine.numerics import Numerics
@@ -267,7 +267,7 @@ def sector_model(
 ):
     """The paper's sector pool (figure 4) in a quarter annulus of the matrix law alone: ``walls`` = (inner radius,
     media/adventitia border, outer radius) [um], the pool's edges cell boundaries (the layout graded around it by
-    ``graded``, :mod:`sphgag.engine.grading`), mirror planes at 0 and 90 deg, inner and outer surfaces free;
+    ``graded``, :mod:`sphgag.engine.geometry`), mirror planes at 0 and 90 deg, inner and outer surfaces free;
     ``pool_model`` as :func:`circle_model`."""
     r_in, r_media, r_out = (float(r) for r in walls)
     edges = (pool.centre_radius - 0.5 * pool.radial_extent, pool.centre_radius + 0.5 * pool.radial_extent)
@@ -276,7 +276,7 @@ def sector_model(
         dx,
         layer_names=("media", "media", "media", "adventitia"),
         pool_layers=("media",),
-        columns=grading.columns(grading.Field((pool,), dx, grading.Grading.of(graded or {}))),
+        columns=geometry.columns(geometry.Field((pool,), dx, geometry.Grading.of(graded or {}))),
     )
     members = pool.members(lay, layer=lay.pool_layers)
     numerics = Numerics.of(numerics)
