@@ -88,6 +88,15 @@ def test_a_figure_counts_the_studies_code_it_prints(code):
     assert {"studies/inclusion.py", "views/verification.py", "views/style.py"} <= set(code["verification_pool_figure"])
 
 
+def test_a_delamination_run_reads_its_simulation_and_no_reference(code):
+    """``delaminate`` depends on at most 25 modules: the engine, the constitutive laws and the delamination protocol.
+    No swelling or delamination run depends on a closed-form reference (physics/analytic.py, the exact tubes) or on
+    the grid convergence index (studies/gci.py): editing either reruns no simulation."""
+    assert len(code["delaminate"]) <= 25, code["delaminate"]
+    for script in ("delaminate", "delamination_map_point", "swell", "pool_stresses"):
+        assert not {"physics/analytic.py", "studies/gci.py"} & set(code[script]), script
+
+
 def test_the_explicit_procedure_is_an_input_of_the_procedures_jobs_only(code):
     """engine/dynamics.py (leapfrog pseudo-dynamics) runs in the explicit procedure's jobs, no other simulation's."""
     runs = importers(code, "engine/dynamics.py")

@@ -16,8 +16,8 @@ from sphgag.studies import artery
 from sphgag.studies.delamination import growth
 from sphgag.studies.delamination.front import Front
 from sphgag.studies.delamination.growth import DamageUpdate, GrowthRun, seeded_only
+from sphgag.studies.delamination.runs import load_snapshot, save_snapshots
 from sphgag.studies.delamination.settings import Settings
-from sphgag.studies.delamination.snapshots import load_snapshot, save_snapshots
 from sphgag.studies.delamination.tables import GROWTH_COLUMNS, Stop, labelled
 from sphgag.studies.pool_swelling import pool_measurements, pool_table, swell_pool
 from sphgag.studies.wall_loading import homeostasis, pressurise

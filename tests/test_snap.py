@@ -11,8 +11,8 @@ from sphgag.engine.history import DAMAGED, HistoryMaterial, swelling_load
 from sphgag.engine.numerics import Numerics
 from sphgag.studies import artery
 from sphgag.studies.delamination.growth import grow
+from sphgag.studies.delamination.runs import load_snapshot, save_snapshots
 from sphgag.studies.delamination.settings import Settings
-from sphgag.studies.delamination.snapshots import load_snapshot, save_snapshots
 from sphgag.studies.pool_swelling import state_model, swell_pool
 
 from .conftest import law_gag

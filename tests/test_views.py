@@ -11,7 +11,7 @@ from sphgag.engine.history import HistoryMaterial
 from sphgag.records import state
 from sphgag.studies import artery
 from sphgag.studies.delamination.growth import grow
-from sphgag.studies.delamination.snapshots import save_snapshots
+from sphgag.studies.delamination.runs import save_snapshots
 from sphgag.views import paraview
 
 from .conftest import law_gag

@@ -7,9 +7,8 @@ from sphgag import jobs
 from sphgag.engine import solver
 from sphgag.records import state
 from sphgag.studies import artery
-from sphgag.studies.delamination.runs import delaminate, fracture_energy
+from sphgag.studies.delamination.runs import delaminate, fracture_energy, save_snapshots
 from sphgag.studies.delamination.settings import Settings
-from sphgag.studies.delamination.snapshots import save_snapshots
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p, cfg, w = job.params, job.params.state_slice, job.w

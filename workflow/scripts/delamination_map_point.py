@@ -1,11 +1,11 @@
 """Rule delamination_map_point: figure 5's pool at one angular extent and sigma_cr, grown over the concentration ramp
-by eq. (2.28); what it does at each level (sphgag.studies.delamination.runs.map_point)."""
+by eq. (2.28); what it does at each level (sphgag.studies.delamination.growth.map_point)."""
 
 from sphgag import jobs
 from sphgag.engine import solver
 from sphgag.records import state
 from sphgag.studies import artery
-from sphgag.studies.delamination.runs import map_point
+from sphgag.studies.delamination.growth import map_point
 from sphgag.studies.delamination.settings import Settings
 
 with jobs.run(snakemake) as job:  # noqa: F821

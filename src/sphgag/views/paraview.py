@@ -88,7 +88,7 @@ def fields(model: Model, x: np.ndarray, load, history: ParticleHistory) -> dict:
 
 
 def delamination_frames(wall: Model, snapshots_path, gag: dict, expected_params: dict | None = None) -> list[Frame]:
-    """The frames of a delamination run's snapshots (:func:`sphgag.studies.delamination.snapshots.save_snapshots`), each
+    """The frames of a delamination run's snapshots (:func:`sphgag.studies.delamination.runs.save_snapshots`), each
     evaluated with its own history on the intact wall's material (as the run grew it): ``wall`` is the run's wall as
     built (:func:`sphgag.studies.artery.bilayer_model`), before any pool."""
     base = wall.props

@@ -71,7 +71,7 @@ from .. import artery
 from .events import RUNAWAY_EXTENT_FACTOR, LimitPoint, critical
 from .front import Front, damage_step, onset_measure, with_ruptures
 from .settings import Settings
-from .tables import Critical, Pass, Result, Stop, growth_table, run_summary
+from .tables import Critical, Pass, Result, Stop, growth_table, level_classes, run_summary
 
 log = logging.getLogger("sphgag")
 
@@ -174,7 +174,7 @@ class GrowthRun:
     def resume(
         cls, model, snapshot, sectors, settings, numerics, gag, base, *, run=None, snapshot_steps=()
     ) -> GrowthRun:
-        """Continue from ``snapshot = (state, history, pseudo_time)`` of this run (:func:`load_snapshot`)."""
+        """Continue from ``snapshot = (state, history, pseudo_time)`` of this run (:func:`.runs.load_snapshot`)."""
         path_solver, run = Numerics.of(numerics).solver(model), run or model.name
         state, hist, step = snapshot
         material = HistoryMaterial(base, hist, gag)
@@ -554,7 +554,7 @@ def grow(
     ``base``: the intact wall's material (``load -> props``, e.g. :class:`sphgag.studies.artery.BilayerMaterial`).
     ``snapshot_steps``: pseudo-times at which to keep the state (the first state of every concentration level and
     the last state are always kept). ``resume``: ``(state, history, pseudo_time)`` of a snapshot of this run
-    (:func:`load_snapshot`) to continue from instead of seeding; the rows then start there.
+    (:func:`.runs.load_snapshot`) to continue from instead of seeding; the rows then start there.
     """
     make, begin = (GrowthRun.seed, start) if resume is None else (GrowthRun.resume, resume)
     return make(model, begin, sectors, settings, numerics, gag, base, run=run, snapshot_steps=snapshot_steps).run()
@@ -577,3 +577,17 @@ def seeded_only(
     seeded = GrowthRun.seed(model, start, sectors, settings, numerics, gag, base, run=run)
     seeded._record(first_of_level=True)  # the seeded wall is the run's one row (and its snapshot)
     return seeded.result(Stop("not run", stop, 0.0), Critical())
+
+
+def map_point(model, start, sector, settings: Settings, numerics: dict, gag: dict, width: float, run=None):
+    """One point of the delamination map: the pool ``sector`` (``width`` degrees) grown over the ramp by ``settings``
+    from ``start``; what it does at each level, labelled by charge law, angular extent and sigma_cr, with how its run
+    ended. Returns the table and the run's summary."""
+    result = grow(model, start, [sector], settings, numerics, gag, model.props, run=run)
+    table = level_classes(result.growth, result.summary, settings.levels)
+    table.insert(0, "charge_law", gag["charge_law"])
+    table.insert(1, "angular_extent_deg", width)
+    table.insert(2, "sigma_cr_kPa", settings.critical_stress_kPa)
+    s = result.summary
+    ended = ("onset_concentration_mEq_l", "stop_level_mEq_l", "stop_kind", "stop", "max_residual")
+    return table.assign(**{k: s[k] for k in ended}), s

@@ -1,6 +1,8 @@
-"""The pipeline's delamination runs (figures 5-7 and the delamination map): one pool set seeded in the pressurised
-passive wall and grown by damage (eq. 2.28 as printed, or the damage law with a fracture energy G_c), as the tables of
-``results/delamination`` label it, and one point of the delamination map (:func:`.tables.level_classes`)."""
+"""The pipeline's delamination runs (figures 5-7): one pool set seeded in the pressurised passive wall and grown by
+damage (eq. 2.28 as printed, or the damage law with a fracture energy G_c), as the tables of ``results/delamination``
+label it (:func:`delaminate`), and its snapshots on disk (:func:`save_snapshots`): the particle states it keeps
+(positions, load, particle history) with their radial stress, in one ``results/delamination/runs/{law}/*_snapshots.npz``
+per run; each one can restart the run (:func:`sphgag.studies.delamination.growth.grow` with ``resume``)."""
 
 from __future__ import annotations
 
@@ -9,11 +11,14 @@ import dataclasses
 import numpy as np
 import pandas as pd
 
+from ...engine import measure, solver
+from ...engine.model import Model
 from ...physics import damage
+from ...records import state as state_io
 from .. import artery
 from .growth import grow, seeded_only
 from .settings import MATCHED, Settings
-from .tables import griffith, labelled, level_classes
+from .tables import griffith, labelled
 
 
 def fracture_energy(gc: str | None, matched: str | None = None, log=None, run: str = "") -> tuple[float | None, str]:
@@ -59,15 +64,26 @@ def delaminate(model, start, sectors, settings: Settings, state: dict, gag: dict
     return growth, summary, result
 
 
-def map_point(model, start, sector, settings: Settings, numerics: dict, gag: dict, width: float, run=None):
-    """One point of the delamination map: the pool ``sector`` (``width`` degrees) grown over the ramp by ``settings``
-    from ``start``; what it does at each level, labelled by charge law, angular extent and sigma_cr, with how its run
-    ended. Returns the table and the run's summary."""
-    result = grow(model, start, [sector], settings, numerics, gag, model.props, run=run)
-    table = level_classes(result.growth, result.summary, settings.levels)
-    table.insert(0, "charge_law", gag["charge_law"])
-    table.insert(1, "angular_extent_deg", width)
-    table.insert(2, "sigma_cr_kPa", settings.critical_stress_kPa)
-    s = result.summary
-    ended = ("onset_concentration_mEq_l", "stop_level_mEq_l", "stop_kind", "stop", "max_residual")
-    return table.assign(**{k: s[k] for k in ended}), s
+def save_snapshots(path, model: Model, snapshots, params: dict) -> None:
+    """All snapshots of a run in one ``.npz`` (:func:`sphgag.records.state.save_series`: positions, load, particle
+    history), each with its radial Cauchy stress (eq. 2.10, current polar frame) as ``s{k}_radial_stress_kPa``;
+    ``steps`` and ``concentrations`` index them. Each snapshot can restart the run (:func:`load_snapshot`)."""
+    arrays = dict(
+        steps=np.array([s[0] for s in snapshots]),
+        concentrations=np.array([s[1].load.material_value("concentration") for s in snapshots]),
+        X=model.layout.X,
+        volume=model.layout.volume,
+        theta=model.layout.theta,
+    )
+    arrays.update(
+        {f"s{k}_radial_stress_kPa": measure.cauchy_polar(st.evaluation)[0] for k, (_, st, _) in enumerate(snapshots)}
+    )
+    state_io.save_series(
+        path, [(st.x, st.load, dict(pseudo_time=int(step)), hist) for step, st, hist in snapshots], params, arrays
+    )
+
+
+def load_snapshot(path, k: int, expected_params: dict | None = None):
+    """``(solver.State, ParticleHistory, pseudo_time)`` of snapshot ``k`` of a :func:`save_snapshots` file."""
+    saved = state_io.load_from_series(path, k, expected_params)
+    return solver.State(saved.load, saved.x, None, None), saved.history, int(saved.info["pseudo_time"])
