@@ -1,10 +1,13 @@
 """Closed-form references: thin-walled means and the exact incompressible thick-walled tube."""
 
+import dataclasses
+
 import numpy as np
 import pytest
 from scipy.integrate import quad
 
 from sphgag.physics import analytic
+from sphgag.studies import artery
 from sphgag.studies.pressure_diameter import mean_thick_wall
 
 
@@ -46,3 +49,12 @@ def test_pressure_inverts(full_config):
     tube = mean_thick_wall(full_config["mean"])
     for P in (0.0, 5.0, 26.66):
         assert tube.pressure(tube.inner_radius(P)) == pytest.approx(P, abs=1e-10)
+
+
+def test_the_walls_fibre_families_are_the_exact_tubes_fields_in_their_order():
+    """The SPH wall's families (artery.FibreFamily) reach the exact tube positionally (analytic.Family(*f)), so both
+    declare the same fields, with the same defaults, in the same order."""
+    fields = dataclasses.fields(analytic.Family)
+    assert artery.FibreFamily._fields == tuple(f.name for f in fields)
+    defaults = {f.name: f.default for f in fields if f.default is not dataclasses.MISSING}
+    assert artery.FibreFamily._field_defaults == defaults

@@ -11,8 +11,8 @@ from sphgag.physics import materials
 from sphgag.records import state
 from sphgag.records.state import StateMismatch
 from sphgag.studies import artery
-from sphgag.studies.pressure_diameter import bilayer_law, bilayer_tube
-from sphgag.studies.wall_loading import bilayer_pressure_diameter, homeostasis
+from sphgag.studies.pressure_diameter import bilayer_law, bilayer_pressure_diameter, bilayer_tube
+from sphgag.studies.wall_loading import homeostasis
 
 from .conftest import ROOT
 

@@ -90,11 +90,16 @@ def test_a_figure_counts_the_studies_code_it_prints(code):
 
 def test_a_delamination_run_reads_its_simulation_and_no_reference(code):
     """``delaminate`` depends on at most 25 modules: the engine, the constitutive laws and the delamination protocol.
-    No swelling or delamination run depends on a closed-form reference (physics/analytic.py, the exact tubes) or on
-    the grid convergence index (studies/gci.py): editing either reruns no simulation."""
+    The closed forms of the exact tubes (physics/analytic.py) are code inputs of the walls' calibration, homeostasis
+    and profile verification alone (and of the site's pages), so editing them reruns no pool, swelling, delamination,
+    procedure or sensitivity job."""
     assert len(code["delaminate"]) <= 25, code["delaminate"]
-    for script in ("delaminate", "delamination_map_point", "swell", "pool_stresses"):
-        assert not {"physics/analytic.py", "studies/gci.py"} & set(code[script]), script
+    walls = {"calibrate_mean", "homeostasis", "bilayer_pressure_diameter", "bilayer_table", "verify_profiles"}
+    assert importers(code, "physics/analytic.py") <= walls | {"verify_profiles_wall", "docs_pages"}
+    for script in ("swell", "pool_stresses", "delaminate", "delamination_map_point", "delamination_convergence"):
+        assert "physics/analytic.py" not in code[script], script
+    for script in ("procedure_explicit", "sensitivity_batch", "variant", "swelling_convergence", "paper_settings_run"):
+        assert "physics/analytic.py" not in code[script], script
 
 
 def test_the_explicit_procedure_is_an_input_of_the_procedures_jobs_only(code):

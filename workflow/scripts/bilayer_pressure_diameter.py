@@ -4,8 +4,7 @@ from sphgag import jobs
 from sphgag.engine import solver
 from sphgag.records import state
 from sphgag.studies import artery, wall
-from sphgag.studies.pressure_diameter import bilayer_tube
-from sphgag.studies.wall_loading import bilayer_pressure_diameter
+from sphgag.studies.pressure_diameter import bilayer_pressure_diameter, bilayer_tube
 
 with jobs.run(snakemake) as job:  # noqa: F821
     cfg, label = job.params.slice, job.w.model

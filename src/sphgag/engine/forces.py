@@ -6,7 +6,8 @@ Kernels over the flat neighbour arrays of :mod:`sphgag.engine.kernel`:
 * internal force ``f_i = sum_j V_i V_j (P_i grad~xi_ij - P_j grad~xi_ji)`` (eq. 2.11),
   the exact negative gradient of the discrete strain energy ``sum_i V_i W(F_i)``;
 * hourglass penalty ``f_i = -sum_j alpha E V_i V_j xi_ij / (2 R_ij^2) (delta_i + delta_j) r_ij/|r_ij|``
-  with ``delta_i = (F_i R_ij - r_ij) . r_ij/|r_ij|`` (eqs. 2.14-2.15);
+  with ``delta_i = (F_i R_ij - r_ij) . r_ij/|r_ij|`` (eqs. 2.14-2.15; the ``paper`` form of the hourglass control,
+  below);
 * the Jacobian of both with respect to all particle positions (for Newton's method),
   assembled into 2 x 2 blocks of a fixed sparsity pattern.
 

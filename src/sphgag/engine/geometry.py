@@ -1,8 +1,9 @@
-"""Particle layout of the quarter-annulus arterial cross-section (paper section 2.4, figure 1a).
+"""Particle layout of the quarter-annulus arterial cross-section (paper section 2.4, figure 1a): uniform, or graded
+around GAG pools.
 
 The paper discretises the quarter annulus with the nodes of an unstructured
 triangle mesh. We generate the layout instead, from one resolution parameter
-``dx_um``, so that refining the resolution means the same thing everywhere:
+``dx_um``, so that refining the resolution means the same thing everywhere. **The uniform layout**:
 
 * **Rings in r.** Every layer ``[r_a, r_b]`` of the wall is split into cells of
   equal radial width. The inner and outer surfaces carry a ring of particles
@@ -38,7 +39,7 @@ in (radius, arc length at the pool's centre radius). The spacing grows by ``dx /
 the graded zones keep their size and every spacing scales with ``dx``, so halving ``dx`` refines the graded layout
 uniformly (the resolution study's spacings keep their meaning).
 
-**The layout** (:func:`columns`, :func:`quarter_annulus`): the quarter is cut into angular
+**The graded layout** (:func:`columns`, :func:`quarter_annulus`): the quarter is cut into angular
 columns whose edges include every pool's angular ends (cell boundaries in every ring, so a pool is exactly its sector
 at every spacing); a column is ``column_cells`` of its finest spacing wide where the finest spacing varies with the
 angle, one column where it does not. Each column's rings are graded radially by the field over the column (from its
@@ -362,7 +363,7 @@ class Grading(Options):
 
 @dataclass(frozen=True)
 class Field:
-    """The spacing field of :class:`Grading` around ``pools`` (:class:`sphgag.engine.geometry.Sector`) at the coarse
+    """The spacing field of :class:`Grading` around ``pools`` (:class:`Sector`) at the coarse
     spacing ``dx`` [um]."""
 
     pools: tuple
@@ -393,25 +394,25 @@ def _interval_min(f, lo: float, hi: float) -> float:
     return float(np.min(f(np.linspace(lo, hi, SAMPLES))))
 
 
-def columns(field: Field) -> tuple[np.ndarray, list]:
+def columns(graded: Field) -> tuple[np.ndarray, list]:
     """The angular columns of the graded layout: ``(edges, spacings)``, ``edges`` rising from 0 to pi/2 (every pool's
     angular ends among them) and per column a radial spacing profile (a function of the radius, constant where the
     column is uniform)."""
-    m = field.grading.column_cells
-    rc = float(np.mean([p.centre_radius for p in field.pools]))
-    breaks = sorted({float(t) for p in field.pools for t in p.theta_range} | {QUARTER})
+    m = graded.grading.column_cells
+    rc = float(np.mean([p.centre_radius for p in graded.pools]))
+    breaks = sorted({float(t) for p in graded.pools for t in p.theta_range} | {QUARTER})
     edges, finest = [0.0], []
     t = 0.0
     while t < QUARTER - 1e-12:
         stop = min(b for b in breaks if b > t + 1e-12)
-        s = float(field.angular(t))
+        s = float(graded.angular(t))
         for _ in range(60):  # the column's finest spacing: the minimum over its own width
-            s_new = _interval_min(field.angular, t, min(t + m * s / rc, stop))
+            s_new = _interval_min(graded.angular, t, min(t + m * s / rc, stop))
             if abs(s_new - s) <= 1e-12 * s:
                 break
             s = s_new
         ts = np.linspace(t, stop, 4 * SAMPLES)
-        changes = np.flatnonzero(np.abs(field.angular(ts) - s) > 1e-9 * s)
+        changes = np.flatnonzero(np.abs(graded.angular(ts) - s) > 1e-9 * s)
         if changes.size == 0 or changes[0] > SAMPLES // 4:  # constant: one column up to where it changes (or a break)
             end = stop if changes.size == 0 else float(ts[changes[0] - 1])
         else:
@@ -423,20 +424,20 @@ def columns(field: Field) -> tuple[np.ndarray, list]:
         t = end
     edges[-1] = QUARTER
     edges = np.array(edges)
-    return edges, [_profile(field, lo, hi, s, rc) for lo, hi, s in zip(edges[:-1], edges[1:], finest)]
+    return edges, [_profile(graded, lo, hi, s, rc) for lo, hi, s in zip(edges[:-1], edges[1:], finest)]
 
 
-def _profile(field: Field, lo: float, hi: float, finest: float, rc: float):
+def _profile(graded: Field, lo: float, hi: float, finest: float, rc: float):
     """The radial spacing of the column ``lo < theta < hi``: the field's minimum over the column at each radius,
     between the column's finest spacing and its width; a number where that is constant."""
-    if finest >= field.dx * (1.0 - 1e-12):  # a coarse column: uniform
-        return float(field.dx)
+    if finest >= graded.dx * (1.0 - 1e-12):  # a coarse column: uniform
+        return float(graded.dx)
     width = max((hi - lo) * rc, finest)
     ts = np.linspace(lo, hi, 41)
 
     def spacing(r):
         r = np.atleast_1d(np.asarray(r, dtype=float))
-        s = np.min(field(r[:, None], ts[None, :]), axis=1)
+        s = np.min(graded(r[:, None], ts[None, :]), axis=1)
         return np.clip(s, finest, width)
 
     return spacing

@@ -18,8 +18,8 @@ paper instead zeroes the normal component of P at outer particles, section
 **How the pressure reaches the particles** is a registered numerical variant (``numerics.lumen_load``,
 :data:`LUMEN_LOADS`):
 
-* ``surface``: the force ``P lz dA/dx`` on the inner-surface particles (:func:`pressure_forces`, the exact gradient of
-  the work ``P lz A`` of the quarter lumen's area), with its follower stiffness.
+* ``surface``: the force ``P lz dA/dx`` on the inner-surface particles (:func:`pressure_forces`, above), with its
+  follower stiffness.
 * ``operator``: the pressure through the internal-force operator's own boundary term, ``-P f_u(x)`` on the particles
   of the inner boundary layer (:func:`inner_layer`), with ``f_u`` the internal forces (eq. 2.11) of the uniform
   Cauchy stress ``-I`` (the Donnan term ``-Pi (J - 1)`` of eq. 2.26 at ``Pi = 1``, so its tangent is the engine's own

@@ -1,7 +1,7 @@
 """Measurements on converged states: diameters, Cauchy stresses in the current polar frame, profiles; and the stress
 recovery they read.
 
-Stresses are reported as Cauchy stress ``sigma = P F^T / J`` (eq. 2.10) in the
+Stresses are reported as Cauchy stress (eq. 2.10, as the run's stress recovery reads it, below) in the
 local (r, theta) frame of the *current* configuration (the angle of the
 particle's current position).
 
@@ -30,7 +30,7 @@ its name in the configuration (``numerics.stress_recovery``):
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import partial
 from typing import TYPE_CHECKING
 
@@ -50,7 +50,7 @@ if TYPE_CHECKING:  # the model computes its evaluations' stress with this module
 
 def cauchy(ev: Evaluation):
     """``(sigma, J)``: the in-plane Cauchy stress of every particle, ``(n, 2, 2)``, as the evaluation's stress
-    recovery reads it (:mod:`sphgag.engine.measure`; the paper's: ``sigma = P F^T / J``, eq. 2.10), and
+    recovery reads it (:data:`RECOVERIES`; the paper's: ``sigma = P F^T / J``, eq. 2.10), and
     ``J = det F lambda_z``."""
     return ev.cauchy()
 
@@ -346,7 +346,7 @@ class SurfaceTraction(VolumetricAverage):
     def cauchy(self, model, ev):
         lay, props, lz = model.layout, model.material(ev.load)[0], ev.load.axial_stretch
         sig, J = ev.kernel_cauchy()
-        rings = ((lay.inner_surface, -lumen_pressure(model, ev)), (lay.outer_surface, 0.0))
+        rings = ((lay.inner_surface, -carried_pressure(model, ev)), (lay.outer_surface, 0.0))
         surface = np.concatenate([ring for ring, _ in rings])
         traction = np.concatenate([np.full(ring.size, t) for ring, t in rings])
         lt = np.concatenate([surface_stretch(lay, ev.x, ring) for ring, _ in rings])
@@ -359,11 +359,6 @@ class SurfaceTraction(VolumetricAverage):
         sig[surface, 1, 1] = s * s * srr + c * c * stt
         sig[surface, 0, 1] = sig[surface, 1, 0] = c * s * (srr - stt)
         return sig, J
-
-
-def lumen_pressure(model, ev) -> float:
-    """The lumen pressure [kPa]: the load's, or the one a held inner surface carries (from its reactions)."""
-    return carried_pressure(model, ev)
 
 
 def surface_stretch(layout, x: np.ndarray, surface: np.ndarray) -> np.ndarray:
@@ -419,6 +414,4 @@ RECOVERIES: Registry[StressRecovery] = Registry(
 
 def recovered(model, ev, name: str):
     """The evaluation ``ev`` of ``model`` read through the recovery ``name`` (a copy: the forces are shared)."""
-    from dataclasses import replace
-
     return replace(ev, recovery=RECOVERIES.lookup(name).bind(model), recovered=None)

@@ -79,10 +79,11 @@ from scipy.special import erfi
 from ..registry import Registry, Variant
 from . import donnan, materials
 
-LN2 = np.log(2.0)
-# K = 1 - int_0^1 (2^(x^2) - 1) dx = 2 - sqrt(pi / ln 2) erfi(sqrt(ln 2)) / 2 (FractureEnergyLaw)
 #: the configuration key of a law with a fracture energy G_c: its runs are the fracture-energy runs, beside Griffith
 FRACTURE_ENERGY = "delamination.fracture_energy"
+J_M2 = 1.0e3  # kPa um per J/m^2: energies per area are in kPa um
+LN2 = np.log(2.0)
+# K = 1 - int_0^1 (2^(x^2) - 1) dx = 2 - sqrt(pi / ln 2) erfi(sqrt(ln 2)) / 2 (FractureEnergyLaw)
 SHAPE_K = float(2.0 - 0.5 * np.sqrt(np.pi / LN2) * erfi(np.sqrt(LN2)))
 
 
@@ -303,8 +304,6 @@ def weaken(props: np.ndarray, D: np.ndarray) -> np.ndarray:
 # ---------------------------------------------------------------------------
 # Closed forms of linear fracture mechanics (module docstring, "Fracture closed forms")
 # ---------------------------------------------------------------------------
-
-J_M2 = 1.0e3  # kPa um per J/m^2
 
 
 def plane_strain_modulus(shear_modulus, poisson_ratio=0.5):

@@ -1,11 +1,18 @@
-"""The mean-behaviour model's pressure-diameter protocol (figure 2a, :func:`mean_pressure_diameter`): from the unloaded
-reference, ramp the axial stretch at zero pressure, then pressurise at fixed axial stretch, recording the
-pressure-diameter response, the mean circumferential stress and stretch (eqs. 2.16-2.17) and transmural stress
-profiles, each beside the exact thick-walled solution; and the rows and profiles every wall's states are recorded as.
+"""The walls' pressure-diameter protocols, each beside the exact thick-walled solution, and the rows and profiles every
+wall's states are recorded as.
+
+* The mean-behaviour model (figure 2a, :func:`mean_pressure_diameter`): from the unloaded reference, ramp the axial
+  stretch at zero pressure, then pressurise at fixed axial stretch, recording the pressure-diameter response, the
+  mean circumferential stress and stretch (eqs. 2.16-2.17) and transmural stress profiles.
+* The bi-layered model (figure 3, :func:`bilayer_pressure_diameter`): from the homeostatic state
+  (:mod:`sphgag.studies.wall_loading`), passive or with the active tone, the pressure swept below and above the
+  activation pressure under pressure control.
 
 The exact tubes the walls are compared with (:mod:`sphgag.physics.analytic`): the mean wall's
 (:func:`mean_thick_wall`) and the bi-layered wall's (:func:`bilayer_tube`), with the same constituents and
-pre-stretches, incompressible. The SPH models (:mod:`sphgag.studies.artery`) do not import them.
+pre-stretches, incompressible. The SPH models (:mod:`sphgag.studies.artery`) and their loading paths
+(:mod:`sphgag.studies.wall_loading`) do not import them, so an edit of the closed forms reruns no simulation but these
+sweeps.
 """
 
 from __future__ import annotations
@@ -23,22 +30,9 @@ from ..engine.numerics import Numerics
 from ..options import Options, file_name_problems
 from ..physics import analytic
 from . import artery
+from .wall_loading import above_sweep, activated
 
 log = logging.getLogger("sphgag")
-
-
-def _above_sweep(config, section: str, key: str) -> list[str]:
-    """The pressures of ``section.key`` (a list, or one pressure) above the top of the section's sweep,
-    ``max_pressure_mmHg``."""
-    cal = config.get(section, {})
-    top = cal.get("max_pressure_mmHg", 0)
-    values = cal.get(key, [])
-    problems = []
-    for k, p in enumerate(values if isinstance(values, list) else [values]):
-        if p > top:
-            where = f"{section}.{key}" + (f"[{k}]" if isinstance(values, list) else "")
-            problems.append(f"{where} = {p} exceeds {section}.max_pressure_mmHg = {top}")
-    return problems
 
 
 @dataclass(frozen=True)
@@ -58,7 +52,7 @@ class Calibration(Options):
     def problems(cls, config) -> list[str]:
         """The transmural pressures inside the sweep, each giving its own file name."""
         values = config.get("calibration", {}).get("transmural_pressures_mmHg", [])
-        return _above_sweep(config, "calibration", "transmural_pressures_mmHg") + file_name_problems(
+        return above_sweep(config, "calibration", "transmural_pressures_mmHg") + file_name_problems(
             "calibration", "transmural_pressures_mmHg", values
         )
 
@@ -223,3 +217,49 @@ def bilayer_tube(p: artery.Bilayer | dict, active: bool) -> analytic.ThickWallTu
     """Semi-analytical incompressible layered tube (same layers, constituents and pre-stretches)."""
     p = artery.Bilayer.of(p)
     return analytic.ThickWallTube([(a, b, bilayer_law(p, name, active), name) for name, a, b in p.bands()], lz=1.0)
+
+
+def bilayer_pressure_diameter(
+    model: Model,
+    tube: analytic.ThickWallTube,
+    homeostatic: solver.State,
+    numerics: Numerics,
+    cal: dict,
+    active: bool,
+    label: str,
+) -> PressureDiameter:
+    """Pressure-diameter sweep of the passive or active bi-layered model under pressure control.
+
+    From the homeostatic state (inner radius held, carried pressure P_h) the
+    load switches to pressure control at P_h (the same equilibrium), moves to
+    the activation pressure, ramps the active tone there if ``active``, and then
+    sweeps the pressures below and above it in two branches. The mean
+    circumferential stretch is normalised by the traction-free (zero-pressure)
+    geometry, as in figure 3a (that of the semi-analytical tube, so that SPH
+    points and exact curve share the normalisation).
+    """
+    path_solver = Numerics.of(numerics).solver(model)
+    start = activated(model, homeostatic, numerics, cal, active, label, path_solver)
+    P_act = cal["activation_pressure_mmHg"]
+    sweep = np.linspace(0.0, cal["max_pressure_mmHg"], cal["pressure_points"])
+    pressures = np.unique(np.round(np.concatenate([sweep, cal["state_pressures_mmHg"], [P_act]]), 10))
+    down = [P for P in pressures[::-1] if P < P_act]
+    up = [P for P in pressures if P > P_act]
+    states = [start]
+    for branch in (down, up):
+        loads = [Load(1.0, P * MMHG_TO_KPA, material=start.load.material) for P in branch]
+        states += path_solver.follow_path(
+            start.x, start.load, loads, run=model.name, on_state=solver.log_states(model.name)
+        )
+    states.sort(key=lambda s: s.load.pressure_kPa)
+    # eq. (2.17) normalised by the traction-free (zero-pressure) geometry of the semi-analytical tube, the
+    # same constant for the SPH points and the exact curve
+    r0 = tube.inner_radius(0.0)
+    h0 = float(tube.radius(tube.R_out, r0)) - r0
+    table = pd.DataFrame([state_row(model, s, tube, r0, h0) for s in states]).assign(model=label)
+    table = table[["model"] + [c for c in table.columns if c != "model"]]
+    wanted = {round(P, 10) for P in cal["state_pressures_mmHg"]}
+    saved = {round(s.load.pressure_mmHg, 10): s for s in states if round(s.load.pressure_mmHg, 10) in wanted}
+    profiles = pd.concat([transmural(model, s, tube, label) for s in saved.values()], ignore_index=True)
+    curve = exact_curve(tube, np.linspace(0.0, cal["max_pressure_mmHg"], 201), r0, h0).assign(model=label)
+    return PressureDiameter(table, profiles, curve, saved)

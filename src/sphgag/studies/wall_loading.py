@@ -1,7 +1,8 @@
 """The bi-layered wall's loading (figure 2b and figure 3), run as paths of converged quasi-static states:
 :func:`homeostasis` ramps the deposition pre-stretches at a held inner radius; :func:`pressurise` and
 :func:`pressurised_wall` bring it to a lumen pressure under pressure control; :func:`activated` switches the active
-tone on; :func:`bilayer_pressure_diameter` sweeps the pressure beside the semi-analytical bi-layered tube.
+tone on. Figure 3's sweep from the homeostatic state, beside the semi-analytical bi-layered tube, is
+:func:`sphgag.studies.pressure_diameter.bilayer_pressure_diameter`.
 """
 
 from __future__ import annotations
@@ -18,17 +19,23 @@ from ..engine.loading import MMHG_TO_KPA, Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
 from ..options import REFERENCE, Options, file_name_problems, role
-from ..physics import analytic
 from . import artery
-from .pressure_diameter import (
-    PressureDiameter,
-    _above_sweep,
-    exact_curve,
-    state_row,
-    transmural,
-)
 
 log = logging.getLogger("sphgag")
+
+
+def above_sweep(config, section: str, key: str) -> list[str]:
+    """The pressures of ``section.key`` (a list, or one pressure) above the top of the section's sweep,
+    ``max_pressure_mmHg``."""
+    cal = config.get(section, {})
+    top = cal.get("max_pressure_mmHg", 0)
+    values = cal.get(key, [])
+    problems = []
+    for k, p in enumerate(values if isinstance(values, list) else [values]):
+        if p > top:
+            where = f"{section}.{key}" + (f"[{k}]" if isinstance(values, list) else "")
+            problems.append(f"{where} = {p} exceeds {section}.max_pressure_mmHg = {top}")
+    return problems
 
 
 @dataclass(frozen=True)
@@ -45,10 +52,10 @@ class HomeostasisSettings(Options):
 
 @dataclass(frozen=True)
 class BilayerCalibration(Options):
-    """The ``bilayer_calibration`` configuration section (:func:`bilayer_pressure_diameter`): the active tone
-    (eq. 2.24) switched on at ``activation_pressure_mmHg`` in ``activation_steps``, the sweep of ``pressure_points``
-    pressures up to ``max_pressure_mmHg``, and the pressures whose states are saved (every later stage starts from
-    one of them)."""
+    """The ``bilayer_calibration`` configuration section (:func:`.pressure_diameter.bilayer_pressure_diameter`): the
+    active tone (eq. 2.24) switched on at ``activation_pressure_mmHg`` in ``activation_steps``, the sweep of
+    ``pressure_points`` pressures up to ``max_pressure_mmHg``, and the pressures whose states are saved (every later
+    stage starts from one of them)."""
 
     SECTION = "bilayer_calibration"
 
@@ -69,8 +76,8 @@ class BilayerCalibration(Options):
         """The saved and the activation pressures inside the sweep, each saved pressure giving its own file name."""
         values = config.get("bilayer_calibration", {}).get("state_pressures_mmHg", [])
         return (
-            _above_sweep(config, "bilayer_calibration", "state_pressures_mmHg")
-            + _above_sweep(config, "bilayer_calibration", "activation_pressure_mmHg")
+            above_sweep(config, "bilayer_calibration", "state_pressures_mmHg")
+            + above_sweep(config, "bilayer_calibration", "activation_pressure_mmHg")
             + file_name_problems("bilayer_calibration", "state_pressures_mmHg", values)
         )
 
@@ -160,8 +167,9 @@ def pressurise(
 ) -> solver.State:
     """The homeostatic state (held radius) moved to ``pressure_mmHg`` under pressure control: first the same
     equilibrium under pressure control at the carried pressure P_h, then the pressure. Every pressurised state of the
-    pipeline takes this path (:func:`bilayer_pressure_diameter`, the resolution studies, the sensitivity samples), so
-    that the same pressure gives the same state to the bit. ``path_solver``: as :func:`homeostasis`'s."""
+    pipeline takes this path (:func:`.pressure_diameter.bilayer_pressure_diameter`, the resolution studies, the
+    sensitivity samples), so that the same pressure gives the same state to the bit. ``path_solver``: as
+    :func:`homeostasis`'s."""
     path_solver = path_solver or Numerics.of(numerics).solver(model)
     P_h = measure.carried_pressure(model, homeostatic.evaluation)
     material = homeostatic.load.material
@@ -235,49 +243,3 @@ def wall_at(
         return start
     load = Load(1.0, pressure_mmHg * MMHG_TO_KPA, material=start.load.material)
     return path_solver.follow_path(start.x, start.load, [load], run=model.name)[-1]
-
-
-def bilayer_pressure_diameter(
-    model: Model,
-    tube: analytic.ThickWallTube,
-    homeostatic: solver.State,
-    numerics: Numerics,
-    cal: dict,
-    active: bool,
-    label: str,
-) -> PressureDiameter:
-    """Pressure-diameter sweep of the passive or active bi-layered model under pressure control.
-
-    From the homeostatic state (inner radius held, carried pressure P_h) the
-    load switches to pressure control at P_h (the same equilibrium), moves to
-    the activation pressure, ramps the active tone there if ``active``, and then
-    sweeps the pressures below and above it in two branches. The mean
-    circumferential stretch is normalised by the traction-free (zero-pressure)
-    geometry, as in figure 3a (that of the semi-analytical tube, so that SPH
-    points and exact curve share the normalisation).
-    """
-    path_solver = Numerics.of(numerics).solver(model)
-    start = activated(model, homeostatic, numerics, cal, active, label, path_solver)
-    P_act = cal["activation_pressure_mmHg"]
-    sweep = np.linspace(0.0, cal["max_pressure_mmHg"], cal["pressure_points"])
-    pressures = np.unique(np.round(np.concatenate([sweep, cal["state_pressures_mmHg"], [P_act]]), 10))
-    down = [P for P in pressures[::-1] if P < P_act]
-    up = [P for P in pressures if P > P_act]
-    states = [start]
-    for branch in (down, up):
-        loads = [Load(1.0, P * MMHG_TO_KPA, material=start.load.material) for P in branch]
-        states += path_solver.follow_path(
-            start.x, start.load, loads, run=model.name, on_state=solver.log_states(model.name)
-        )
-    states.sort(key=lambda s: s.load.pressure_kPa)
-    # eq. (2.17) normalised by the traction-free (zero-pressure) geometry of the semi-analytical tube, the
-    # same constant for the SPH points and the exact curve
-    r0 = tube.inner_radius(0.0)
-    h0 = float(tube.radius(tube.R_out, r0)) - r0
-    table = pd.DataFrame([state_row(model, s, tube, r0, h0) for s in states]).assign(model=label)
-    table = table[["model"] + [c for c in table.columns if c != "model"]]
-    wanted = {round(P, 10) for P in cal["state_pressures_mmHg"]}
-    saved = {round(s.load.pressure_mmHg, 10): s for s in states if round(s.load.pressure_mmHg, 10) in wanted}
-    profiles = pd.concat([transmural(model, s, tube, label) for s in saved.values()], ignore_index=True)
-    curve = exact_curve(tube, np.linspace(0.0, cal["max_pressure_mmHg"], 201), r0, h0).assign(model=label)
-    return PressureDiameter(table, profiles, curve, saved)

@@ -1,5 +1,6 @@
 """The growth of GAG pools by damage (paper section 2.7, figures 5-7): one run of the staggered protocol
-(:class:`GrowthRun`), from seeding its pools to where it stops.
+(:class:`GrowthRun`, :func:`grow`), from seeding its pools to where it stops; and one point of the delamination map
+(:func:`map_point`), a pool grown over the ramp and what it does at each level.
 
 The answer is a sequence of converged equilibria, not a trajectory. From a
 pressurised passive wall (lumen pressure held), the pools of a *pool set* are

@@ -14,9 +14,10 @@
   the authors' script tests the whole window (``window``), so damage can form islands ahead of a pool
   (docs/physics.md, "Damage candidates").
 
-A criterion and a rule are each a :class:`sphgag.registry.Variant` of its registry. The configuration's schema
-(:func:`sphgag.config.schema`) and the pipeline's wildcards are built from the registries, so a new criterion or rule
-is one function and one entry here.
+A criterion is an :class:`OnsetCriterion` and a rule a :class:`CandidateRule`, each a
+:class:`sphgag.registry.Variant` of its registry. The configuration's schema (:func:`sphgag.config.schema`) is built
+from both registries, and the pipeline's wildcard ``{criterion}`` from the criteria's, so a new criterion or rule is
+one function and one entry here.
 """
 
 from __future__ import annotations
