@@ -484,9 +484,10 @@ def bilayer_layout(p: Bilayer | dict, pools=(), graded: geometry.Grading | dict 
         inside = sorted(r for r in p.aligned_radii_um if a < r < b)
         radii += [*inside, b]
         names += [name] * (len(inside) + 1)
+    grading = None if graded is None else geometry.Grading.of(graded)
     columns = None
-    if pools and graded is not None and not geometry.Grading.of(graded).uniform:
-        columns = geometry.columns(geometry.Field(tuple(pools), p.dx_um, geometry.Grading.of(graded)))
+    if pools and grading is not None and not grading.uniform:
+        columns = geometry.columns(geometry.Field(tuple(pools), p.dx_um, grading))
     return geometry.quarter_annulus(radii, p.dx_um, layer_names=names, pool_layers=p.pool_layers, columns=columns)
 
 
