@@ -56,18 +56,18 @@ def main():
     args = ap.parse_args()
     threads.use(1)
     cfg = config.validate(config.load_yaml(args.config), ROOT / "config" / "schema.yaml")
-    p, numerics = cfg["mean"], cfg["numerics"]
+    p, numerics = cfg["mean"], Numerics.of(cfg["numerics"])
     model = artery.mean_model(p, numerics, name="bench")
     out = {
         "particles": model.n,
         "neighbour_entries": model.nb.n_entries,
-        "kernel_support_factor": Numerics.of(numerics).kernel_support_factor,
+        "kernel_support_factor": numerics.kernel_support_factor,
     }
 
     # a representative pressurised state: 103 mmHg
     lz = p["axial_stretch"]
     load = Load(lz, 103 * MMHG_TO_KPA)
-    states = Numerics.of(numerics).solver(model).follow_path(model.layout.X, Load(1.0, 0.0), [Load(lz, 0.0), load])
+    states = numerics.solver(model).follow_path(model.layout.X, Load(1.0, 0.0), [Load(lz, 0.0), load])
     x = states[-1].x
     props, _, pairs = model.material(load)
     n = model.n

@@ -64,7 +64,7 @@ def measure(dx: float, config_path: str) -> dict:
     threads.use(1)
     cfg = config.validate(config.load_yaml(config_path), ROOT / "config" / "schema.yaml")
     cfg["gag"] = materials.law_gag(cfg["gag"], "conserved")  # the charge law of the measured states
-    p, numerics = dict(cfg["bilayer"], dx_um=dx), cfg["numerics"]
+    p, numerics = dict(cfg["bilayer"], dx_um=dx), Numerics.of(cfg["numerics"])
     wall = artery.bilayer_model(p, numerics, name=f"bench_dx{dx:g}")
     # a pool of one medial particle: the particle nearest (663 um, 51.5 deg)
     lay = wall.layout
@@ -94,7 +94,7 @@ def measure(dx: float, config_path: str) -> dict:
         path_solver.cache.keep(solver.factorise(model, ev, model.jacobian(ev), 0.0, model.name))
 
     for label, reuse in (("", numerics["reuse_factorisation"]), ("_fresh_newton", False)):
-        path_solver = Numerics.of(numerics).solver(model).using(reuse=reuse)
+        path_solver = numerics.solver(model).using(reuse=reuse)
         factorised_at_start(path_solver)
         times, xs, current = [], x, load
         for _ in range(3):

@@ -25,6 +25,7 @@ from bench_solver import median_time  # noqa: E402
 
 from sphgag import config, threads  # noqa: E402
 from sphgag.engine import loading, measure  # noqa: E402
+from sphgag.engine.numerics import Numerics  # noqa: E402
 from sphgag.studies import artery  # noqa: E402
 from sphgag.studies.wall_loading import homeostasis, pressurise  # noqa: E402
 
@@ -36,7 +37,7 @@ def median_ms(fn, repeats: int) -> float:
 
 def load_row(cfg: dict, dx: float, load_name: str):
     """The lumen load ``load_name``'s row at spacing ``dx``, and the model and evaluation it was measured on."""
-    numerics = dict(cfg["numerics"], lumen_load=load_name)
+    numerics = Numerics.of(dict(cfg["numerics"], lumen_load=load_name))
     model = artery.bilayer_model(dict(cfg["bilayer"], dx_um=dx), numerics, name=f"bench_{load_name}")
     h = homeostasis(model, numerics, cfg["homeostasis"])
     state = pressurise(model, h.state, 103.0, numerics)

@@ -26,6 +26,7 @@ sys.path.insert(0, str(ROOT / "src"))
 from sphgag import config, threads  # noqa: E402
 from sphgag.engine import dynamics  # noqa: E402
 from sphgag.engine.history import swelling_load  # noqa: E402
+from sphgag.engine.numerics import Numerics  # noqa: E402
 from sphgag.physics.materials import law_gag  # noqa: E402
 from sphgag.studies import convergence  # noqa: E402
 
@@ -51,7 +52,7 @@ def main():
     args = ap.parse_args()
     threads.use(1)
     cfg = config.validate(config.load_yaml(args.config), ROOT / "config" / "schema.yaml")
-    pp, numerics = cfg["paper_procedure"], cfg["numerics"]
+    pp, numerics = cfg["paper_procedure"], Numerics.of(cfg["numerics"])
     calibration = {k: cfg["bilayer_calibration"][k] for k in ("activation_pressure_mmHg", "activation_steps")}
     gag = dict(law_gag(cfg["gag"], "prescribed"), temperature_K=pp["temperature_K"])
     case = cfg["swelling"]["cases"][pp["cases"][0]]

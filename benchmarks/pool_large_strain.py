@@ -28,6 +28,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
 from sphgag import config, threads  # noqa: E402
+from sphgag.engine.numerics import Numerics  # noqa: E402
 from sphgag.studies import artery, fe_swelling, swollen_pool  # noqa: E402
 
 SECTOR_PRESSURES = [10.0, 30.0, 44.0]  # kPa: the FE sector reaches a pool volume ratio of 4.4 at 44 kPa
@@ -52,7 +53,7 @@ def main():
         lame_lambda_kPa=bl["lame_lambda_kPa"],
         hourglass_modulus_kPa=bl["hourglass_modulus_kPa"],
     )
-    numerics = dict(cfg["numerics"], hourglass=args.hourglass)
+    numerics = Numerics.of(dict(cfg["numerics"], hourglass=args.hourglass))
     out = ROOT / "benchmarks" / "out"
     out.mkdir(exist_ok=True)
     pd.set_option("display.width", 250)

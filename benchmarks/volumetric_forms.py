@@ -100,7 +100,7 @@ def annulus_rows(cfg: dict, form: str, ratios, spacings, fraction: float) -> lis
 
 def conversion_rows(cfg: dict, forms, pressures, cases) -> list[dict]:
     """One row per (pressure, case, form): the pool's volume ratio right after conversion at c = 0 (passive wall)."""
-    bl, numerics, sw = cfg["bilayer"], cfg["numerics"], cfg["swelling"]
+    bl, numerics, sw = cfg["bilayer"], Numerics.of(cfg["numerics"]), cfg["swelling"]
     dx = float(bl["dx_um"])
     rows = []
     for pressure in pressures:
@@ -115,7 +115,7 @@ def conversion_rows(cfg: dict, forms, pressures, cases) -> list[dict]:
                 gag = dict(materials.law_gag(cfg["gag"], "prescribed"), volumetric=form)
                 model = convergence.case_model(dx, bl, numerics, gag, sw["cases"][case], f"volumetric_{case}_{form}")
                 members = model.props.converting
-                path_solver = Numerics.of(numerics).solver(model)
+                path_solver = numerics.solver(model)
                 base = swelling_load(start.load, 0.0, 0.0)
                 intact = path_solver.follow_path(start.x, base, [base], run=model.name)[-1]
                 steps = np.linspace(0.0, 1.0, int(sw["conversion_steps"]) + 1)[1:]

@@ -13,12 +13,15 @@ import pytest
 from sphgag import config, threads
 from sphgag.engine import geometry, kernel
 from sphgag.engine.model import Model
+from sphgag.engine.numerics import Numerics
 from sphgag.physics import materials
 from sphgag.studies import artery
 from sphgag.studies.wall_loading import pressurised_wall
 from sphgag.views import overlap
 
 ROOT = Path(__file__).resolve().parents[1]
+#: the CI configuration's numerics as the package takes them (the fixture ``ci_config`` holds the section's mapping)
+CI_NUMERICS = Numerics.of(config.load_yaml(ROOT / "config" / "ci.yaml")["numerics"])
 
 
 def project_copy(dest):
@@ -143,7 +146,7 @@ def ci_config():
 @pytest.fixture(scope="session")
 def ci_wall(ci_config):
     """The passive CI wall pressurised to the delamination pressure (a state to seed pools in)."""
-    numerics = ci_config["numerics"]
+    numerics = CI_NUMERICS
     return pressurised_wall(
         ci_config["bilayer"],
         numerics,
@@ -161,14 +164,14 @@ def mean_params(ci_config):
 @pytest.fixture(scope="session")
 def coarse_mean_model(ci_config):
     """Mean-behaviour model at the CI resolution (dx = 14 um)."""
-    return artery.mean_model(ci_config["mean"], ci_config["numerics"], name="test-mean")
+    return artery.mean_model(ci_config["mean"], CI_NUMERICS, name="test-mean")
 
 
 @pytest.fixture(scope="session")
 def printed_mean_model(ci_config):
     """The same model with eq. (2.14) as printed (``numerics.hourglass: paper``): the tests of the directed pair
     formula compare the kernel with it entry by entry."""
-    numerics = dict(ci_config["numerics"], hourglass="paper")
+    numerics = Numerics.of(dict(ci_config["numerics"], hourglass="paper"))
     return artery.mean_model(ci_config["mean"], numerics, name="test-mean-printed")
 
 

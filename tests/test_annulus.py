@@ -7,6 +7,8 @@ import pytest
 
 from sphgag.studies import annulus, resolution
 
+from .conftest import CI_NUMERICS
+
 
 @pytest.fixture(scope="module")
 def matrix(ci_config):
@@ -28,7 +30,7 @@ def study(ci_config, matrix, model, dx, fractions, max_volume_ratio=40.0, volume
         max_volume_ratio=max_volume_ratio,
     )
     gag = dict(ci_config["gag"], volumetric=volumetric or ci_config["gag"]["volumetric"])
-    return annulus.annulus_study(va, matrix, gag, ci_config["numerics"], model)
+    return annulus.annulus_study(va, matrix, gag, CI_NUMERICS, model)
 
 
 @pytest.fixture(scope="module")

@@ -7,6 +7,7 @@ import pytest
 
 from sphgag import config
 from sphgag.engine.loading import MMHG_TO_KPA, Load
+from sphgag.engine.numerics import Numerics
 from sphgag.physics import materials
 from sphgag.records import state
 from sphgag.records.state import StateMismatch
@@ -14,7 +15,7 @@ from sphgag.studies import artery
 from sphgag.studies.pressure_diameter import bilayer_law, bilayer_pressure_diameter, bilayer_tube
 from sphgag.studies.wall_loading import homeostasis
 
-from .conftest import ROOT
+from .conftest import CI_NUMERICS, ROOT
 
 # Bounds at the CI resolution (dx = 6 um, 1222 particles), from measured values (dx = 8 um, alpha = 50):
 # carried pressure 104.7 mmHg (semi-analytical 104.6, target 103); hoop stress (max - min)/mean
@@ -24,7 +25,7 @@ from .conftest import ROOT
 
 @pytest.fixture(scope="module")
 def ci(ci_config):
-    p, numerics = ci_config["bilayer"], ci_config["numerics"]
+    p, numerics = ci_config["bilayer"], CI_NUMERICS
     model = artery.bilayer_model(p, numerics, name="test-bilayer")
     return ci_config, model, homeostasis(model, numerics, ci_config["homeostasis"])
 
@@ -92,7 +93,7 @@ def sweeps(ci):
     for label in ("passive", "active"):
         tube = bilayer_tube(cfg["bilayer"], active=label == "active")
         out[label] = bilayer_pressure_diameter(
-            model, tube, h.state, cfg["numerics"], cal, active=label == "active", label=label
+            model, tube, h.state, Numerics.of(cfg["numerics"]), cal, active=label == "active", label=label
         )
     return out
 
@@ -172,7 +173,7 @@ def test_a_three_layer_wall_built_from_config_alone_carries_its_exact_tube_press
     b["orientations"]["lamina"] = LAMELLAR["lamina_orientations"]
     config.validate(cfg, ROOT / "config" / "schema.yaml")
 
-    model = artery.bilayer_model(b, cfg["numerics"], name="test-lamellar")
+    model = artery.bilayer_model(b, Numerics.of(cfg["numerics"]), name="test-lamellar")
     lay = model.layout
     assert lay.layer_names == ("media", "lamina", "adventitia")
     lamina = lay.layer_mask("lamina")
@@ -183,7 +184,7 @@ def test_a_three_layer_wall_built_from_config_alone_carries_its_exact_tube_press
     assert np.all(props[lamina, materials.TACT] == 0.0)  # no smc: no active tone
     assert np.all(props[lay.layer_mask("media"), materials.TACT] > 0.0)
 
-    h = homeostasis(model, cfg["numerics"], cfg["homeostasis"])
+    h = homeostasis(model, Numerics.of(cfg["numerics"]), cfg["homeostasis"])
     assert h.state.convergence.residual < cfg["numerics"]["tolerance"]
     carried = h.pressures_kPa["reactions"] / MMHG_TO_KPA
     exact = bilayer_tube(b, active=False).pressure(lay.inner_radius) / MMHG_TO_KPA

@@ -18,6 +18,7 @@ from hypothesis import strategies as st
 
 from sphgag import config
 from sphgag.engine.loading import Load
+from sphgag.engine.numerics import Numerics
 from sphgag.studies import artery
 
 from .conftest import ROOT, law_gag
@@ -142,9 +143,11 @@ def test_a_mutated_config_is_rejected_by_name_or_really_valid(case):
     for case in cfg["swelling"]["cases"].values():  # each pool is its own run, under each charge law
         for law in cfg["gag"]["charge_laws"]:
             sector = artery.pool_sector(case)
-            model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], pool=sector, gag=law_gag(cfg, law))
+            model = artery.bilayer_model(
+                cfg["bilayer"], Numerics.of(cfg["numerics"]), pool=sector, gag=law_gag(cfg, law)
+            )
             assert np.isfinite(model.props(Load(1.0, 10.0, material=(("transition", 1.0),)))).all()
-    artery.mean_model(cfg["mean"], cfg["numerics"])
+    artery.mean_model(cfg["mean"], Numerics.of(cfg["numerics"]))
 
 
 def teardown_module():

@@ -3,10 +3,11 @@
 import numpy as np
 import pytest
 
+from sphgag.engine.numerics import Numerics
 from sphgag.physics import damage, donnan
 from sphgag.studies import crack, inclusion
 
-NUMERICS = dict(
+NUMERICS = Numerics(
     kernel_support_factor=2.5,
     hourglass_alpha=5.0,
     hourglass="paper",

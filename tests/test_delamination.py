@@ -22,7 +22,7 @@ from sphgag.studies.delamination.tables import GROWTH_COLUMNS, Stop, labelled
 from sphgag.studies.pool_swelling import pool_measurements, pool_table, swell_pool
 from sphgag.studies.wall_loading import homeostasis, pressurise
 
-from .conftest import law_gag
+from .conftest import CI_NUMERICS, law_gag
 
 
 @pytest.fixture(scope="module")
@@ -42,8 +42,8 @@ def settings(ci_config, **changes):
 
 
 def grow(ci_config, wall, sectors, st, **kwargs):
-    model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-grow")
-    result = growth.grow(model, wall, sectors, st, ci_config["numerics"], law_gag(ci_config), model.props, **kwargs)
+    model = artery.bilayer_model(ci_config["bilayer"], CI_NUMERICS, name="test-grow")
+    result = growth.grow(model, wall, sectors, st, CI_NUMERICS, law_gag(ci_config), model.props, **kwargs)
     return model, result
 
 
@@ -78,8 +78,8 @@ def test_history_is_immutable_and_damage_never_decreases():
 def test_seeded_pool_material_is_the_swelling_material(ci_config):
     """The figure 4 runs are the special case 'pool seeded, no damage': conversion is the history transition."""
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
-    model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], pool=pool, gag=law_gag(ci_config))
-    base = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"]).props
+    model = artery.bilayer_model(ci_config["bilayer"], CI_NUMERICS, pool=pool, gag=law_gag(ci_config))
+    base = artery.bilayer_model(ci_config["bilayer"], CI_NUMERICS).props
     load = Load(1.0, 10.0, material=(("concentration", 150.0), ("transition", 1.0)))
     table = model.props(load)
     members = pool.members(model.layout, layer="media")
@@ -91,7 +91,7 @@ def test_seeded_pool_material_is_the_swelling_material(ci_config):
 
 
 def test_a_material_path_of_damage_is_linear_in_d_and_ends_at_the_new_history(ci_config):
-    base = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"]).props
+    base = artery.bilayer_model(ci_config["bilayer"], CI_NUMERICS).props
     n = base(Load()).shape[0]
     before = ParticleHistory.intact(n)
     after = before.with_damage(np.where(np.arange(n) == 3, 0.8, 0.0), before.onset_stretch)
@@ -123,13 +123,9 @@ def test_a_huge_critical_stress_gives_no_growth_and_the_swelling_state(ci_config
     assert (result.growth.converted_particles == 0).all() and result.summary["passes"] == 0
     # the same equilibrium as the figure 4 protocol at the highest concentration
     sw = dict(ci_config["swelling"], concentration_points=4, max_concentration_mEq_l=st.max_concentration_mEq_l)
-    seeded = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], pool=pool, gag=law_gag(ci_config))
+    seeded = artery.bilayer_model(ci_config["bilayer"], CI_NUMERICS, pool=pool, gag=law_gag(ci_config))
     table = pool_table(
-        seeded,
-        swell_pool(seeded, wall, ci_config["numerics"], sw),
-        pool,
-        sw["probe_length_um"],
-        law_gag(ci_config),
+        seeded, swell_pool(seeded, wall, CI_NUMERICS, sw), pool, sw["probe_length_um"], law_gag(ci_config)
     )
     final, hist = result.final
     members = np.flatnonzero(hist.gag)
@@ -142,10 +138,10 @@ def test_a_huge_critical_stress_gives_no_growth_and_the_swelling_state(ci_config
 def test_a_run_that_ends_where_its_pools_are_seeded_is_a_row_and_a_summary(ci_config, wall):
     """A matched G_c without growth to match (the paper's law dissipated nothing) ends at the seeded wall: one row at
     c = 0, a summary that says why, no growth."""
-    model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-seeded")
+    model = artery.bilayer_model(ci_config["bilayer"], CI_NUMERICS, name="test-seeded")
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     result = seeded_only(
-        model, wall, [pool], settings(ci_config), ci_config["numerics"], law_gag(ci_config), model.props, "no G_c"
+        model, wall, [pool], settings(ci_config), CI_NUMERICS, law_gag(ci_config), model.props, "no G_c"
     )
     assert len(result.growth) == 1 and result.growth.concentration_mEq_l.iloc[0] == 0.0
     assert result.summary["stop"] == "no G_c" and result.summary["final_length_um"] == 0.0
@@ -432,7 +428,7 @@ def soft_wall(ci_config, mu):
         "adventitia": {"elastin": 1.0, "collagen": 0.0},
     }
     gag = dict(law_gag(ci_config, "prescribed"), hourglass_modulus_kPa=1.0, volumetric="log_squared")
-    numerics = ci_config["numerics"]
+    numerics = CI_NUMERICS
     model = artery.bilayer_model(bl, numerics, name=f"test-soft-wall-{mu:g}")
     home = homeostasis(model, numerics, ci_config["homeostasis"])
     start = pressurise(model, home.state, 0.05, numerics)
@@ -458,7 +454,7 @@ def test_a_pool_past_the_limit_point_of_its_frozen_state_ends_at_that_limit_poin
     not."""
     model, start, gag = soft_wall(ci_config, 1.0)
     st = settings(ci_config, critical_stress_kPa=1e6, max_concentration_mEq_l=40.0, concentration_step_mEq_l=10.0)
-    result = growth.grow(model, start, [sector(45.0, 12.0)], st, ci_config["numerics"], gag, model.props)
+    result = growth.grow(model, start, [sector(45.0, 12.0)], st, CI_NUMERICS, gag, model.props)
     s = result.summary
     assert s["stop_kind"] == "limit point" and s["stop_level_mEq_l"] == 40.0, s["stop"]
     own = contents_limit(gag)
@@ -476,7 +472,7 @@ def test_a_damage_pass_past_the_limit_point_of_its_history_ends_at_that_limit_po
     level = 30.6
     model, start, gag = soft_wall(ci_config, 10.0)
     st = settings(ci_config, critical_stress_kPa=1e6, max_concentration_mEq_l=level, concentration_step_mEq_l=level)
-    run = GrowthRun.seed(model, start, [sector(45.0, 12.0)], st, ci_config["numerics"], gag, model.props)
+    run = GrowthRun.seed(model, start, [sector(45.0, 12.0)], st, CI_NUMERICS, gag, model.props)
     hist = run.hist
     weakened = hist.with_damage(np.where(hist.gag, hist.D, 0.9), hist.onset_stretch, hist.onset_energy)
     updates = iter([DamageUpdate(weakened)])

@@ -7,10 +7,11 @@ import pytest
 from sphgag.engine import kernel, loading
 from sphgag.engine.loading import Load
 from sphgag.engine.model import Model
+from sphgag.engine.numerics import Numerics
 from sphgag.physics import materials
 from sphgag.studies import inclusion
 
-from .conftest import Lattice, assert_jacobian_matches_fd, direct_pair_sum, isotropic_props
+from .conftest import CI_NUMERICS, Lattice, assert_jacobian_matches_fd, direct_pair_sum, isotropic_props
 
 rng = np.random.default_rng(77)
 
@@ -122,7 +123,7 @@ GAG = dict(shear_modulus_kPa=0.1, hourglass_modulus_kPa=89.71)
 def verification(ci_config):
     """The CI config's pool verification (b/dx = 4, 8) for a/b = 1, 2, 3."""
     vp = ci_config["verification"]["pool"]
-    return {r: inclusion.study(r, vp, MATRIX, GAG, ci_config["numerics"]) for r in vp["aspect_ratios"]}
+    return {r: inclusion.study(r, vp, MATRIX, GAG, CI_NUMERICS) for r in vp["aspect_ratios"]}
 
 
 @pytest.mark.parametrize("ratio, bound", [(1.0, 0.08), (2.0, 0.18), (3.0, 0.22)])
@@ -167,10 +168,10 @@ def test_without_the_interface_treatment_the_interface_rings(ci_config):
     vp = ci_config["verification"]["pool"]
     mat = inclusion.Materials(89.71, 10000.0, 0.1, 0.0, 89.71, 89.71, "none")
     model = inclusion.inclusion_model(
-        15.0, 15.0, 15.0 / 8, 45.0, mat, dict(ci_config["numerics"], hourglass_alpha=50.0)
+        15.0, 15.0, 15.0 / 8, 45.0, mat, Numerics.of(dict(ci_config["numerics"], hourglass_alpha=50.0))
     )
     material = model.props
     material.table[:, materials.TISSUE] = 1.0
-    state = inclusion.swell(model, vp["swelling_pressure_kPa"], ci_config["numerics"])
+    state = inclusion.swell(model, vp["swelling_pressure_kPa"], CI_NUMERICS)
     row = inclusion.measure_state(model, state, vp["swelling_pressure_kPa"], mat)
     assert row["traction_jump_kPa"] > 1.0 * vp["swelling_pressure_kPa"]

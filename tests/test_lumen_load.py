@@ -9,6 +9,7 @@ import pytest
 
 from sphgag.engine import loading
 from sphgag.engine.loading import MMHG_TO_KPA, Load
+from sphgag.engine.numerics import Numerics
 from sphgag.studies import wall_profiles
 
 from .test_forces import assert_jacobian_matches_fd, rng
@@ -52,7 +53,7 @@ def test_the_ring_beside_the_lumen_reads_the_exact_wall(full_config, lumen_load,
     """The mean wall at dx = 7 um, 103 mmHg: the radial stress of the ring one spacing inside the lumen against the
     exact thick wall at its material point (% of P). Measured: surface +25.6, operator -3.1 (docs/physics.md)."""
     p = dict(full_config["mean"], dx_um=7.0)
-    numerics = dict(full_config["numerics"], lumen_load=lumen_load)
+    numerics = Numerics.of(dict(full_config["numerics"], lumen_load=lumen_load))
     (found,) = wall_profiles.mean_states(p, numerics, full_config["calibration"], [103.0])
     error = wall_profiles.ring_errors(*found[1:], "paper").radial_material_error_pct.iloc[1]
     if bound is None:

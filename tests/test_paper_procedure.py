@@ -9,6 +9,7 @@ import pytest
 
 from sphgag.engine import dynamics, forces, solver
 from sphgag.engine.loading import MMHG_TO_KPA, Load
+from sphgag.engine.numerics import Numerics
 from sphgag.physics.materials import law_gag
 from sphgag.studies import convergence, paper_procedure
 
@@ -79,12 +80,16 @@ def test_the_viscous_explicit_path_reaches_the_quasi_static_equilibrium(coarse_m
 def _case_I(cfg, pp, name):
     """``(start, model, timing)``: the passive wall of ``cfg`` pressurised to 103 mmHg, figure 4's case I seeded in it
     (the paper's law at the procedure's temperature) and the procedure's stepping (``pp``: paper_procedure)."""
-    wall = dict(bilayer=cfg["bilayer"], numerics=cfg["numerics"], homeostasis=cfg["homeostasis"], active=False)
+    wall = dict(
+        bilayer=cfg["bilayer"], numerics=Numerics.of(cfg["numerics"]), homeostasis=cfg["homeostasis"], active=False
+    )
     calibration = {k: cfg["bilayer_calibration"][k] for k in ("activation_pressure_mmHg", "activation_steps")}
     dx = cfg["bilayer"]["dx_um"]
     start = convergence.pressurised_wall(dx, **wall, calibration=calibration, pressure_mmHg=103.0, name=name)
     gag = dict(law_gag(cfg["gag"], "prescribed"), temperature_K=pp["temperature_K"])
-    model = convergence.case_model(dx, cfg["bilayer"], cfg["numerics"], gag, cfg["swelling"]["cases"]["I"], "I")
+    model = convergence.case_model(
+        dx, cfg["bilayer"], Numerics.of(cfg["numerics"]), gag, cfg["swelling"]["cases"]["I"], "I"
+    )
     return start, model, {k: pp[k] for k in ("time_step", "load_update_steps")}
 
 

@@ -12,7 +12,7 @@ from sphgag.studies import artery, paper_settings
 from sphgag.studies.pool_swelling import pool_table, swell_pool, tip_length, with_hourglass_factor
 from sphgag.studies.wall_loading import homeostasis, homeostatic_load, pressurise
 
-from .conftest import ROOT, law_gag
+from .conftest import CI_NUMERICS, ROOT, law_gag
 
 SCHEMA = ROOT / "config" / "schema.yaml"
 
@@ -89,7 +89,7 @@ def test_a_run_switches_exactly_its_setting(script_config, full_config):
 
 @pytest.fixture(scope="module")
 def pressurised(ci_config):
-    numerics = ci_config["numerics"]
+    numerics = CI_NUMERICS
     model = artery.bilayer_model(ci_config["bilayer"], numerics, name="test-ps-pressurised")
     h = homeostasis(model, numerics, ci_config["homeostasis"])
     start = pressurise(model, h.state, 103.0, numerics)
@@ -101,10 +101,10 @@ def test_the_radius_held_lumen_keeps_the_inner_radius_during_swelling(ci_config,
     the lumen pressure is read back from the reactions, and moves as the pool swells."""
     sector = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     model = artery.bilayer_model(
-        ci_config["bilayer"], ci_config["numerics"], "test-ps-radius", sector, law_gag(ci_config, "prescribed")
+        ci_config["bilayer"], CI_NUMERICS, "test-ps-radius", sector, law_gag(ci_config, "prescribed")
     )
     sw = dict(ci_config["swelling"], lumen_control="radius", max_concentration_mEq_l=100.0, concentration_points=3)
-    states = swell_pool(model, pressurised, ci_config["numerics"], sw)
+    states = swell_pool(model, pressurised, CI_NUMERICS, sw)
     r0 = measure.surface_radius(model, pressurised.x, "inner")
     assert [s.concentration for s in states if s.stage == "converted"] == [0.0, 50.0, 100.0]
     for s in states:
@@ -117,7 +117,7 @@ def test_the_radius_held_lumen_keeps_the_inner_radius_during_swelling(ci_config,
 
 
 def test_the_hourglass_factor_scales_every_particles_penalty(ci_config):
-    model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], "test-ps-hourglass")
+    model = artery.bilayer_model(ci_config["bilayer"], CI_NUMERICS, "test-ps-hourglass")
     scaled = with_hourglass_factor(model, 0.1)
     assert scaled.hourglass_alpha == pytest.approx(0.1 * model.hourglass_alpha)
     assert with_hourglass_factor(model, 1.0) is model

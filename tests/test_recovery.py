@@ -8,8 +8,9 @@ import pytest
 
 from sphgag.engine import measure
 from sphgag.engine.loading import MMHG_TO_KPA, Load
-from sphgag.engine.numerics import Numerics
 from sphgag.physics import materials
+
+from .conftest import CI_NUMERICS
 
 
 def ghost_free(model) -> np.ndarray:
@@ -53,7 +54,7 @@ def test_the_average_stays_within_a_volumetric_law(ci_config):
     constant within each layer is kept."""
     from sphgag.studies import artery
 
-    m = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-bilayer")
+    m = artery.bilayer_model(ci_config["bilayer"], CI_NUMERICS, name="test-bilayer")
     props = m.material(Load(1.0, 0.0, material=(("activation", 0.0), ("prestretch", 1.0))))[0]
     v = np.where(m.layout.layer == 0, 1.0, 2.0)
     assert np.abs(measure.averaged(m, props, v) - v).max() <= 1e-12
@@ -86,7 +87,7 @@ def test_the_surfaces_carry_their_traction_and_the_equilibrium_is_unchanged(coar
     lz = ci_config["mean"]["axial_stretch"]
     P = 120.0 * MMHG_TO_KPA
     loads = [Load(lz, 0.0), Load(lz, P)]
-    state = Numerics.of(ci_config["numerics"]).solver(m).follow_path(m.layout.X, Load(1.0, 0.0), loads, run="t")[-1]
+    state = CI_NUMERICS.solver(m).follow_path(m.layout.X, Load(1.0, 0.0), loads, run="t")[-1]
     read = replace(m, stress_recovery="traction").evaluate(state.x, state.load)
     assert np.array_equal(read.f_int, state.evaluation.f_int)
     profile = measure.ring_profile(m, read)

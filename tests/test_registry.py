@@ -19,7 +19,7 @@ from sphgag.studies import annulus, inclusion, sensitivity, swollen_pool
 from sphgag.studies.delamination.settings import CANDIDATE_RULES, CRITERIA, Settings
 from sphgag.studies.pool_swelling import POOL_MODELS
 
-from .conftest import ROOT, Lattice, isotropic_props
+from .conftest import CI_NUMERICS, ROOT, Lattice, isotropic_props
 
 SCHEMA = ROOT / "config" / "schema.yaml"
 
@@ -183,7 +183,7 @@ def test_a_plugin_pool_model_holds_the_pool_as_its_class_says(pool_plugin, ci_co
         hourglass_modulus_kPa=b["hourglass_modulus_kPa"],
     )
     mat = inclusion.Materials.of(matrix, ci_config["gag"], bulk=True)
-    model = swollen_pool.circle_model(10.0, 20.0, 2.5, mat, ci_config["numerics"], plugin.VARIANT.name)
+    model = swollen_pool.circle_model(10.0, 20.0, 2.5, mat, CI_NUMERICS, plugin.VARIANT.name)
     assert model.name == "circular_cavity_as_configured_dx2.5" and len(model.cavities) == 1
 
 

@@ -15,7 +15,7 @@ from sphgag.studies.delamination.runs import load_snapshot, save_snapshots
 from sphgag.studies.delamination.settings import Settings
 from sphgag.studies.pool_swelling import state_model, swell_pool
 
-from .conftest import law_gag
+from .conftest import CI_NUMERICS, law_gag
 from .test_delamination import mirror_map
 
 
@@ -43,7 +43,7 @@ def through_a_snap(ci_config, ci_wall, tmp_path_factory):
         rupture_stretch_increment=0.005,
         candidates="window",
     )
-    numerics = dict(ci_config["numerics"], max_bisections=2)
+    numerics = Numerics.of(dict(ci_config["numerics"], max_bisections=2))
     model = artery.bilayer_model(ci_config["bilayer"], numerics, name="test-snap")
     sectors = [geometry.Sector(663.0, 45.0, 15.0, 3.0)]
     gag = dict(prescribed(ci_config), volumetric="log_squared")
@@ -110,7 +110,7 @@ def test_a_single_pool_at_45_degrees_grows_symmetrically_through_a_snap(through_
 def test_a_snap_lands_on_the_equilibrium_the_quasi_static_path_reaches_where_that_is_unique(ci_config, ci_wall):
     """Swelling a seeded pool (conserved charge) from 0 to 150 mEq/l in one pseudo-dynamic snap gives the state the
     bisected quasi-static path gives."""
-    numerics = ci_config["numerics"]
+    numerics = CI_NUMERICS
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=law_gag(ci_config))
     path_solver = Numerics.of(numerics).solver(model)
@@ -119,14 +119,14 @@ def test_a_snap_lands_on_the_equilibrium_the_quasi_static_path_reaches_where_tha
     swollen = seeded.with_material(concentration=150.0)
     path = path_solver.follow_path(conv.x, seeded, [swollen])[-1]
     jumped = snap.follow(path_solver, conv.x, swollen)
-    assert jumped.convergence.residual < numerics["tolerance"]
+    assert jumped.convergence.residual < numerics.tolerance
     u = path.x - conv.x
     assert np.abs(jumped.x - path.x).max() < 1e-3 * np.abs(u).max()
 
 
 def test_no_stable_state_ends_a_snap_with_its_reason(ci_config, ci_wall):
     """A snap that cannot come to rest within its budget is reported, not returned as a state."""
-    numerics = ci_config["numerics"]
+    numerics = CI_NUMERICS
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=law_gag(ci_config))
     load = swelling_load(ci_wall.load, 1.0, 150.0)
@@ -141,7 +141,7 @@ def test_no_stable_state_ends_a_snap_with_its_reason(ci_config, ci_wall):
 def swollen_pool(ci_config, ci_wall):
     """The CI pool of case I under the prescribed law at 50 mEq/l (concentration control), its equilibrium polished
     to a relative residual of 1e-8 (the volume control below solves to that)."""
-    numerics = ci_config["numerics"]
+    numerics = CI_NUMERICS
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=prescribed(ci_config))
     sw = dict(ci_config["swelling"], max_concentration_mEq_l=50.0, concentration_points=3)
@@ -180,7 +180,7 @@ def test_volume_control_reaches_a_requested_concentration(ci_config, swollen_poo
     """From a converged state, the volume-controlled path reaches a requested concentration, and the state it returns
     there is the one concentration control reaches."""
     model, state = swollen_pool
-    path_solver = Numerics.of(ci_config["numerics"]).solver(model).using(tol=1e-8)
+    path_solver = CI_NUMERICS.solver(model).using(tol=1e-8)
     path, reached = pool_volume.continue_path(path_solver, state, model.props.converting, [60.0])
     assert path.end == "complete" and len(reached) == 1
     assert reached[0].load.material_value("concentration") == 60.0
@@ -191,7 +191,7 @@ def test_volume_control_reaches_a_requested_concentration(ci_config, swollen_poo
 @pytest.fixture(scope="module")
 def swollen_cavity(ci_config, ci_wall):
     """The CI pool of case I as a cavity (swelling.pool_models: cavity) at 50 mEq/l, with the model it is in."""
-    numerics = ci_config["numerics"]
+    numerics = CI_NUMERICS
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=prescribed(ci_config))
     sw = dict(ci_config["swelling"], max_concentration_mEq_l=50.0, concentration_points=3, pool_model="cavity")

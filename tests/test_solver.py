@@ -13,13 +13,13 @@ from sphgag.engine.solver import PathOptions
 from sphgag.studies import artery
 from sphgag.studies.wall_loading import homeostasis, pressurise
 
-from .conftest import law_gag
+from .conftest import CI_NUMERICS, law_gag
 
 
 @pytest.fixture(scope="module")
 def wall(ci_config):
     """The passive CI wall with a pool of case I, pressurised to 103 mmHg (pool still intact)."""
-    numerics = ci_config["numerics"]
+    numerics = CI_NUMERICS
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     model = artery.bilayer_model(ci_config["bilayer"], numerics, name="test-solver", pool=pool, gag=law_gag(ci_config))
     path_solver = Numerics.of(numerics).solver(model)
@@ -94,8 +94,8 @@ def test_every_solver_keeps_a_factorisation_cache_of_its_own(ci_config):
     """A solver's cache is its own (a second solver of the same model starts empty) and is shared with the solvers
     :meth:`Solver.using` makes (other options, the same paths); a damped factorisation is not kept, and ``reset``
     forgets an undamped one."""
-    model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-cache")
-    first = Numerics.of(ci_config["numerics"]).solver(model)
+    model = artery.bilayer_model(ci_config["bilayer"], CI_NUMERICS, name="test-cache")
+    first = CI_NUMERICS.solver(model)
     second = solver.Solver(model, first.options)
     assert first.cache is not second.cache and first.cache.factorisation is None
     fac = solver.Factorisation(lambda rhs: rhs, 1.0, np.empty(0, dtype=np.int64), 0.0)
@@ -114,7 +114,7 @@ def test_every_solver_keeps_a_factorisation_cache_of_its_own(ci_config):
 def test_a_replaced_model_starts_with_empty_derived_data(ci_config):
     """``dataclasses.replace`` gives a model its own derived-data cache (material tables, hourglass stencil), empty,
     whatever the model it was made from holds; the cache is no field of its constructor, its repr or its equality."""
-    model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-replace")
+    model = artery.bilayer_model(ci_config["bilayer"], CI_NUMERICS, name="test-replace")
     load = Load(1.0, 0.0)
     model.material(load)
     assert model._cache

@@ -6,12 +6,13 @@ import pytest
 
 from sphgag.engine import geometry, solver
 from sphgag.engine.loading import Load
+from sphgag.engine.numerics import Numerics
 from sphgag.physics import donnan, materials
 from sphgag.studies import artery, convergence
 from sphgag.studies.pool_swelling import pool_table, state_model, swell_pool
 from sphgag.studies.wall_loading import homeostasis, pressurise
 
-from .conftest import law_gag
+from .conftest import CI_NUMERICS, law_gag
 
 RT = 8.314462618 * 310.0 / 1000.0  # kPa per mEq/l
 
@@ -42,7 +43,7 @@ def test_conversion_is_a_change_of_the_material_row_only():
 
 
 def pool_model(cfg, sector, name="test-pool"):
-    return artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=name, pool=sector, gag=law_gag(cfg))
+    return artery.bilayer_model(cfg["bilayer"], Numerics.of(cfg["numerics"]), name=name, pool=sector, gag=law_gag(cfg))
 
 
 def test_converted_unswollen_pool_in_an_unloaded_wall_is_in_equilibrium(ci_config):
@@ -61,7 +62,7 @@ def test_converted_unswollen_pool_in_an_unloaded_wall_is_in_equilibrium(ci_confi
 @pytest.fixture(scope="module")
 def pressurised(ci_config):
     """Passive CI-resolution wall pressurised to 103 mmHg, the pool definitions still unused."""
-    numerics = ci_config["numerics"]
+    numerics = CI_NUMERICS
     model = artery.bilayer_model(ci_config["bilayer"], numerics, name="test-pressurised")
     h = homeostasis(model, numerics, ci_config["homeostasis"])
     return pressurise(model, h.state, 103.0, numerics)
@@ -69,7 +70,9 @@ def pressurised(ci_config):
 
 def swell(cfg, start, sector):
     model = pool_model(cfg, sector)
-    states = swell_pool(model, solver.State(start.load, start.x, None, None), cfg["numerics"], cfg["swelling"])
+    states = swell_pool(
+        model, solver.State(start.load, start.x, None, None), Numerics.of(cfg["numerics"]), cfg["swelling"]
+    )
     table = pool_table(model, states, sector, cfg["swelling"]["probe_length_um"], law_gag(cfg))
     return model, table
 
@@ -100,9 +103,9 @@ def test_a_cavity_run_measures_its_pool_by_the_area_its_lining_encloses(ci_confi
     sw = dict(ci_config["swelling"], pool_model="cavity")
     sector = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     gag = law_gag(ci_config, "prescribed")
-    model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-cavity", pool=sector, gag=gag)
+    model = artery.bilayer_model(ci_config["bilayer"], CI_NUMERICS, name="test-cavity", pool=sector, gag=gag)
     start = solver.State(pressurised.load, pressurised.x, None, None)
-    states = swell_pool(model, start, ci_config["numerics"], sw)
+    states = swell_pool(model, start, CI_NUMERICS, sw)
     table = pool_table(model, states, sector, sw["probe_length_um"], gag)
     assert (table.pool_model == "cavity").all() and list(table.cavity) == [False] + [True] * (len(table) - 1)
     assert (table.residual < ci_config["numerics"]["tolerance"]).all()
@@ -134,13 +137,13 @@ def test_refining_changes_the_pool_state_at_150_mEq_l_by_less_than_the_measured_
             convergence.measure(
                 dx,
                 c["bilayer"],
-                c["numerics"],
+                Numerics.of(c["numerics"]),
                 law_gag(c),
                 cases,
                 convergence.swell_cases(
                     dx,
                     c["bilayer"],
-                    c["numerics"],
+                    Numerics.of(c["numerics"]),
                     c["homeostasis"],
                     c["swelling"],
                     law_gag(c),
@@ -172,7 +175,7 @@ def test_the_charge_law_of_a_run_selects_its_donnan_term(ci_config):
     sector = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     load = Load(1.0, 10.0, material=(("transition", 1.0), ("concentration", 150.0)))
     rows = {}
-    wall = ci_config["bilayer"], ci_config["numerics"]
+    wall = ci_config["bilayer"], CI_NUMERICS
     for law in donnan.CHARGE_LAWS:
         model = artery.bilayer_model(*wall, name="test-law", pool=sector, gag=law_gag(ci_config, law))
         assert model.props.gag == materials.Gag.of(law_gag(ci_config, law)) and model.props.gag.charge_law == law

@@ -8,6 +8,8 @@ from sphgag.engine.loading import MMHG_TO_KPA, Load
 from sphgag.studies import artery
 from sphgag.studies.pressure_diameter import mean_pressure_diameter, mean_thick_wall, pressure_points
 
+from .conftest import CI_NUMERICS
+
 # Bound for the CI resolution (dx = 14 um, 392 particles): measured 0.31 % at 200 mmHg;
 # the full resolution (dx = 7 um) gives 0.10 % (README); the error falls like dx^2.
 CI_OD_BOUND = 0.005
@@ -15,7 +17,7 @@ CI_OD_BOUND = 0.005
 
 @pytest.fixture(scope="module")
 def ci_run(ci_config):
-    p, numerics, cal = ci_config["mean"], ci_config["numerics"], ci_config["calibration"]
+    p, numerics, cal = ci_config["mean"], CI_NUMERICS, ci_config["calibration"]
     model = artery.mean_model(p, numerics, name="test-calibration")
     return model, mean_pressure_diameter(model, mean_thick_wall(p), p, numerics, cal)
 
@@ -64,8 +66,8 @@ def test_transmural_profiles_converge_to_the_exact_solution(ci_run, ci_config):
     _, coarse = ci_run
     p = dict(ci_config["mean"], dx_um=10.0)
     cal = dict(ci_config["calibration"], pressure_points=2)
-    model = artery.mean_model(p, ci_config["numerics"], name="test-refined")
-    fine = mean_pressure_diameter(model, mean_thick_wall(p), p, ci_config["numerics"], cal)
+    model = artery.mean_model(p, CI_NUMERICS, name="test-refined")
+    fine = mean_pressure_diameter(model, mean_thick_wall(p), p, CI_NUMERICS, cal)
     e_coarse, e_fine = transmural_errors(coarse), transmural_errors(fine)
     assert (e_coarse < 0.2).all()
     assert (e_fine < e_coarse / 1.4).all()

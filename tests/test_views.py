@@ -14,7 +14,7 @@ from sphgag.studies.delamination.growth import grow
 from sphgag.studies.delamination.runs import save_snapshots
 from sphgag.views import paraview
 
-from .conftest import law_gag
+from .conftest import CI_NUMERICS, law_gag
 from .test_delamination import settings
 
 
@@ -23,18 +23,16 @@ def grown(ci_config, ci_wall, tmp_path_factory):
     """A short delamination run of the CI wall (damage at once, so that the pool grows in a few passes:
     :func:`tests.test_delamination.settings`), its snapshots saved as the pipeline saves them."""
     st = settings(ci_config)
-    model = artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-views")
+    model = artery.bilayer_model(ci_config["bilayer"], CI_NUMERICS, name="test-views")
     gag = law_gag(ci_config)
-    result = grow(
-        model, ci_wall, [geometry.Sector(663.0, 45.0, 15.0, 3.0)], st, ci_config["numerics"], gag, model.props
-    )
+    result = grow(model, ci_wall, [geometry.Sector(663.0, 45.0, 15.0, 3.0)], st, CI_NUMERICS, gag, model.props)
     path = tmp_path_factory.mktemp("views") / "snapshots.npz"
     save_snapshots(path, model, result.snapshots, {"run": "test"})
     return gag, path, result
 
 
 def intact_wall(ci_config):
-    return artery.bilayer_model(ci_config["bilayer"], ci_config["numerics"], name="test-views-export")
+    return artery.bilayer_model(ci_config["bilayer"], CI_NUMERICS, name="test-views-export")
 
 
 def test_a_paraview_series_reads_back_as_the_states_it_came_from(ci_config, grown, tmp_path):

@@ -9,11 +9,13 @@ from sphgag.physics import donnan, materials
 from sphgag.studies import artery, volume_states
 from sphgag.studies.pool_swelling import swell_pool
 
+from .conftest import CI_NUMERICS
+
 
 @pytest.fixture(scope="module")
 def path(ci_config, ci_wall):
     """The CI pool of case I under the prescribed law, swollen to 100 mEq/l in steps of 25 (concentration control)."""
-    numerics = ci_config["numerics"]
+    numerics = CI_NUMERICS
     gag = materials.law_gag(ci_config["gag"], donnan.PAPER_LAW)
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=gag)
@@ -26,7 +28,7 @@ def test_a_state_at_a_volume_ratio_holds_it_and_is_the_concentration_paths(ci_co
     converted = [s for s in states if s.stage == "converted"]
     ratios = [v / v0 for _, v, v0 in (volume_states.volume_of(model, s) for s in converted)]
     middle = 0.5 * (ratios[-2] + ratios[-1])  # between the last two states of the path
-    found = volume_states.at_volume_ratios(model, states, [middle, 2.0 * ratios[-1]], ci_config["numerics"])
+    found = volume_states.at_volume_ratios(model, states, [middle, 2.0 * ratios[-1]], CI_NUMERICS)
     assert list(found) == [middle]  # beyond the path's last state: not reached, not extrapolated
     s = found[middle]
     assert s.stage == volume_states.STAGE and s.control == "volume"
@@ -48,7 +50,7 @@ def test_beyond_a_path_that_lost_equilibrium_the_volume_goes_on_as_the_control(c
     last = volume_states.volume_of(model, converted[-1])
     ratio = last[1] / last[2]
     targets = [1.05 * ratio, 1.1 * ratio]
-    found = volume_states.at_volume_ratios(model, cut, targets, ci_config["numerics"])
+    found = volume_states.at_volume_ratios(model, cut, targets, CI_NUMERICS)
     assert list(found) == targets
     for J, s in found.items():
         _, v, v0 = volume_states.volume_of(model, s)

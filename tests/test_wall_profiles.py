@@ -8,7 +8,7 @@ import pytest
 from sphgag import config
 from sphgag.studies import wall_profiles
 
-from .conftest import ROOT
+from .conftest import CI_NUMERICS, ROOT
 
 
 def _rings(dx: float, surface: float, interior: float) -> pd.DataFrame:
@@ -77,7 +77,7 @@ def test_a_bad_profile_verification_is_refused_by_key(full_config, key, value, m
 def test_the_traction_reading_gets_the_surfaces_and_the_kernel_reading_misses_the_lumen(ci_config):
     """The CI mean wall (dx = 14 um) at 103 mmHg: read from the traction, both surfaces carry the exact radial
     stress; the kernel's own stress at the lumen is far from -P (more than 30 % of P)."""
-    (found,) = wall_profiles.mean_states(ci_config["mean"], ci_config["numerics"], ci_config["calibration"], [103.0])
+    (found,) = wall_profiles.mean_states(ci_config["mean"], CI_NUMERICS, ci_config["calibration"], [103.0])
     rings = wall_profiles.wall_rings([found], ["paper", "traction"], lumen_load="surface", dx_um=14.0)
     table = wall_profiles.summary(rings).set_index("recovery")
     assert abs(table.loc["traction", "material_inner_radial_pct"]) < 1e-6

@@ -2,13 +2,14 @@
 
 from sphgag import jobs
 from sphgag.engine import solver
+from sphgag.engine.numerics import Numerics
 from sphgag.records import state
 from sphgag.studies import artery, wall
 from sphgag.studies.pressure_diameter import bilayer_pressure_diameter, bilayer_tube
 
 with jobs.run(snakemake) as job:  # noqa: F821
     cfg, label = job.params.slice, job.w.model
-    p, numerics, calibration = cfg["bilayer"], cfg["numerics"], cfg["bilayer_calibration"]
+    p, numerics, calibration = cfg["bilayer"], Numerics.of(cfg["numerics"]), cfg["bilayer_calibration"]
     model = artery.bilayer_model(p, numerics, name=job.name)
     saved = state.load(job.input.homeostatic, job.params.homeostatic_slice)
     homeostatic = solver.State(saved.load, saved.x, model.evaluate(saved.x, saved.load), None)

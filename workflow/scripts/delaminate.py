@@ -5,6 +5,7 @@ and let damage grow it, by the configured damage law (delamination.damage_law; e
 
 from sphgag import jobs
 from sphgag.engine import solver
+from sphgag.engine.numerics import Numerics
 from sphgag.records import state
 from sphgag.studies import artery
 from sphgag.studies.delamination.runs import delaminate, fracture_energy, save_snapshots
@@ -12,15 +13,15 @@ from sphgag.studies.delamination.settings import Settings
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p, cfg, w = job.params, job.params.state_slice, job.w
-    model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=job.name)
+    numerics = Numerics.of(cfg["numerics"])
+    model = artery.bilayer_model(cfg["bilayer"], numerics, name=job.name)
     saved = state.load(job.input.state, job.params.state_slice)
     matched = job.input.get("matched") or None
     gc, unmatched = fracture_energy(getattr(w, "gc", None), matched, job.log, job.name)
     settings = Settings.from_config(p.delamination, w.sigma, w.criterion, gc)
     start, sectors = solver.State(saved.load, saved.x, None, None), [artery.pool_sector(s) for s in p.pools]
-    growth, summary, result = delaminate(
-        model, start, sectors, settings, cfg, p.gag, w.poolset, unmatched, run=job.name
-    )
+    wall = (numerics, cfg["bilayer"], p.gag)
+    growth, summary, result = delaminate(model, start, sectors, settings, *wall, w.poolset, unmatched, run=job.name)
     growth.to_csv(job.output.growth, index=False)
     summary.to_csv(job.output.summary, index=False)
     params = dict(cfg, delamination=p.delamination, gag=p.gag)

@@ -2,11 +2,12 @@
 onset criterion."""
 
 from sphgag import jobs
+from sphgag.engine.numerics import Numerics
 from sphgag.studies.delamination.convergence import convergence_study
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p = job.params
-    slices = (p.bilayer, p.numerics, p.homeostasis, p.delamination, p.gag)
+    slices = (p.bilayer, Numerics.of(p.numerics), p.homeostasis, p.delamination, p.gag)
     table = convergence_study(job.w.dedx, *slices, name=job.name)
     table.insert(0, "charge_law", p.gag["charge_law"])
     table.to_csv(job.output.table, index=False)

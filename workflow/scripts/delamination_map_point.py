@@ -3,6 +3,7 @@ by eq. (2.28); what it does at each level (sphgag.studies.delamination.growth.ma
 
 from sphgag import jobs
 from sphgag.engine import solver
+from sphgag.engine.numerics import Numerics
 from sphgag.records import state
 from sphgag.studies import artery
 from sphgag.studies.delamination.growth import map_point
@@ -10,11 +11,12 @@ from sphgag.studies.delamination.settings import Settings
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p, cfg, w = job.params, job.params.state_slice, job.w
-    model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], name=job.name)
+    numerics = Numerics.of(cfg["numerics"])
+    model = artery.bilayer_model(cfg["bilayer"], numerics, name=job.name)
     saved = state.load(job.input.state, job.params.state_slice)
     settings = Settings.from_config(p.delamination, w.sigma, p.criterion)
     start, sector = solver.State(saved.load, saved.x, None, None), artery.pool_sector(p.pool)
-    table, s = map_point(model, start, sector, settings, cfg["numerics"], p.gag, w.width, run=job.name)
+    table, s = map_point(model, start, sector, settings, numerics, p.gag, w.width, run=job.name)
     table.to_csv(job.output.table, index=False)
     job.log.info(
         "[%s] %s; stopped in level %g mEq/l (%s)",

@@ -8,9 +8,9 @@ from sphgag.studies.wall_loading import homeostasis
 
 with jobs.run(snakemake) as job:  # noqa: F821
     cfg = job.params.slice
-    p, numerics, homeo = cfg["bilayer"], cfg["numerics"], cfg["homeostasis"]
+    p, numerics, homeo = cfg["bilayer"], Numerics.of(cfg["numerics"]), cfg["homeostasis"]
     model = artery.bilayer_model(p, numerics, name=job.name)
-    path_solver = Numerics.of(numerics).solver(model)  # one solver (and factorisation) for both states
+    path_solver = numerics.solver(model)  # one solver (and factorisation) for both states
     passive = homeostasis(model, numerics, homeo, path_solver=path_solver)
     carried = {"carried_pressure_kPa": passive.pressures_kPa["reactions"]}
     state.save(job.output.state, passive.state.x, passive.state.load, cfg, info=carried)

@@ -3,13 +3,14 @@
 import time
 
 from sphgag import jobs
+from sphgag.engine.numerics import Numerics
 from sphgag.records import state
 from sphgag.studies import artery, paper_procedure
 from sphgag.studies.delamination.settings import Settings
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p, w, wall, run = job.params, job.w, job.params.wall, job.name
-    model = artery.bilayer_model(dict(wall["bilayer"], dx_um=wall["dx"]), wall["numerics"], name=run)
+    model = artery.bilayer_model(dict(wall["bilayer"], dx_um=wall["dx"]), Numerics.of(wall["numerics"]), name=run)
     start = state.load(job.input.start[0], wall)
     settings = Settings.from_config(p.delamination, w.sigma, p.criterion)
     sectors = [artery.pool_sector(s) for s in p.pools]

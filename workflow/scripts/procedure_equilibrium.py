@@ -2,19 +2,21 @@
 
 from sphgag import jobs
 from sphgag.engine import solver
+from sphgag.engine.numerics import Numerics
 from sphgag.records import state
 from sphgag.studies import convergence
 from sphgag.studies.pool_swelling import swell_pool
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p, wall, run = job.params, job.params.wall, job.name
+    numerics = Numerics.of(wall["numerics"])
     saved = state.load(job.input.start, wall)
     start = solver.State(saved.load, saved.x, None, None)
     states = {
         case: swell_pool(
-            convergence.case_model(wall["dx"], wall["bilayer"], wall["numerics"], p.gag, entry, f"{run}_{case}"),
+            convergence.case_model(wall["dx"], wall["bilayer"], numerics, p.gag, entry, f"{run}_{case}"),
             start,
-            wall["numerics"],
+            numerics,
             p.settings,
         )
         for case, entry in p.cases.items()
@@ -22,7 +24,7 @@ with jobs.run(snakemake) as job:  # noqa: F821
     table = convergence.measure(
         wall["dx"],
         wall["bilayer"],
-        wall["numerics"],
+        numerics,
         p.gag,
         p.cases,
         states,

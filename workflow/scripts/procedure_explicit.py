@@ -3,13 +3,14 @@
 import time
 
 from sphgag import jobs
+from sphgag.engine.numerics import Numerics
 from sphgag.records import state
 from sphgag.studies import artery, convergence, paper_procedure
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p, w, wall, run = job.params, job.w, job.params.wall, job.name
-    entry = p.cases[w.case]
-    model = convergence.case_model(wall["dx"], wall["bilayer"], wall["numerics"], p.gag, entry, run)
+    entry, numerics = p.cases[w.case], Numerics.of(wall["numerics"])
+    model = convergence.case_model(wall["dx"], wall["bilayer"], numerics, p.gag, entry, run)
     start = state.load(job.input.start, wall)
     model, base = paper_procedure.controlled(model, start.x, start.load, p.lumen_control, p.hourglass_factor)
     t0 = time.perf_counter()

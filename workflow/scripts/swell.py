@@ -3,6 +3,7 @@ saves the states."""
 
 from sphgag import jobs
 from sphgag.engine import solver
+from sphgag.engine.numerics import Numerics
 from sphgag.records import state
 from sphgag.studies import artery
 from sphgag.studies.pool_swelling import swell_pool
@@ -10,11 +11,12 @@ from sphgag.studies.pool_swelling import swell_pool
 with jobs.run(snakemake) as job:  # noqa: F821
     p, cfg = job.params, job.params.state_slice
     pool = artery.pool_sector(p.pool)
-    model = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], job.name, pool, p.gag, p.grading)
+    numerics = Numerics.of(cfg["numerics"])
+    model = artery.bilayer_model(cfg["bilayer"], numerics, job.name, pool, p.gag, p.grading)
     saved = state.load(job.input.state, job.params.state_slice)
     start = solver.State(saved.load, artery.carried(cfg["bilayer"], saved.x, model.layout), None, None)
     # every converged state up to the end of the path (each records how the path ended: PoolState)
-    states = swell_pool(model, start, cfg["numerics"], p.settings)
+    states = swell_pool(model, start, numerics, p.settings)
     end = states[-1].path_end + (f" ({states[-1].end_reason})" if states[-1].end_reason else "")
     params = dict(state=cfg, pool=p.pool, settings=p.settings, gag=p.gag, grading=p.grading)
     state.save_series(job.output.states, [(s.x, s.load, s.info(), None) for s in states], params)

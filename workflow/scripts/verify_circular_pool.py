@@ -1,11 +1,12 @@
 """Rule verify_circular_pool_model: a circular pool at large strain against its exact solution at every spacing."""
 
 from sphgag import jobs
+from sphgag.engine.numerics import Numerics
 from sphgag.studies import inclusion, swollen_pool
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p, model = job.params, job.w.model
-    table = swollen_pool.circle_study(p.pool, p.matrix, p.gag, p.numerics, model, log=job.log)
+    table = swollen_pool.circle_study(p.pool, p.matrix, p.gag, Numerics.of(p.numerics), model, log=job.log)
     table.to_csv(job.output.table, index=False)
     orders = {j: inclusion.observed_order(g.dx_um, g.volume_error) for j, g in table.groupby("target_volume_ratio")}
     shown = ", ".join(f"{o:.2f} (J = {j:g})" for j, o in orders.items())

@@ -1,11 +1,12 @@
 """Rule verify_crack_length: a pressurised crack grown by the fracture-energy damage law, at every spacing."""
 
 from sphgag import jobs
+from sphgag.engine.numerics import Numerics
 from sphgag.studies import crack, inclusion
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p = job.params
-    table = crack.study(job.w.length, p.crack, p.matrix, p.gag, p.numerics, job.log)
+    table = crack.study(job.w.length, p.crack, p.matrix, p.gag, Numerics.of(p.numerics), job.log)
     table.to_csv(job.output.table, index=False)
     errors = ("rel_error", "area_rel_error", "energy_rel_error")
     orders = {k: inclusion.observed_order(table.dx_um, table[k]) for k in errors}

@@ -1,11 +1,12 @@
 """Rule verify_pool_ratio: a swelling elliptical inclusion against Inglis and Lame at every resolution."""
 
 from sphgag import jobs
+from sphgag.engine.numerics import Numerics
 from sphgag.studies import inclusion
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p = job.params
-    table, profiles = inclusion.study(job.w.ratio, p.pool, p.matrix, p.gag, p.numerics, log=job.log)
+    table, profiles = inclusion.study(job.w.ratio, p.pool, p.matrix, p.gag, Numerics.of(p.numerics), log=job.log)
     table.to_csv(job.output.table, index=False)
     profiles.to_csv(job.output.profiles, index=False)
     order = inclusion.observed_order(table.dx_um, table.rel_error)

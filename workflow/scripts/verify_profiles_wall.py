@@ -1,11 +1,12 @@
 """Rule verify_profiles_wall: one wall section's rings against the exact thick wall at one spacing and lumen load."""
 
 from sphgag import jobs
+from sphgag.engine.numerics import Numerics
 from sphgag.studies import wall_profiles
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p, w = job.params, job.w
-    numerics = dict(p.numerics, lumen_load=w.load)
+    numerics = Numerics.of(dict(p.numerics, lumen_load=w.load))
     wall = dict(p.wall, dx_um=wall_profiles.spacing(p.wall["dx_um"], w.level))
     if w.section == "mean":
         found = wall_profiles.mean_states(wall, numerics, p.calibration, p.pressures)

@@ -167,13 +167,12 @@ def beyond_limit(path_solver: solver.Solver, last, pressure_kPa: float, members:
     )
 
 
-def annulus_study(va: dict, matrix: dict, gag: dict, numerics, pool_model: str, log=None) -> pd.DataFrame:
+def annulus_study(va: dict, matrix: dict, gag: dict, numerics: Numerics, pool_model: str, log=None) -> pd.DataFrame:
     """One row per (outer ratio, spacing, pressure fraction) of ``va`` (``radius_um``, ``outer_ratios``, ``dx_um``,
     ``fractions``, ``beyond``, ``max_volume_ratio``): the pressure, the exact limit
     (``limit_pressure_kPa``, ``limit_kind``, ``limit_volume_ratio``), ``path_end`` and, below the limit, the measures
     of :func:`sphgag.studies.swollen_pool.measure_circle` against the exact state; at ``beyond`` times the limit,
     what :func:`beyond_limit` found (no measures: there is no exact state)."""
-    numerics = Numerics.of(numerics)
     mat = materials(pool_model, matrix, gag)
     m_solid, g_solid = swollen_pool.solids(mat)
     A = float(va["radius_um"])

@@ -88,7 +88,6 @@ def mean_fibre_families(p: dict):
 
 def mean_model(p: dict, numerics: Numerics, name: str = "mean") -> Model:
     """Mean-behaviour model (section 2.4.1, Table 1) in its unloaded reference configuration."""
-    numerics = Numerics.of(numerics)
     layout = geometry.quarter_annulus([p["inner_radius_um"], p["outer_radius_um"]], p["dx_um"])
     nb = kernel.for_layout(layout, numerics.kernel_support_factor)
     props = materials.mean_behaviour(
@@ -493,7 +492,7 @@ def bilayer_layout(p: Bilayer | dict, pools=(), graded: geometry.Grading | dict 
 
 def bilayer_model(
     p: Bilayer | dict,
-    numerics: Numerics | dict,
+    numerics: Numerics,
     name: str = "bilayer",
     pool=None,
     gag: materials.Gag | dict | None = None,
@@ -512,7 +511,6 @@ def bilayer_model(
     (:mod:`sphgag.engine.geometry`) the layout is graded around the pools, their ends cell boundaries
     (:func:`bilayer_layout`).
     """
-    numerics = Numerics.of(numerics)
     pools = [] if pool is None else [pool] if isinstance(pool, geometry.Sector) else list(pool)
     layout = bilayer_layout(p, pools, graded)
     nb = kernel.for_layout(layout, numerics.kernel_support_factor)

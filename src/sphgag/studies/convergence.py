@@ -43,7 +43,7 @@ COLUMNS = [
 def swell_cases(
     dx: float,
     bilayer: dict,
-    numerics: dict,
+    numerics: Numerics,
     homeostasis: dict,
     swelling: dict,
     gag: dict,
@@ -96,7 +96,7 @@ def series(states: dict[str, list[PoolState]], run: str) -> list:
 def pressurised_wall(
     dx: float,
     bilayer: dict,
-    numerics: dict,
+    numerics: Numerics,
     homeostasis: dict,
     calibration: dict,
     active: bool,
@@ -107,12 +107,12 @@ def pressurised_wall(
     the homeostatic state (figure 2b), then the path of the pressure-diameter sweep
     (:func:`sphgag.studies.wall_loading.wall_at`)."""
     wall = artery.bilayer_model(dict(bilayer, dx_um=float(dx)), numerics, name=name)
-    path_solver = Numerics.of(numerics).solver(wall)
+    path_solver = numerics.solver(wall)
     h = homeostasis_(wall, numerics, homeostasis, path_solver=path_solver)
     return wall_at(wall, h.state, numerics, calibration, active, pressure_mmHg, path_solver)
 
 
-def case_model(dx: float, bilayer: dict, numerics: dict, gag: dict, entry: dict, name: str, graded=None):
+def case_model(dx: float, bilayer: dict, numerics: Numerics, gag: dict, entry: dict, name: str, graded=None):
     """The bi-layered wall at spacing ``dx`` with the pool ``entry`` (a ``swelling.cases`` entry) seeded, laid out
     around it (graded by ``graded``, :mod:`sphgag.engine.geometry`)."""
     return artery.bilayer_model(dict(bilayer, dx_um=float(dx)), numerics, name, artery.pool_sector(entry), gag, graded)
@@ -121,7 +121,7 @@ def case_model(dx: float, bilayer: dict, numerics: dict, gag: dict, entry: dict,
 def measure(
     dx: float,
     bilayer: dict,
-    numerics: dict,
+    numerics: Numerics,
     gag: dict,
     cases: dict,
     states: dict[str, list[PoolState]],
@@ -149,7 +149,7 @@ def measure_saved(
     saved,
     dx: float,
     bilayer: dict,
-    numerics: dict,
+    numerics: Numerics,
     gag: dict,
     cases: dict,
     probe_length: float,

@@ -202,7 +202,6 @@ def load_at(problem: Problem, pressure: float, transition: float | None = None) 
 
 def crack_model(problem: Problem, numerics: Numerics, name: str = "crack") -> tuple[Model, HistoryMaterial]:
     """The block with its slit (seeded GAG), mirror planes on both axes and the exact far field on its outer layer."""
-    numerics = Numerics.of(numerics)
     lay = slit_layout(problem.a, problem.dx, problem.size_factor * problem.a, problem.slit_rows, problem.band_rows)
     nb = kernel.build_neighbours(lay.X, lay.volume, numerics.kernel_support_factor * lay.dx, mirrors=(1, 2))
     table = materials.empty_props(lay.n)
@@ -243,7 +242,6 @@ class Growth:
 def grow(problem: Problem, numerics: Numerics, levels, growth_cells: int, log=None, name="crack") -> Growth:
     """Raise the face pressure through ``levels`` [kPa], with damage passes at each, until the crack has grown by
     ``growth_cells`` cells or the band is used up (module docstring)."""
-    numerics = Numerics.of(numerics)
     model, material = crack_model(problem, numerics, name)
     lay: SlitLayout = model.layout
     law, h = problem.law, lay.band_width

@@ -251,7 +251,6 @@ def inclusion_model(
 ) -> Model:
     """The block with its inclusion, mirror planes on both axes and the exact far field (Inglis) on the outer ring,
     or, ``free``, the outer ring traction free."""
-    numerics = Numerics.of(numerics)
     lay = ellipse_layout(a, b, dx, extent)
     nb = kernel.build_neighbours(lay.X, lay.volume, numerics.kernel_support_factor * dx, mirrors=(1, 2))
     return Model(
@@ -272,7 +271,7 @@ def pressure_load(pressure_kPa: float) -> Load:
 def swell(model: Model, pressure_kPa: float, numerics: Numerics) -> solver.State:
     """The converged state with the inclusion at swelling pressure ``pressure_kPa`` (one load step from rest)."""
     load, rest = pressure_load(pressure_kPa), pressure_load(0.0)
-    return Numerics.of(numerics).solver(model).follow_path(model.layout.X, rest, [load], run=model.name)[-1]
+    return numerics.solver(model).follow_path(model.layout.X, rest, [load], run=model.name)[-1]
 
 
 def normal_stress(lay: EllipseLayout, ev) -> tuple[np.ndarray, np.ndarray]:

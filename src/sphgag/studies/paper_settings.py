@@ -33,6 +33,7 @@ import numpy as np
 import pandas as pd
 import yaml
 
+from ..engine.numerics import Numerics
 from ..options import Options
 from ..physics.donnan import PAPER_LAW
 from ..physics.materials import law_gag
@@ -199,11 +200,11 @@ def run(params: Mapping, active: bool, name: str) -> pd.DataFrame:
     """Figure 4's protocol under one run's ``params`` (:func:`run_params`) in the passive or ``active`` wall: every
     pool's states (:func:`sphgag.studies.convergence.swell_cases`) measured (:func:`sphgag.studies.convergence.measure`,
     the tips of ``tip_probe``)."""
-    p = params
+    p, numerics = params, Numerics.of(params["numerics"])
     states = convergence.swell_cases(
         p["dx"],
         p["bilayer"],
-        p["numerics"],
+        numerics,
         p["homeostasis"],
         p["swelling"],
         p["gag"],
@@ -217,7 +218,7 @@ def run(params: Mapping, active: bool, name: str) -> pd.DataFrame:
     return convergence.measure(
         p["dx"],
         p["bilayer"],
-        p["numerics"],
+        numerics,
         p["gag"],
         p["cases"],
         states,

@@ -31,6 +31,7 @@ import numpy as np
 import pandas as pd
 
 from ..engine import solver
+from ..engine.numerics import Numerics
 from ..options import Options, key_text
 from . import artery
 from .delamination.growth import grow
@@ -241,22 +242,22 @@ class Response:
     summary: pd.DataFrame
 
 
-def pressurised(scenario: dict, name: str) -> solver.State:
+def pressurised(scenario: dict, numerics: Numerics, name: str) -> solver.State:
     """The passive homeostatic state (figure 2b) moved to the lumen pressure under pressure control."""
     s = scenario
-    wall = artery.bilayer_model(s["bilayer"], s["numerics"], name=name)
-    h = homeostasis(wall, s["numerics"], s["homeostasis"])
-    wall = artery.bilayer_model(s["bilayer"], s["numerics"], name=name)  # a fresh model, as the pipeline's next job
+    wall = artery.bilayer_model(s["bilayer"], numerics, name=name)
+    h = homeostasis(wall, numerics, s["homeostasis"])
+    wall = artery.bilayer_model(s["bilayer"], numerics, name=name)  # a fresh model, as the pipeline's next job
     start = solver.State(h.state.load, h.state.x, wall.evaluate(h.state.x, h.state.load), None)
-    return pressurise(wall, start, s["delamination"]["pressure_mmHg"], s["numerics"])
+    return pressurise(wall, start, s["delamination"]["pressure_mmHg"], numerics)
 
 
 def respond(scenario: dict, name: str = "pool_response") -> Response:
     """Figure 4's swelling and figure 5's growth of the scenario's pool, each from the pressurised wall
     (:func:`pressurised`) as a saved state: positions and load only."""
     s = scenario
-    bl, numerics, gag, de = s["bilayer"], s["numerics"], s["gag"], s["delamination"]
-    wall = pressurised(s, name)
+    bl, numerics, gag, de = s["bilayer"], Numerics.of(s["numerics"]), s["gag"], s["delamination"]
+    wall = pressurised(s, numerics, name)
     start = solver.State(wall.load, wall.x, None, None)
     pool = artery.pool_sector(s["pool"])
     model = artery.bilayer_model(bl, numerics, name=f"{name}_swell", pool=pool, gag=gag)

@@ -380,7 +380,7 @@ def swell_pool(model: Model, start: solver.State, numerics: Numerics, sw: dict) 
     returned.
     """
     model = with_hourglass_factor(model, sw.get("hourglass_factor", 1.0))
-    path_solver = Numerics.of(numerics).solver(model)
+    path_solver = numerics.solver(model)
     run = model.name
     opts = dict(run=run, on_state=solver.log_states(run))
     held = lumen_load(model, start, sw.get("lumen_control", "pressure"))

@@ -177,7 +177,7 @@ def mean_pressure_diameter(
         len(pressures) - 1,
         pressures.max(),
     )
-    path_solver = Numerics.of(numerics).solver(model)
+    path_solver = numerics.solver(model)
     states = path_solver.follow_path(model.layout.X, Load(1.0, 0.0), loads, run=run, on_state=solver.log_states(run))
     final = [s for s in states if s.load.axial_stretch == lz]
     wanted = set(np.round(calibration["transmural_pressures_mmHg"], 10))
@@ -238,7 +238,7 @@ def bilayer_pressure_diameter(
     geometry, as in figure 3a (that of the semi-analytical tube, so that SPH
     points and exact curve share the normalisation).
     """
-    path_solver = Numerics.of(numerics).solver(model)
+    path_solver = numerics.solver(model)
     start = activated(model, homeostatic, numerics, cal, active, label, path_solver)
     P_act = cal["activation_pressure_mmHg"]
     sweep = np.linspace(0.0, cal["max_pressure_mmHg"], cal["pressure_points"])

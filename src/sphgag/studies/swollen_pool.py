@@ -94,7 +94,7 @@ def swell_from_rest(model, pressures, steps: int, numerics: Numerics) -> tuple[d
     loads = sorted(set(ramp.tolist()) | {float(p) for p in pressures})
     reached = {}
     try:
-        Numerics.of(numerics).solver(model).follow_path(
+        numerics.solver(model).follow_path(
             model.layout.X,
             inclusion.pressure_load(0.0),
             [inclusion.pressure_load(p) for p in loads],
@@ -218,7 +218,6 @@ def circle_study(
     measures and the exact ones, and ``path_end`` (``complete``, or why the spacing's path ended: its rows beyond
     the last equilibrium carry no measures).
     """
-    numerics = Numerics.of(numerics)
     A, B = float(vc["radius_um"]), float(vc["outer_radius_um"])
     mat = inclusion.Materials.of(matrix, gag, bulk=True)
     m_solid, g_solid = solids(mat)
@@ -279,7 +278,6 @@ def sector_model(
         columns=geometry.columns(geometry.Field((pool,), dx, geometry.Grading.of(graded or {}))),
     )
     members = pool.members(lay, layer=lay.pool_layers)
-    numerics = Numerics.of(numerics)
     nb = kernel.for_layout(lay, numerics.kernel_support_factor)
     material = inclusion.InclusionMaterial(lay, mat, members)
     model = Model(f"sector_pool_{pool_model}_dx{dx:g}", lay, nb, material, **numerics.model_options())
@@ -294,7 +292,6 @@ def sector_study(
     ``graded``: figure 4's measures (:func:`sphgag.studies.pool_swelling.pool_measurements`), the pool's volume ratio
     and the area its lining encloses (``lining_volume_ratio``, :class:`sphgag.engine.pool_cavity.Cavity`), to compare
     with :func:`sphgag.studies.fe_swelling.sector_pool` on the same geometry and laws."""
-    numerics = Numerics.of(numerics)
     mat = inclusion.Materials.of(matrix, gag, bulk=True)
     pool = artery.pool_sector(vs["pool"])
     pressures = sorted(float(p) for p in vs["pressures_kPa"])

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import pandas as pd
 
 from ..engine.model import Model
+from ..engine.numerics import Numerics
 from . import artery
 from .delamination.growth import grow
 from .delamination.settings import Settings
@@ -35,7 +36,7 @@ class Variant:
 
 def run_variant(
     bilayer: dict,
-    numerics: dict,
+    numerics: Numerics,
     homeostasis: dict,
     swelling: dict,
     de: dict,

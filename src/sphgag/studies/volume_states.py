@@ -39,12 +39,12 @@ def volume_of(model: Model, state: PoolState) -> tuple[pool_volume.PoolVolume, f
     return pool, pool(at.evaluate(state.x, state.load)), float(np.sum(pool.V))
 
 
-def at_volume_ratios(model: Model, states: list[PoolState], targets, numerics) -> dict[float, PoolState]:
+def at_volume_ratios(model: Model, states: list[PoolState], targets, numerics: Numerics) -> dict[float, PoolState]:
     """``{J: state}``: the state of the swelling path ``states`` (converted stage, in order of concentration) at
     which the pool holds the volume ratio ``J``, for each ``J`` of ``targets`` that the path passes, or beyond the end
     of a path that lost equilibrium. Each is solved from the last state below it (of the path, or one reached beyond
     it), with the concentration as the unknown; its ``control`` is ``volume`` and its stage :data:`STAGE`."""
-    opts = Numerics.of(numerics).solver_options()
+    opts = numerics.solver_options()
     path = [s for s in states if s.stage == "converted"]
     if not path:
         return {}

@@ -127,7 +127,7 @@ def homeostasis(
     :class:`sphgag.engine.solver.Solver` of ``model`` whose paths this one continues (its factorisation cache carries
     over: the paths of a chain on one model are solved as one); by default a new one with ``numerics``' options.
     """
-    path_solver = path_solver or Numerics.of(numerics).solver(model)
+    path_solver = path_solver or numerics.solver(model)
     run = model.name
     R0 = model.layout.inner_radius
     steps = homeo["prestretch_steps"]
@@ -170,7 +170,7 @@ def pressurise(
     pipeline takes this path (:func:`.pressure_diameter.bilayer_pressure_diameter`, the resolution studies, the
     sensitivity samples), so that the same pressure gives the same state to the bit. ``path_solver``: as
     :func:`homeostasis`'s."""
-    path_solver = path_solver or Numerics.of(numerics).solver(model)
+    path_solver = path_solver or numerics.solver(model)
     P_h = measure.carried_pressure(model, homeostatic.evaluation)
     material = homeostatic.load.material
     here = Load(1.0, P_h, material=material)
@@ -183,7 +183,7 @@ def pressurised_wall(bilayer: dict, numerics: Numerics, homeostasis_settings: di
     (:func:`homeostasis`, :func:`pressurise`), the state without
     its evaluation (a start for a run)."""
     wall = artery.bilayer_model(bilayer, numerics, name=name)
-    path_solver = Numerics.of(numerics).solver(wall)
+    path_solver = numerics.solver(wall)
     h = homeostasis(wall, numerics, homeostasis_settings, path_solver=path_solver)
     start = pressurise(wall, h.state, pressure_mmHg, numerics, path_solver=path_solver)
     return wall, solver.State(start.load, start.x, None, None)
@@ -202,7 +202,7 @@ def activated(
     homeostatic state), with its active tone (eq. 2.24) ramped there in ``cal["activation_steps"]`` steps if
     ``active``: the start of the pressure-diameter sweeps and of every pressurised state of the wall.
     ``path_solver``: as :func:`homeostasis`'s."""
-    path_solver = path_solver or Numerics.of(numerics).solver(model)
+    path_solver = path_solver or numerics.solver(model)
     run = model.name
     P_act = cal["activation_pressure_mmHg"]
     on_state = solver.log_states(run)
@@ -237,7 +237,7 @@ def wall_at(
     """The passive or active wall at ``pressure_mmHg`` under pressure control, by the path of the pressure-diameter
     sweep (:func:`activated`, then one step to the pressure): at the activation pressure, the sweep's own state to the
     bit. ``path_solver``: as :func:`homeostasis`'s."""
-    path_solver = path_solver or Numerics.of(numerics).solver(model)
+    path_solver = path_solver or numerics.solver(model)
     start = activated(model, homeostatic, numerics, cal, active, path_solver=path_solver)
     if abs(pressure_mmHg - cal["activation_pressure_mmHg"]) < 1e-12:
         return start

@@ -80,7 +80,7 @@ def _pressure_loads(pressures_mmHg, start_mmHg: float, material=()) -> list[list
     return [[Load(1.0, P * MMHG_TO_KPA, material=material) for P in branch] for branch in (down, up)]
 
 
-def mean_states(p: dict, numerics: dict, calibration: dict, pressures_mmHg) -> list:
+def mean_states(p: dict, numerics: Numerics, calibration: dict, pressures_mmHg) -> list:
     """``[(wall, model, tube, state)]``: the mean-behaviour wall ``p`` at ``pressures_mmHg`` by figure 2a's path (the
     axial stretch in ``calibration["axial_stretch_steps"]``, then the pressure in steps of at most 50 mmHg)."""
     model, tube = artery.mean_model(p, numerics), mean_thick_wall(p)
@@ -89,16 +89,16 @@ def mean_states(p: dict, numerics: dict, calibration: dict, pressures_mmHg) -> l
     ramp = np.arange(50.0, max(pressures_mmHg), 50.0)
     loads = [Load(s, 0.0) for s in np.linspace(1.0, lz, steps + 1)[1:]]
     loads += [Load(lz, P * MMHG_TO_KPA) for P in sorted({*ramp, *pressures_mmHg})]
-    path = Numerics.of(numerics).solver(model).follow_path(model.layout.X, Load(1.0, 0.0), loads, run=model.name)
+    path = numerics.solver(model).follow_path(model.layout.X, Load(1.0, 0.0), loads, run=model.name)
     wanted = {round(P, 10) for P in pressures_mmHg}
     return [("mean", model, tube, s) for s in path if _pressure(s) in wanted and s.load.axial_stretch == lz]
 
 
-def bilayer_states(p: dict, numerics: dict, homeostasis: dict, cal: dict, walls, pressures_mmHg) -> list:
+def bilayer_states(p: dict, numerics: Numerics, homeostasis: dict, cal: dict, walls, pressures_mmHg) -> list:
     """``[(wall, model, tube, state)]``: the bi-layered wall ``p``, passive and/or active (``walls``), at
     ``pressures_mmHg`` by figure 3's path (:func:`sphgag.studies.wall_loading.activated`, then pressure control)."""
     model = artery.bilayer_model(p, numerics)
-    path_solver = Numerics.of(numerics).solver(model)
+    path_solver = numerics.solver(model)
     h = homeostasis_(model, numerics, homeostasis, path_solver=path_solver)
     wanted = {round(P, 10) for P in pressures_mmHg}
     out = []

@@ -31,6 +31,7 @@ import numpy as np
 from ..engine import measure
 from ..engine.history import HistoryMaterial, ParticleHistory
 from ..engine.model import Model
+from ..engine.numerics import Numerics
 from ..records import state as state_io
 from ..studies import artery
 from ..studies.pool_swelling import state_model
@@ -124,10 +125,12 @@ def saved_series(path) -> list[Frame]:
     if {"state", "pool", "gag"} <= set(p):  # rule swell: the wall with its pool
         cfg = p["state"]
         pool = artery.pool_sector(p["pool"])
-        wall = artery.bilayer_model(cfg["bilayer"], cfg["numerics"], pool=pool, gag=p["gag"], graded=p["grading"])
+        wall = artery.bilayer_model(
+            cfg["bilayer"], Numerics.of(cfg["numerics"]), pool=pool, gag=p["gag"], graded=p["grading"]
+        )
         return swelling_frames(wall, path)
     if {"bilayer", "numerics", "delamination", "gag"} <= set(p):
-        return delamination_frames(artery.bilayer_model(p["bilayer"], p["numerics"]), path, p["gag"])
+        return delamination_frames(artery.bilayer_model(p["bilayer"], Numerics.of(p["numerics"])), path, p["gag"])
     raise ValueError(f"{path} is neither a swelling run's states nor a delamination run's snapshots")
 
 

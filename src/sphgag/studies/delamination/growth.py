@@ -142,10 +142,12 @@ class GrowthRun:
 
     # -- making a run ---------------------------------------------------------------------------------------------
     @classmethod
-    def seed(cls, model, start, sectors, settings, numerics, gag, base, *, run=None, snapshot_steps=()) -> GrowthRun:
+    def seed(
+        cls, model, start, sectors, settings, numerics: Numerics, gag, base, *, run=None, snapshot_steps=()
+    ) -> GrowthRun:
         """Convert the medial particles of ``sectors`` to GAG pools at c = 0 in the converged pressurised state
         ``start`` (``settings.conversion_steps`` converged increments of the seeding path)."""
-        path_solver, run = Numerics.of(numerics).solver(model), run or model.name
+        path_solver, run = numerics.solver(model), run or model.name
         material = artery.seeding(base, model.layout, sectors, gag)
         model.set_props(material)
         base_load = swelling_load(start.load, 0.0, 0.0)
@@ -173,10 +175,10 @@ class GrowthRun:
 
     @classmethod
     def resume(
-        cls, model, snapshot, sectors, settings, numerics, gag, base, *, run=None, snapshot_steps=()
+        cls, model, snapshot, sectors, settings, numerics: Numerics, gag, base, *, run=None, snapshot_steps=()
     ) -> GrowthRun:
         """Continue from ``snapshot = (state, history, pseudo_time)`` of this run (:func:`.runs.load_snapshot`)."""
-        path_solver, run = Numerics.of(numerics).solver(model), run or model.name
+        path_solver, run = numerics.solver(model), run or model.name
         state, hist, step = snapshot
         material = HistoryMaterial(base, hist, gag)
         model.set_props(material)
@@ -580,7 +582,7 @@ def seeded_only(
     return seeded.result(Stop("not run", stop, 0.0), Critical())
 
 
-def map_point(model, start, sector, settings: Settings, numerics: dict, gag: dict, width: float, run=None):
+def map_point(model, start, sector, settings: Settings, numerics: Numerics, gag: dict, width: float, run=None):
     """One point of the delamination map: the pool ``sector`` (``width`` degrees) grown over the ramp by ``settings``
     from ``start``; what it does at each level, labelled by charge law, angular extent and sigma_cr, with how its run
     ended. Returns the table and the run's summary."""

@@ -13,6 +13,7 @@ import pandas as pd
 
 from ...engine import measure, solver
 from ...engine.model import Model
+from ...engine.numerics import Numerics
 from ...physics import damage
 from ...records import state as state_io
 from .. import artery
@@ -42,12 +43,13 @@ def crack_modulus(bilayer: dict, sector) -> float:
     return 4.0 * bilayer["mass_fractions"][layer]["elastin"] * bilayer["elastin_shear_modulus_kPa"]
 
 
-def delaminate(model, start, sectors, settings: Settings, state: dict, gag: dict, case: str, unmatched="", run=None):
+def delaminate(
+    model, start, sectors, settings: Settings, numerics: Numerics, bilayer: dict, gag, case, unmatched="", run=None
+):
     """One run of the pool set ``case`` (its ``sectors``) from the pressurised state ``start`` of the wall ``model``
-    (made with the configuration slice ``state``): grown by ``settings``, or, where its G_c could not be matched
+    (made with the sections ``bilayer`` and ``numerics``): grown by ``settings``, or, where its G_c could not be matched
     (``unmatched``, the reason), seeded only. Returns its labelled growth and summary tables (the charge law first;
     a run with a G_c beside Griffith's closed form) and its :class:`.tables.Result`."""
-    numerics, bilayer = state["numerics"], state["bilayer"]
     if unmatched:
         paper = damage.DAMAGE_LAWS.paper.name
         seeding = dataclasses.replace(settings, damage_law=paper, fracture_energy_J_m2=np.nan)
