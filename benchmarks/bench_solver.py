@@ -93,7 +93,7 @@ def measure(dx: float, config_path: str) -> dict:
         """The solver as a run leaves it at the start state: with the LU of the Jacobian there."""
         path_solver.cache.keep(solver.factorise(model, ev, model.jacobian(ev), 0.0, model.name))
 
-    for label, reuse in (("", numerics["reuse_factorisation"]), ("_fresh_newton", False)):
+    for label, reuse in (("", numerics.reuse_factorisation), ("_fresh_newton", False)):
         path_solver = numerics.solver(model).using(reuse=reuse)
         factorised_at_start(path_solver)
         times, xs, current = [], x, load

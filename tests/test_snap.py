@@ -113,7 +113,7 @@ def test_a_snap_lands_on_the_equilibrium_the_quasi_static_path_reaches_where_tha
     numerics = CI_NUMERICS
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=law_gag(ci_config))
-    path_solver = Numerics.of(numerics).solver(model)
+    path_solver = numerics.solver(model)
     seeded = swelling_load(ci_wall.load, 1.0, 0.0)
     conv = path_solver.follow_path(ci_wall.x, swelling_load(ci_wall.load, 0.0, 0.0), [seeded])[-1]
     swollen = seeded.with_material(concentration=150.0)
@@ -131,7 +131,7 @@ def test_no_stable_state_ends_a_snap_with_its_reason(ci_config, ci_wall):
     model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=law_gag(ci_config))
     load = swelling_load(ci_wall.load, 1.0, 150.0)
     with pytest.raises(snap.NoStableState, match="no equilibrium in 2 steps"):
-        snap.follow(Numerics.of(numerics).solver(model), ci_wall.x, load, max_steps=2)
+        snap.follow(numerics.solver(model), ci_wall.x, load, max_steps=2)
 
 
 # -- the pool's volume as the control --------------------------------------------------------------------------------

@@ -8,7 +8,6 @@ import pytest
 from sphgag.engine import solver
 from sphgag.engine.history import swelling_load
 from sphgag.engine.loading import MMHG_TO_KPA, Load
-from sphgag.engine.numerics import Numerics
 from sphgag.engine.solver import PathOptions
 from sphgag.studies import artery
 from sphgag.studies.wall_loading import homeostasis, pressurise
@@ -22,7 +21,7 @@ def wall(ci_config):
     numerics = CI_NUMERICS
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
     model = artery.bilayer_model(ci_config["bilayer"], numerics, name="test-solver", pool=pool, gag=law_gag(ci_config))
-    path_solver = Numerics.of(numerics).solver(model)
+    path_solver = numerics.solver(model)
     h = homeostasis(model, numerics, ci_config["homeostasis"], path_solver=path_solver)
     return model, pressurise(model, h.state, 103.0, numerics, path_solver=path_solver)
 

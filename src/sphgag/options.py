@@ -5,9 +5,9 @@ The package is entered with typed options: :class:`sphgag.engine.numerics.Numeri
 :class:`sphgag.studies.delamination.settings.Settings` (one run's delamination settings). The pipeline keeps plain
 dicts where rerun detection and provenance read them (Snakemake ``params``, the parameters a state file records). A
 job builds its :class:`~sphgag.engine.numerics.Numerics` from them once, where it enters the package (its script, or
-a study that reads a whole configuration: a sensitivity sample, a run under the authors' settings), and every function
-below takes them typed; the other options are built with ``of`` by the functions that read them. A key the options do
-not know, or one they miss, raises naming it.
+a study that reads a whole configuration: a sensitivity sample, a run under the authors' settings, the ParaView
+export), and every function below takes them typed; the other options are built with ``of`` by the functions that
+read them. A key the options do not know, or one they miss, raises naming it.
 
 Every top-level section of the configuration has its options (``SECTION`` names it; :data:`sphgag.config.SECTIONS`
 lists them), each in the module of the concept it configures. The relations between keys that the JSON schema cannot

@@ -1,8 +1,8 @@
 """Arterial models built from configuration slices (paper section 2.4, Tables 1-2).
 
 A Snakemake rule passes exactly the parameters it depends on, as plain dictionaries (the ``mean``, ``bilayer`` and
-``numerics`` sections of ``config/config.yaml``); the bi-layered wall and the numerics are read as typed options
-(:class:`Bilayer`, :class:`sphgag.engine.numerics.Numerics`).
+``numerics`` sections of ``config/config.yaml``); the models take the numerics typed (:class:`sphgag.engine.numerics.
+Numerics`, built once by the job) and read the bi-layered wall as typed options (:class:`Bilayer`).
 """
 
 from __future__ import annotations
