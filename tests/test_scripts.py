@@ -3,6 +3,7 @@
 
 import ast
 import json
+import re
 from pathlib import Path
 from types import SimpleNamespace
 
@@ -11,8 +12,11 @@ import pytest
 
 from sphgag import jobs
 from sphgag.jobs import kinds
+from sphgag.studies import crack
 from sphgag.studies.delamination.runs import fracture_energy
 from sphgag.studies.delamination.settings import MATCHED, Settings
+from sphgag.studies.inclusion import Materials
+from sphgag.studies.paper_procedure import Timing
 
 from .conftest import ROOT
 
@@ -198,3 +202,36 @@ def test_a_delamination_job_has_one_shape_of_settings(ci_config, tmp_path):
     summary.write_text("dissipated_energy_J_m2\nnan\n")
     gc, unmatched = fracture_energy(MATCHED, str(summary))
     assert np.isnan(gc) and "no G_c to match" in unmatched
+
+
+def test_the_rules_hold_no_key_filter_of_their_own():
+    """A rule passes a section's keys by a declaration of the package (the options' roles, ``Options.keys_in``, a
+    reader's ``gag_settings``), never by key names written in the rule: no mapping built from a literal list of keys,
+    or filtered by one."""
+    by_names = re.compile(r"""\{\s*(\w+)\s*:[^{}]*?\[\1\]\s*for \1 in [(\[]\s*["']""")
+    filtered = re.compile(r"""\.items\(\)\s*if \w+ (?:not )?in [(\[]\s*["']""")
+    found = [
+        f"{path.name}: {m.group(0)!r}"
+        for path in sorted((ROOT / "workflow" / "rules").glob("*.smk"))
+        for pattern in (by_names, filtered)
+        for m in pattern.finditer(path.read_text())
+    ]
+    assert found == []
+    assert by_names.search('{\n    k: config["gag"][k]\n    for k in ("shear_modulus_kPa", "temperature_K")\n}')
+    assert filtered.search('{k: v for k, v in sw.items() if k not in ("cases", "pressures_mmHg")}')
+
+
+@pytest.mark.parametrize("bulk", [False, True])
+def test_a_verification_reads_exactly_the_gag_keys_it_declares(ci_config, bulk):
+    """The GAG of the pool verifications (:meth:`Materials.gag_settings`) is what :meth:`Materials.of` reads: enough
+    to build the materials, and each key needed."""
+    matrix = dict(shear_modulus_kPa=89.71, lame_lambda_kPa=1.0e4, hourglass_modulus_kPa=89.71)
+    declared = Materials.gag_settings(ci_config["gag"], bulk=bulk)
+    assert Materials.of(matrix, declared, bulk=bulk) == Materials.of(matrix, ci_config["gag"], bulk=bulk)
+    for key in declared:
+        with pytest.raises(KeyError):
+            Materials.of(matrix, {k: v for k, v in declared.items() if k != key}, bulk=bulk)
+    assert list(crack.gag_settings(ci_config["gag"]))[2:] == ["bath_concentration_mEq_l", "temperature_K"]
+    assert Timing.keys_in(ci_config["paper_procedure"]) == {
+        k: ci_config["paper_procedure"][k] for k in ("time_step", "load_update_steps")
+    }

@@ -88,6 +88,12 @@ class Options:
         return {k: v for k, v in mapping.items() if kinds[k] is None or kinds[k] in roles}
 
     @classmethod
+    def keys_in(cls, mapping: Mapping) -> dict:
+        """This class's keys out of the mapping ``mapping``, a section that holds them among others (a job that reads
+        only these), in the order of its fields."""
+        return {f.name: mapping[f.name] for f in fields(cls)}
+
+    @classmethod
     def of(cls, value):
         """``value`` as options of this class: itself, or built from a mapping (:meth:`from_mapping`)."""
         return value if isinstance(value, cls) else cls.from_mapping(value, cls.SECTION)

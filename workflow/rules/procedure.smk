@@ -1,6 +1,8 @@
 # The authors' explicit, fixed-step procedure beside our equilibria (target paper_procedure): figure 4's pools
 # swollen by leapfrog pseudo-dynamics at the script's step counts and at multiples of them, against the equilibrium
 # path of the same walls, at the same spacing and temperature.
+from sphgag.studies.paper_procedure import Timing
+
 PP = config["paper_procedure"]
 PP_FACTORS = [str(f) for f in PP["step_factors"]]
 # the equilibrium runs of this target: the figure 4 protocol at its spacing, its pools and its temperature
@@ -17,7 +19,7 @@ PP_SIMULATION = dict(
     gag=canonical(dict(law_gag(config["gag"], PAPER_LAW), temperature_K=PP["temperature_K"])),  # configured or not
     cases={c: SW["cases"][c] for c in PP["cases"]},
 )
-PP_TIMING = {k: PP[k] for k in ("time_step", "load_update_steps")}
+PP_TIMING = Timing.keys_in(PP)
 # the summary's concentration: the top of figure 4's ramp, or where the explicit runs stop below it
 PP_TOP = min(SW["max_concentration_mEq_l"], PP["swelling"]["stop_concentration_mEq_l"])
 # the damage runs: each pool set of paper_procedure.pool_sets at each of its sigma_cr and every step factor

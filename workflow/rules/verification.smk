@@ -1,5 +1,6 @@
+from sphgag.studies import crack
 from sphgag.studies.annulus import AnnulusVerification
-from sphgag.studies.inclusion import PoolVerification
+from sphgag.studies.inclusion import Materials, PoolVerification
 from sphgag.studies.swollen_pool import CircularPoolVerification
 
 VP = config["verification"]["pool"]
@@ -11,9 +12,7 @@ POOL_MATRIX = {
     "hourglass_modulus_kPa": config["bilayer"]["hourglass_modulus_kPa"],
 }
 # the GAG of the large-strain verifications: the study's, with its volumetric term (gag.volumetric)
-POOL_GAG = {
-    k: config["gag"][k] for k in ("shear_modulus_kPa", "lame_lambda_kPa", "volumetric", "hourglass_modulus_kPa")
-}
+POOL_GAG = Materials.gag_settings(config["gag"], bulk=True)
 
 
 wildcard_constraints:
@@ -38,7 +37,7 @@ rule verify_pool_ratio:
     params:
         pool=PoolVerification.job_settings(VP),
         matrix=POOL_MATRIX,
-        gag={k: config["gag"][k] for k in ("shear_modulus_kPa", "hourglass_modulus_kPa")},
+        gag=Materials.gag_settings(config["gag"]),
         numerics=config["numerics"],
     script:
         "../scripts/verify_pool.py"
@@ -125,10 +124,7 @@ rule verify_crack_length:
     params:
         crack=VC,
         matrix=POOL_MATRIX,
-        gag={
-            k: config["gag"][k]
-            for k in ("shear_modulus_kPa", "hourglass_modulus_kPa", "bath_concentration_mEq_l", "temperature_K")
-        },
+        gag=crack.gag_settings(config["gag"]),
         numerics=config["numerics"],
     script:
         "../scripts/verify_crack.py"

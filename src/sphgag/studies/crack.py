@@ -38,6 +38,7 @@ area.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -188,6 +189,13 @@ class Problem:
 
     def griffith(self, a: float) -> float:
         return float(damage.griffith_pressure(a, self.fracture_energy_J_m2 * damage.J_M2, self.modulus))
+
+
+def gag_settings(gag: Mapping) -> dict:
+    """What the crack verification reads of the ``gag`` section ``gag``: the GAG's moduli
+    (:meth:`sphgag.studies.inclusion.Materials.gag_settings`), and the bath and temperature of the Donnan law that turns
+    a face pressure into a concentration (:func:`load_at`)."""
+    return Materials.gag_settings(gag, also=("bath_concentration_mEq_l", "temperature_K"))
 
 
 def load_at(problem: Problem, pressure: float, transition: float | None = None) -> Load:

@@ -37,7 +37,9 @@ points, it reproduces the tip value to 2 % at ``b/dx = 16`` for ``a/b = 3``
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
+from typing import ClassVar
 
 import numpy as np
 import pandas as pd
@@ -185,6 +187,16 @@ class Materials:
     hourglass_modulus: float
     gag_hourglass_modulus: float
     volumetric: str
+
+    #: the keys of the ``gag`` section that :meth:`of` reads: the GAG's moduli, and with ``bulk`` its volumetric term's
+    GAG_KEYS: ClassVar[tuple] = ("shear_modulus_kPa", "hourglass_modulus_kPa")
+    BULK_GAG_KEYS: ClassVar[tuple] = ("shear_modulus_kPa", "lame_lambda_kPa", "volumetric", "hourglass_modulus_kPa")
+
+    @classmethod
+    def gag_settings(cls, gag: Mapping, bulk: bool = False, also: tuple = ()) -> dict:
+        """What a verification job reads of the ``gag`` section ``gag``: the keys :meth:`of` reads (with ``bulk`` or
+        without), then those of ``also``."""
+        return {k: gag[k] for k in (cls.BULK_GAG_KEYS if bulk else cls.GAG_KEYS) + also}
 
     @classmethod
     def of(cls, matrix: dict, gag: dict, bulk: bool = False) -> Materials:
