@@ -146,10 +146,9 @@ def ci_config():
 @pytest.fixture(scope="session")
 def ci_wall(ci_config):
     """The passive CI wall pressurised to the delamination pressure (a state to seed pools in)."""
-    numerics = CI_NUMERICS
     return pressurised_wall(
         ci_config["bilayer"],
-        numerics,
+        CI_NUMERICS,
         ci_config["homeostasis"],
         ci_config["delamination"]["pressure_mmHg"],
         "test-wall",

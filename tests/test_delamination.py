@@ -428,10 +428,9 @@ def soft_wall(ci_config, mu):
         "adventitia": {"elastin": 1.0, "collagen": 0.0},
     }
     gag = dict(law_gag(ci_config, "prescribed"), hourglass_modulus_kPa=1.0, volumetric="log_squared")
-    numerics = CI_NUMERICS
-    model = artery.bilayer_model(bl, numerics, name=f"test-soft-wall-{mu:g}")
-    home = homeostasis(model, numerics, ci_config["homeostasis"])
-    start = pressurise(model, home.state, 0.05, numerics)
+    model = artery.bilayer_model(bl, CI_NUMERICS, name=f"test-soft-wall-{mu:g}")
+    home = homeostasis(model, CI_NUMERICS, ci_config["homeostasis"])
+    start = pressurise(model, home.state, 0.05, CI_NUMERICS)
     return model, solver.State(start.load, start.x, None, None), gag
 
 

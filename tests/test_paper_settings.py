@@ -89,10 +89,9 @@ def test_a_run_switches_exactly_its_setting(script_config, full_config):
 
 @pytest.fixture(scope="module")
 def pressurised(ci_config):
-    numerics = CI_NUMERICS
-    model = artery.bilayer_model(ci_config["bilayer"], numerics, name="test-ps-pressurised")
-    h = homeostasis(model, numerics, ci_config["homeostasis"])
-    start = pressurise(model, h.state, 103.0, numerics)
+    model = artery.bilayer_model(ci_config["bilayer"], CI_NUMERICS, name="test-ps-pressurised")
+    h = homeostasis(model, CI_NUMERICS, ci_config["homeostasis"])
+    start = pressurise(model, h.state, 103.0, CI_NUMERICS)
     return solver.State(start.load, start.x, None, None)
 
 

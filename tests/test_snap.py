@@ -110,28 +110,26 @@ def test_a_single_pool_at_45_degrees_grows_symmetrically_through_a_snap(through_
 def test_a_snap_lands_on_the_equilibrium_the_quasi_static_path_reaches_where_that_is_unique(ci_config, ci_wall):
     """Swelling a seeded pool (conserved charge) from 0 to 150 mEq/l in one pseudo-dynamic snap gives the state the
     bisected quasi-static path gives."""
-    numerics = CI_NUMERICS
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
-    model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=law_gag(ci_config))
-    path_solver = numerics.solver(model)
+    model = artery.bilayer_model(ci_config["bilayer"], CI_NUMERICS, pool=pool, gag=law_gag(ci_config))
+    path_solver = CI_NUMERICS.solver(model)
     seeded = swelling_load(ci_wall.load, 1.0, 0.0)
     conv = path_solver.follow_path(ci_wall.x, swelling_load(ci_wall.load, 0.0, 0.0), [seeded])[-1]
     swollen = seeded.with_material(concentration=150.0)
     path = path_solver.follow_path(conv.x, seeded, [swollen])[-1]
     jumped = snap.follow(path_solver, conv.x, swollen)
-    assert jumped.convergence.residual < numerics.tolerance
+    assert jumped.convergence.residual < CI_NUMERICS.tolerance
     u = path.x - conv.x
     assert np.abs(jumped.x - path.x).max() < 1e-3 * np.abs(u).max()
 
 
 def test_no_stable_state_ends_a_snap_with_its_reason(ci_config, ci_wall):
     """A snap that cannot come to rest within its budget is reported, not returned as a state."""
-    numerics = CI_NUMERICS
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
-    model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=law_gag(ci_config))
+    model = artery.bilayer_model(ci_config["bilayer"], CI_NUMERICS, pool=pool, gag=law_gag(ci_config))
     load = swelling_load(ci_wall.load, 1.0, 150.0)
     with pytest.raises(snap.NoStableState, match="no equilibrium in 2 steps"):
-        snap.follow(numerics.solver(model), ci_wall.x, load, max_steps=2)
+        snap.follow(CI_NUMERICS.solver(model), ci_wall.x, load, max_steps=2)
 
 
 # -- the pool's volume as the control --------------------------------------------------------------------------------
@@ -141,11 +139,10 @@ def test_no_stable_state_ends_a_snap_with_its_reason(ci_config, ci_wall):
 def swollen_pool(ci_config, ci_wall):
     """The CI pool of case I under the prescribed law at 50 mEq/l (concentration control), its equilibrium polished
     to a relative residual of 1e-8 (the volume control below solves to that)."""
-    numerics = CI_NUMERICS
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
-    model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=prescribed(ci_config))
+    model = artery.bilayer_model(ci_config["bilayer"], CI_NUMERICS, pool=pool, gag=prescribed(ci_config))
     sw = dict(ci_config["swelling"], max_concentration_mEq_l=50.0, concentration_points=3)
-    last = swell_pool(model, ci_wall, numerics, sw)[-1]
+    last = swell_pool(model, ci_wall, CI_NUMERICS, sw)[-1]
     polished = solver.Solver(model, dict(tol=1e-8)).follow_path(last.x, last.load, [last.load])[-1]
     return model, solver.State(polished.load, polished.x, model.evaluate(polished.x, polished.load), None)
 
@@ -191,11 +188,10 @@ def test_volume_control_reaches_a_requested_concentration(ci_config, swollen_poo
 @pytest.fixture(scope="module")
 def swollen_cavity(ci_config, ci_wall):
     """The CI pool of case I as a cavity (swelling.pool_models: cavity) at 50 mEq/l, with the model it is in."""
-    numerics = CI_NUMERICS
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
-    model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=prescribed(ci_config))
+    model = artery.bilayer_model(ci_config["bilayer"], CI_NUMERICS, pool=pool, gag=prescribed(ci_config))
     sw = dict(ci_config["swelling"], max_concentration_mEq_l=50.0, concentration_points=3, pool_model="cavity")
-    last = swell_pool(model, ci_wall, numerics, sw)[-1]
+    last = swell_pool(model, ci_wall, CI_NUMERICS, sw)[-1]
     assert last.cavity
     hollow = state_model(model, True, last.x)
     return hollow, solver.State(last.load, last.x, hollow.evaluate(last.x, last.load), None)

@@ -18,12 +18,13 @@ from .conftest import CI_NUMERICS, law_gag
 @pytest.fixture(scope="module")
 def wall(ci_config):
     """The passive CI wall with a pool of case I, pressurised to 103 mmHg (pool still intact)."""
-    numerics = CI_NUMERICS
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
-    model = artery.bilayer_model(ci_config["bilayer"], numerics, name="test-solver", pool=pool, gag=law_gag(ci_config))
-    path_solver = numerics.solver(model)
-    h = homeostasis(model, numerics, ci_config["homeostasis"], path_solver=path_solver)
-    return model, pressurise(model, h.state, 103.0, numerics, path_solver=path_solver)
+    model = artery.bilayer_model(
+        ci_config["bilayer"], CI_NUMERICS, name="test-solver", pool=pool, gag=law_gag(ci_config)
+    )
+    path_solver = CI_NUMERICS.solver(model)
+    h = homeostasis(model, CI_NUMERICS, ci_config["homeostasis"], path_solver=path_solver)
+    return model, pressurise(model, h.state, 103.0, CI_NUMERICS, path_solver=path_solver)
 
 
 def both_ways(model, x, start, targets, tol):

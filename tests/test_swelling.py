@@ -62,10 +62,9 @@ def test_converted_unswollen_pool_in_an_unloaded_wall_is_in_equilibrium(ci_confi
 @pytest.fixture(scope="module")
 def pressurised(ci_config):
     """Passive CI-resolution wall pressurised to 103 mmHg, the pool definitions still unused."""
-    numerics = CI_NUMERICS
-    model = artery.bilayer_model(ci_config["bilayer"], numerics, name="test-pressurised")
-    h = homeostasis(model, numerics, ci_config["homeostasis"])
-    return pressurise(model, h.state, 103.0, numerics)
+    model = artery.bilayer_model(ci_config["bilayer"], CI_NUMERICS, name="test-pressurised")
+    h = homeostasis(model, CI_NUMERICS, ci_config["homeostasis"])
+    return pressurise(model, h.state, 103.0, CI_NUMERICS)
 
 
 def swell(cfg, start, sector):

@@ -15,12 +15,11 @@ from .conftest import CI_NUMERICS
 @pytest.fixture(scope="module")
 def path(ci_config, ci_wall):
     """The CI pool of case I under the prescribed law, swollen to 100 mEq/l in steps of 25 (concentration control)."""
-    numerics = CI_NUMERICS
     gag = materials.law_gag(ci_config["gag"], donnan.PAPER_LAW)
     pool = artery.pool_sector(ci_config["swelling"]["cases"]["I"])
-    model = artery.bilayer_model(ci_config["bilayer"], numerics, pool=pool, gag=gag)
+    model = artery.bilayer_model(ci_config["bilayer"], CI_NUMERICS, pool=pool, gag=gag)
     sw = dict(ci_config["swelling"], max_concentration_mEq_l=100.0, concentration_points=5)
-    return model, swell_pool(model, ci_wall, numerics, sw)
+    return model, swell_pool(model, ci_wall, CI_NUMERICS, sw)
 
 
 def test_a_state_at_a_volume_ratio_holds_it_and_is_the_concentration_paths(ci_config, path):

@@ -20,8 +20,9 @@ with jobs.run(snakemake) as job:  # noqa: F821
     gc, unmatched = fracture_energy(getattr(w, "gc", None), matched, job.log, job.name)
     settings = Settings.from_config(p.delamination, w.sigma, w.criterion, gc)
     start, sectors = solver.State(saved.load, saved.x, None, None), [artery.pool_sector(s) for s in p.pools]
-    wall = (numerics, cfg["bilayer"], p.gag)
-    growth, summary, result = delaminate(model, start, sectors, settings, *wall, w.poolset, unmatched, run=job.name)
+    growth, summary, result = delaminate(
+        model, start, sectors, settings, numerics, cfg["bilayer"], p.gag, w.poolset, unmatched, run=job.name
+    )
     growth.to_csv(job.output.growth, index=False)
     summary.to_csv(job.output.summary, index=False)
     params = dict(cfg, delamination=p.delamination, gag=p.gag)

@@ -9,7 +9,9 @@ from sphgag.studies import convergence
 with jobs.run(snakemake) as job:  # noqa: F821
     p = job.params
     saved = state.load_series(job.input.states, {k: v for k, v in dict(p).items() if k != "probe_length"})
-    run = (p.bilayer, Numerics.of(p.numerics), p.gag, p.cases, p.probe_length, job.w.model, job.name, p.grading)
-    table = convergence.measure_saved(saved, job.w.dx, *run)
+    numerics = Numerics.of(p.numerics)
+    table = convergence.measure_saved(
+        saved, job.w.dx, p.bilayer, numerics, p.gag, p.cases, p.probe_length, job.w.model, job.name, p.grading
+    )
     table.to_csv(job.output.table, index=False)
     job.record(dict(p), dict(max_residual=float(table.residual.max())))

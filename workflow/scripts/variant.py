@@ -7,8 +7,8 @@ from sphgag.studies import variants
 
 with jobs.run(snakemake) as job:  # noqa: F821
     p = job.params
-    wall = (p.bilayer, Numerics.of(p.numerics), p.homeostasis)
-    v = variants.run_variant(*wall, p.swelling, p.delamination, p.gag, name=job.name)
+    numerics = Numerics.of(p.numerics)
+    v = variants.run_variant(p.bilayer, numerics, p.homeostasis, p.swelling, p.delamination, p.gag, name=job.name)
     for what in ("swelling", "growth", "summary"):  # each table first by its form and charge law
         table = getattr(v, what)
         table.insert(0, "hourglass", job.w.form)
