@@ -336,20 +336,24 @@ def pair_force_scale(V, ptr, a, P, out):
 # ---------------------------------------------------------------------------
 
 
-def block_pattern(ptr, nbr):
+def block_pattern(ptr, nbr, owner=None):
     """Sparsity of the Jacobian: every pair of particles sharing a stencil.
 
     Returns ``(indptr, indices, blockmap, map_ptr)``: a block-CSR pattern and,
-    for particle i with stencil nodes ``[i, nbr[ptr[i]:ptr[i+1]]]`` (size m),
-    ``blockmap[map_ptr[i] + p*m + q]`` = block index of (node p, node q).
+    for stencil i with nodes ``[owner[i], nbr[ptr[i]:ptr[i+1]]]`` (size m),
+    ``blockmap[map_ptr[i] + p*m + q]`` = block index of (node p, node q). The stencils are the particles'
+    (``owner`` None: stencil i is particle i's) or those of integration points (:mod:`sphgag.engine.quadrature`:
+    ``nbr`` their neighbour particles, ``owner`` each point's particle).
     """
-    n = ptr.shape[0] - 1
+    stencils = ptr.shape[0] - 1
+    owner = np.arange(stencils) if owner is None else np.asarray(owner, dtype=np.int64)
+    n = int(owner.max()) + 1 if owner.size else 0
     counts = np.diff(ptr) + 1
-    map_ptr = np.zeros(n + 1, dtype=np.int64)
+    map_ptr = np.zeros(stencils + 1, dtype=np.int64)
     np.cumsum(counts * counts, out=map_ptr[1:])
     rows = np.empty(map_ptr[-1], dtype=np.int64)
     cols = np.empty(map_ptr[-1], dtype=np.int64)
-    _pattern_pairs(ptr, nbr, map_ptr, rows, cols)
+    _pattern_pairs(ptr, nbr, owner, map_ptr, rows, cols)
     keys = rows * n + cols
     uniq, inverse = np.unique(keys, return_inverse=True)
     brow, bcol = uniq // n, uniq % n
@@ -359,15 +363,15 @@ def block_pattern(ptr, nbr):
 
 
 @njit(cache=True)
-def _pattern_pairs(ptr, nbr, map_ptr, rows, cols):
+def _pattern_pairs(ptr, nbr, owner, map_ptr, rows, cols):
     n = ptr.shape[0] - 1
     for i in range(n):
         m = ptr[i + 1] - ptr[i] + 1
         base = map_ptr[i]
         for p in range(m):
-            rp = i if p == 0 else nbr[ptr[i] + p - 1]
+            rp = owner[i] if p == 0 else nbr[ptr[i] + p - 1]
             for q in range(m):
-                rq = i if q == 0 else nbr[ptr[i] + q - 1]
+                rq = owner[i] if q == 0 else nbr[ptr[i] + q - 1]
                 rows[base + p * m + q] = rp
                 cols[base + p * m + q] = rq
 
@@ -381,7 +385,7 @@ def jacobian_blocks(x, V, ptr, nbr, mir, a, s, ah, sh, R, hgc, F, Fh, lz, cth, s
     derivative of the pair vectors ``c delta n`` through the hourglass gradient
     ``F~_i`` (node vectors ``-sh_i``, ``ah_ik``), ``r`` and ``n``.
     """
-    n = x.shape[0]
+    n = ptr.shape[0] - 1  # stencils: the particles', or the integration points' (engine.quadrature)
     C = np.empty((3, 3))
     A = np.empty((4, 4))
     for i in range(n):
@@ -511,7 +515,7 @@ class EnergyForm(HourglassForm):
     pair forces in the elastic kernels (their coefficients are zero)."""
 
     def contribute(self, model, ah, sh, hgc):
-        nb = model.nb
+        nb = model.stencil
         stiffness = np.zeros((model.block_indices.size, 2, 2))
         energy_stiffness_blocks(nb.ptr, nb.nbr, nb.mirror, nb.R, ah, sh, hgc, model.blockmap, model.map_ptr, stiffness)
         return np.zeros_like(hgc), stiffness

@@ -78,6 +78,9 @@ class Layout:
     pool_layers : names of the layers whose particles GAG pools convert and damage delaminates (the paper's media).
     spacing : (N,) the spacing each particle was laid out at [um] (``dx`` everywhere on a uniform layout); its kernel
         support is a multiple of it.
+    second_layer, second_volume : (N,) of a fitted layout (None otherwise): the second layer of a particle on a
+        material interface (``-1``: none) and the part of its volume in that layer; ``volume - second_volume`` lies
+        in ``layer``. Such a particle carries one integration point per layer (:meth:`points`).
     """
 
     X: np.ndarray
@@ -93,6 +96,8 @@ class Layout:
     dx: float
     pool_layers: tuple = ()
     spacing: np.ndarray | None = None
+    second_layer: np.ndarray | None = None
+    second_volume: np.ndarray | None = None
     _ring_members: list = field(default_factory=list, repr=False, compare=False)
 
     def __post_init__(self):
@@ -130,15 +135,38 @@ class Layout:
         return np.isin(self.layer, [k for k, n in enumerate(self.layer_names) if n in name])
 
     @property
+    def fitted(self) -> bool:
+        """Whether particles sit on the material interfaces, shared by both sides (:func:`quarter_annulus`)."""
+        return self.second_layer is not None
+
+    def points(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(owner, layer, volume)`` of the integration points: one per particle and layer it belongs to (two on a
+        material interface of a fitted layout), ordered by owner, then the particle's own layer first; each layer's
+        volumes sum to its exact area."""
+        own = self.volume - (0.0 if self.second_volume is None else self.second_volume)
+        owner, layer, volume = [np.arange(self.n)], [self.layer], [own]
+        if self.fitted:
+            shared = np.flatnonzero(self.second_layer >= 0)
+            owner.append(shared)
+            layer.append(self.second_layer[shared])
+            volume.append(self.second_volume[shared])
+        owner = np.concatenate(owner)
+        order = np.argsort(owner, kind="stable")
+        return owner[order], np.concatenate(layer)[order], np.concatenate(volume)[order]
+
+    @property
     def pool_mask(self) -> np.ndarray:
         """Which particles belong to a pool layer (``pool_layers``)."""
         return self.layer_mask(self.pool_layers)
 
 
-def _ring_radii(interfaces, dx):
+def _ring_radii(interfaces, dx, fitted=()):
     """Ring radii, cell bounds, layer and radial width of every ring, such that surfaces carry rings and interfaces are
     cell bounds; ``dx`` is the spacing, a number or a function of the radius (a graded column,
-    :class:`Grading`).
+    :class:`Grading`). ``fitted``: the indices ``l`` of the interfaces (``interfaces[l]``, between layers ``l - 1`` and
+    ``l``) that carry a ring of their own, like a surface on both sides (a material interface, :func:`quarter_annulus`);
+    its particles' cells straddle the interface, and its ring is listed once, in layer ``l - 1``, with the part of
+    its cell in layer ``l`` as the fifth array (``upper``: the cell's radial extent above the interface; 0 elsewhere).
 
     With ``L`` layers and ``n_l`` rings in layer ``l`` (radial widths ``d_l``):
     a single layer spans ``(n - 1) d`` (half cells at both surfaces); with several
@@ -151,7 +179,7 @@ def _ring_radii(interfaces, dx):
     radii, cells, layer_of_ring, widths = [], [], [], []
     for l in range(n_layers):
         a, b = interfaces[l], interfaces[l + 1]
-        first, last = l == 0, l == n_layers - 1
+        first, last = l == 0 or l in fitted, l == n_layers - 1 or l + 1 in fitted
         half_cells = int(first) + int(last)  # surfaces own half cells
         if callable(dx):  # u(r): cells from a, scaled to end at the layer's count
             r_s = np.linspace(a, b, 2001)
@@ -182,14 +210,19 @@ def _ring_radii(interfaces, dx):
         d = (b - a) / top
         start = a if first else a + 0.5 * d
         for k in range(n):
-            r = start + k * d
+            r = b if (k == n - 1 and l + 1 in fitted) else start + k * d  # an interface's ring: exactly on it
+            if k == 0 and l in fitted:  # the interface's ring, listed in the layer below: its cell reaches up
+                cells[-1] = (cells[-1][0], r + 0.5 * d)
+                continue
             lo = max(r - 0.5 * d, a)
             hi = min(r + 0.5 * d, b)
             radii.append(r)
             cells.append((lo, hi))
             layer_of_ring.append(l)
             widths.append(d)
-    return np.array(radii), np.array(cells), np.array(layer_of_ring), np.array(widths)
+    radii, cells = np.array(radii), np.array(cells)
+    upper = np.where(np.isin(radii, interfaces[list(fitted)]), cells[:, 1] - radii, 0.0)
+    return radii, cells, np.array(layer_of_ring), np.array(widths), upper
 
 
 def _ring_cells(r, dx, lo, hi, at_least):
@@ -200,7 +233,7 @@ def _ring_cells(r, dx, lo, hi, at_least):
     return lo + (np.arange(n) + 0.5) * w, np.full(n, w)
 
 
-def quarter_annulus(interfaces, dx, layer_names=("wall",), pool_layers=(), columns=None) -> Layout:
+def quarter_annulus(interfaces, dx, layer_names=("wall",), pool_layers=(), columns=None, fitted=False) -> Layout:
     """Generate the particle layout of a (possibly layered) quarter annulus.
 
     Parameters
@@ -214,6 +247,9 @@ def quarter_annulus(interfaces, dx, layer_names=("wall",), pool_layers=(), colum
         each laid out at its own spacing ``spacings[k]`` [um], a number or a function of the radius (rings of that
         width, each cut into equal arc cells of about its width: :class:`Grading`); the edges are cell
         boundaries in every ring (e.g. the angular ends of GAG pools). Default: one column at ``dx``.
+    fitted : a ring of particles on every material interface (between layers of different names), shared by both
+        materials (``Layout.second_layer``; :mod:`sphgag.engine.quadrature`), in place of a cell boundary; uniform
+        spacing only.
     """
     interfaces = tuple(float(r) for r in interfaces)
     if len(layer_names) != len(interfaces) - 1:
@@ -229,7 +265,10 @@ def quarter_annulus(interfaces, dx, layer_names=("wall",), pool_layers=(), colum
     if edges[0] != 0.0 or abs(edges[-1] - QUARTER) > 1e-12 or np.any(np.diff(edges) <= 0):
         raise ValueError("column edges must rise strictly from 0 to pi/2")
     at_least = 2 if len(spacings) == 1 else 1
-    X, vol, rad, th, ring_r, ring_lohi, layer, spacing = [], [], [], [], [], [], [], []
+    borders = [k for k in range(1, len(layer_names)) if layer_names[k] != layer_names[k - 1]] if fitted else []
+    if borders and any(callable(s) for s in spacings):
+        raise ValueError("a fitted layout needs uniform spacing (no graded columns)")
+    X, vol, rad, th, ring_r, ring_lohi, layer, spacing, second, above = [], [], [], [], [], [], [], [], [], []
     grids = {}
     for lo, hi, s in zip(edges[:-1], edges[1:], spacings):
         if callable(s):
@@ -237,13 +276,15 @@ def quarter_annulus(interfaces, dx, layer_names=("wall",), pool_layers=(), colum
         else:
             if s <= 0:
                 raise ValueError("column spacings must be positive")
-            grid = grids[s] = grids[s] if s in grids else _ring_radii(interfaces, s)
-        radii, cells, layer_of_ring, widths = grid
-        for r, (a, b), lr, w in zip(radii, cells, layer_of_ring, widths):
+            grid = grids[s] = grids[s] if s in grids else _ring_radii(interfaces, s, borders)
+        radii, cells, layer_of_ring, widths, upper = grid
+        for r, (a, b), lr, w, up in zip(radii, cells, layer_of_ring, widths, upper):
             w = w if callable(s) else s  # a uniform column's particles are laid out at its spacing
             t, dth = _ring_cells(r, w, lo, hi, at_least)
             X.append(np.column_stack([r * np.cos(t), r * np.sin(t)]))
             vol.append(0.5 * (b * b - a * a) * dth)
+            second.append(np.full(t.size, names.index(layer_names[lr + 1]) if up > 0.0 else -1))
+            above.append(0.5 * (b * b - r * r) * dth if up > 0.0 else np.zeros(t.size))
             rad.append(np.full(t.size, r))
             th.append(t)
             ring_r.append(np.full(t.size, r))
@@ -275,6 +316,8 @@ def quarter_annulus(interfaces, dx, layer_names=("wall",), pool_layers=(), colum
         dx=float(dx),
         pool_layers=tuple(pool_layers),
         spacing=np.concatenate(spacing)[order],
+        second_layer=np.concatenate(second).astype(np.int64)[order] if borders else None,
+        second_volume=np.concatenate(above)[order] if borders else None,
         _ring_members=members,
     )
 

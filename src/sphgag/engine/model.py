@@ -16,7 +16,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from ..physics import materials
-from . import forces, kernel, measure
+from . import forces, kernel, measure, quadrature
 from .geometry import Layout
 from .kernel import Neighbours
 from .loading import LUMEN_LOADS, Load, prescribed_inner_positions, pressure_stiffness_blocks
@@ -36,6 +36,9 @@ class Evaluation:
     constrained: np.ndarray  # particle indices with prescribed positions
     target: np.ndarray  # their prescribed positions
     F_hourglass: np.ndarray | None = None  # F~ of the hourglass penalty (kernel.hourglass_gradients)
+    # (Q, 8): F and P of every integration point of a fitted model (engine.quadrature; F, P above: each particle's
+    # first point), None otherwise
+    FP_points: np.ndarray | None = None
     # ev -> (sigma, J): the stress every measurement reads (engine.measure), bound to the model; None: eq. 2.10
     recovery: Callable | None = field(default=None, repr=False, compare=False)
     recovered: tuple | None = field(default=None, repr=False, compare=False)  # its value, once computed
@@ -109,6 +112,10 @@ class Model:
     boundary : optional ``boundary(load) -> (indices, positions)`` of particles with
         prescribed positions; by default the inner surface is held at
         ``load.inner_radius`` when the load prescribes one.
+    points : the integration points of an interface-fitted layout (:class:`sphgag.engine.quadrature.Quadrature`:
+        each side of a material interface computes its F from its own side), or None: one point per particle over
+        its full stencil (eq. 2.9 as printed). With points, ``props`` has one row per point, and the hourglass
+        control is its energy form over each point's stencil.
     """
 
     name: str
@@ -121,6 +128,7 @@ class Model:
     cavities: tuple = ()
     stress_recovery: str = "paper"
     lumen_load: str = "surface"  # loading.LUMEN_LOADS: how the lumen pressure becomes particle forces
+    points: quadrature.Quadrature | None = None
     # derived data of the fields above (material tables, hourglass stencil): every model object, a replaced one too,
     # starts with its own, empty
     _cache: dict = field(default_factory=dict, init=False, repr=False, compare=False)
@@ -131,7 +139,19 @@ class Model:
         self._lumen = LUMEN_LOADS.lookup(self.lumen_load)
         self.cth = np.cos(self.layout.theta)
         self.sth = np.sin(self.layout.theta)
-        indptr, indices, blockmap, map_ptr = forces.block_pattern(self.nb.ptr, self.nb.nbr)
+        if self.points is None:
+            indptr, indices, blockmap, map_ptr = forces.block_pattern(self.nb.ptr, self.nb.nbr)
+        else:
+            fitted = dict(hourglass="energy", stress_recovery="paper", lumen_load="surface")
+            wrong = [f"{k} = {getattr(self, k)}" for k, v in fitted.items() if getattr(self, k) != v]
+            if wrong or self.cavities:
+                raise ValueError(
+                    f"[{self.name}] interface-fitted points need the energy hourglass form, the paper's stress "
+                    f"reading, the surface lumen load and no cavity pool; got {', '.join(wrong) or 'cavities'}"
+                )
+            pts = self.points
+            self.cth_points, self.sth_points = self.cth[pts.owner], self.sth[pts.owner]
+            indptr, indices, blockmap, map_ptr = forces.block_pattern(pts.ptr, pts.particle, pts.owner)
         self.block_indptr, self.block_indices = indptr, indices
         self.blockmap, self.map_ptr = blockmap, map_ptr
         n_ext = self.n + self.nb.ghost_owner.size
@@ -143,6 +163,12 @@ class Model:
     @property
     def n(self) -> int:
         return self.layout.n
+
+    @property
+    def stencil(self):
+        """The stencils the stresses are integrated over: the particles' (:attr:`nb`) or the integration points'
+        (:attr:`points`); both give ``ptr``, ``nbr``, ``mirror``, ``R``, ``w``, ``a``, ``s`` per stencil."""
+        return self.nb if self.points is None else self.points
 
     # -- material -----------------------------------------------------------
     def material(self, load: Load):
@@ -175,18 +201,20 @@ class Model:
         old = self._cache.get("stencil_of")
         if old is not None and old[0] == (self.hourglass, self.hourglass_alpha) and np.array_equal(old[1], cols):
             return
-        V = self.layout.volume
-        hgc = np.empty(self.nb.n_entries)
-        forces.hourglass_coefficients(
-            V, self.nb.ptr, self.nb.nbr, self.nb.R, self.nb.w, props, self.hourglass_alpha, hgc
-        )
-        beta, ah, sh = kernel.hourglass_gradients(self.nb, V, props[:, materials.TISSUE])
-        hgc *= beta
+        st = self.stencil
+        V = self.layout.volume if self.points is None else self.points.volume
+        hgc = np.empty(st.n_entries)
+        forces.hourglass_coefficients(V, st.ptr, st.nbr, st.R, st.w, props, self.hourglass_alpha, hgc)
+        if self.points is None:
+            beta, ah, sh = kernel.hourglass_gradients(self.nb, V, props[:, materials.TISSUE])
+            hgc *= beta
+        else:  # each point's stencil is its own side's: no pair crosses an interface
+            ah, sh = st.a, st.s
         nb_elastic = self.nb
         if self.cavities:  # a free surface at every cavity: each material's own stencil for F too
             nb_elastic = replace(self.nb, a=ah, s=sh)
         hgc, stiffness = forces.HOURGLASS_FORMS[self.hourglass].contribute(self, ah, sh, hgc)
-        pairs = forces.PairData.pack(nb_elastic, V, hgc, ah)
+        pairs = forces.PairData.pack(nb_elastic, V, hgc, ah) if self.points is None else None
         self._cache.update(
             nb_elastic=nb_elastic,
             stencil_of=((self.hourglass, self.hourglass_alpha), cols),
@@ -255,10 +283,21 @@ class Model:
         FP = np.empty((n, 12))
         f = np.empty((n, 2))
         props, hgc, pairs = self.material(load)
-        extra = forces.NO_EXTRA_STRESS if extra_stress is None else extra_stress
-        min_det = forces.evaluate_forces(
-            x, pairs, load.axial_stretch, self.cth, self.sth, props, self._xe, self._fe, FP, f, extra
-        )
+        FPq = None
+        if self.points is None:
+            extra = forces.NO_EXTRA_STRESS if extra_stress is None else extra_stress
+            min_det = forces.evaluate_forces(
+                x, pairs, load.axial_stretch, self.cth, self.sth, props, self._xe, self._fe, FP, f, extra
+            )
+        else:
+            if extra_stress is not None:
+                raise ValueError(f"[{self.name}] no extra stress on interface-fitted points")
+            FPq = np.empty((self.points.n_points, 8))
+            min_det = quadrature.forces_and_stresses(
+                x, self.points, load.axial_stretch, self.cth_points, self.sth_points, props, FPq, f
+            )
+            FP[:, :8] = FPq[self.points.first]
+            FP[:, 8:] = FP[:, :4]
         hg = self.hourglass_forces(x, load)
         if hg is not None:
             f += hg
@@ -280,6 +319,7 @@ class Model:
             constrained=cons,
             target=target,
             F_hourglass=Fh,
+            FP_points=FPq,
             recovery=measure.RECOVERIES[self.stress_recovery].bind(self),
         )
 
@@ -290,34 +330,46 @@ class Model:
         ah, sh = self.hourglass_stencil(load)
         elastic = self._cache["nb_elastic"]
         data = np.zeros((self.block_indices.size, 2, 2))
-        forces.jacobian_blocks(
-            ev.x,
-            lay.volume,
-            nb.ptr,
-            nb.nbr,
-            nb.mirror,
-            elastic.a,
-            elastic.s,
-            ah,
-            sh,
-            nb.R,
-            hgc,
-            ev.F,
-            ev.F_hourglass,
-            load.axial_stretch,
-            self.cth,
-            self.sth,
-            props,
-            self.blockmap,
-            self.map_ptr,
-            data,
-        )
+        if self.points is not None:
+            self._point_jacobian(ev, props, data)
+        else:
+            forces.jacobian_blocks(
+                ev.x,
+                lay.volume,
+                nb.ptr,
+                nb.nbr,
+                nb.mirror,
+                elastic.a,
+                elastic.s,
+                ah,
+                sh,
+                nb.R,
+                hgc,
+                ev.F,
+                ev.F_hourglass,
+                load.axial_stretch,
+                self.cth,
+                self.sth,
+                props,
+                self.blockmap,
+                self.map_ptr,
+                data,
+            )
         if self._cache["hg_stiffness"] is not None:
             data -= self._cache["hg_stiffness"]
         for c, blocks, loading in zip(self.cavities, self.cavity_blocks, self._cache["cavity_loadings"]):
             c.add_stiffness(data, blocks, ev.x, loading, load.axial_stretch)
         self._lumen.add_stiffness(self, data, ev, load.pressure_kPa or 0.0)
         return data
+
+    def _point_jacobian(self, ev: Evaluation, props, data) -> None:
+        """The elastic part of the Jacobian of a fitted model, ``-sum_q V_q B_q^T A_q B_q`` over its integration
+        points (:func:`sphgag.engine.forces.jacobian_blocks` on the points' stencils, no pair forces of eq. 2.14)."""
+        pts, FPq = self.points, ev.FP_points
+        Fq = np.ascontiguousarray(FPq[:, :4]).reshape(-1, 2, 2)
+        stencil = (pts.ptr, pts.particle, pts.mirror, pts.a, pts.s, pts.a, pts.s, pts.R)
+        frame = (ev.load.axial_stretch, self.cth_points, self.sth_points, props, self.blockmap, self.map_ptr)
+        forces.jacobian_blocks(ev.x, pts.volume, *stencil, np.zeros(pts.n_entries), Fq, Fq, *frame, data)
 
     def lining_pressures(self, ev: Evaluation) -> list[float]:
         """The pressure [kPa] on each cavity's lining at ``ev``: the normal Cauchy traction the prescribed Pi and the

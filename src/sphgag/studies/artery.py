@@ -13,7 +13,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ..engine import geometry, history, kernel
+from ..engine import geometry, history, kernel, quadrature
 from ..engine.loading import Load
 from ..engine.model import Model
 from ..engine.numerics import Numerics
@@ -471,12 +471,15 @@ def pool_sector(case: dict) -> geometry.Sector:
     )
 
 
-def bilayer_layout(p: Bilayer | dict, pools=(), graded: geometry.Grading | dict | None = None) -> geometry.Layout:
+def bilayer_layout(
+    p: Bilayer | dict, pools=(), graded: geometry.Grading | dict | None = None, fitted: bool = False
+) -> geometry.Layout:
     """Particles of the layered wall: one band per entry of ``layers``, each split at the ``aligned_radii_um`` inside
     it (cell boundaries: the radial edges of GAG pools). With ``pools`` (:class:`geometry.Sector`), their angular ends
     are cell boundaries and the spacing is graded around them (finest at their corners) by ``graded``
     (:class:`sphgag.engine.geometry.Grading`); without it, or with its uniform grading, the layout is the wall's own
-    uniform one (a pool is the particles whose centres lie in its sector)."""
+    uniform one (a pool is the particles whose centres lie in its sector). ``fitted``: a ring of particles on every
+    border between layers of different materials, shared by both (:mod:`sphgag.engine.quadrature`)."""
     p = Bilayer.of(p)
     radii, names = [p.inner_radius_um], []
     for name, a, b in p.bands():
@@ -487,7 +490,9 @@ def bilayer_layout(p: Bilayer | dict, pools=(), graded: geometry.Grading | dict 
     columns = None
     if pools and grading is not None and not grading.uniform:
         columns = geometry.columns(geometry.Field(tuple(pools), p.dx_um, grading))
-    return geometry.quarter_annulus(radii, p.dx_um, layer_names=names, pool_layers=p.pool_layers, columns=columns)
+    return geometry.quarter_annulus(
+        radii, p.dx_um, layer_names=names, pool_layers=p.pool_layers, columns=columns, fitted=fitted
+    )
 
 
 def bilayer_model(
@@ -497,6 +502,7 @@ def bilayer_model(
     pool=None,
     gag: materials.Gag | dict | None = None,
     graded: geometry.Grading | dict | None = None,
+    fitted: bool = False,
 ) -> Model:
     """Bi-layered model (section 2.4.2, Table 2) in its in vivo reference configuration.
 
@@ -510,14 +516,21 @@ def bilayer_model(
     load's ``transition`` converts them and its ``concentration`` swells them. With a non-uniform ``graded``
     (:mod:`sphgag.engine.geometry`) the layout is graded around the pools, their ends cell boundaries
     (:func:`bilayer_layout`).
+
+    ``fitted``: particles on the media/adventitia border, shared by both layers, each layer's deformation gradient
+    from its own side (:mod:`sphgag.engine.quadrature`; docs/physics.md, "Interface-fitted particles"); a wall without
+    pools only, for now (a pool's boundary is not yet an interface of the layout).
     """
     pools = [] if pool is None else [pool] if isinstance(pool, geometry.Sector) else list(pool)
-    layout = bilayer_layout(p, pools, graded)
+    if fitted and pools:
+        raise ValueError(f"[{name}] interface-fitted particles do not yet place particles on a pool's boundary")
+    layout = bilayer_layout(p, pools, graded, fitted)
     nb = kernel.for_layout(layout, numerics.kernel_support_factor)
-    material = BilayerMaterial(p, layout)
+    points = quadrature.build(layout, nb) if fitted else None
+    material = BilayerMaterial(p, layout if points is None else points.layout)
     if pools:
         material = seeding(material, layout, pools, gag)
-    return Model(name, layout, nb, material, **numerics.model_options())
+    return Model(name, layout, nb, material, points=points, **numerics.model_options())
 
 
 def seeding(base, layout: geometry.Layout, sectors, gag: dict) -> history.HistoryMaterial:
