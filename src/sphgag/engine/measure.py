@@ -60,13 +60,49 @@ def cauchy_polar(ev: Evaluation, kernel: bool = False):
     (:func:`cauchy`), or with ``kernel`` the particle's own kernel stress (eq. 2.10,
     :meth:`sphgag.engine.model.Evaluation.kernel_cauchy`) whatever the recovery."""
     sig, J = ev.kernel_cauchy() if kernel else cauchy(ev)
-    x = ev.x
+    return (*polar(sig, ev.x), J)
+
+
+def polar(sig: np.ndarray, x: np.ndarray):
+    """``(sigma_rr, sigma_tt, sigma_rt)`` of the in-plane Cauchy stresses ``sig`` (n, 2, 2) at the positions ``x`` in
+    their current polar frame."""
     phi = np.arctan2(x[:, 1], x[:, 0])
     c, s = np.cos(phi), np.sin(phi)
     srr = c * c * sig[:, 0, 0] + s * s * sig[:, 1, 1] + c * s * (sig[:, 0, 1] + sig[:, 1, 0])
     stt = s * s * sig[:, 0, 0] + c * c * sig[:, 1, 1] - c * s * (sig[:, 0, 1] + sig[:, 1, 0])
     srt = c * s * (sig[:, 1, 1] - sig[:, 0, 0]) + c * c * sig[:, 0, 1] - s * s * sig[:, 1, 0]
-    return srr, stt, srt, J
+    return srr, stt, srt
+
+
+def interface_stresses(model: Model, ev: Evaluation) -> pd.DataFrame:
+    """Both sides of every material interface of an interface-fitted model (:mod:`sphgag.engine.quadrature`): per ring
+    of shared particles and side, the mean current radius and the mean radial and hoop Cauchy stress of the side's
+    integration points (eq. 2.10 with each side's own F and material). The radial (normal) stress is continuous
+    across the interface in the continuum; the two sides' difference is the discretisation's. Empty for a model
+    without integration points."""
+    columns = ["ring", "reference_radius_um", "radius_um", "layer", "radial_stress_kPa", "circ_stress_kPa"]
+    pts = model.points
+    if pts is None or not pts.shared.size:
+        return pd.DataFrame(columns=columns)
+    shared = np.isin(pts.owner, pts.shared)
+    q = np.flatnonzero(shared)
+    F = np.ascontiguousarray(ev.FP_points[q, :4]).reshape(-1, 2, 2)
+    P = np.ascontiguousarray(ev.FP_points[q, 4:]).reshape(-1, 2, 2)
+    J = (F[:, 0, 0] * F[:, 1, 1] - F[:, 0, 1] * F[:, 1, 0]) * ev.load.axial_stretch
+    x = ev.x[pts.owner[q]]
+    srr, stt, _ = polar(np.einsum("nab,ncb->nac", P, F) / J[:, None, None], x)
+    lay = model.layout
+    table = pd.DataFrame(
+        dict(
+            ring=lay.ring[pts.owner[q]],
+            reference_radius_um=lay.radius[pts.owner[q]],
+            radius_um=np.linalg.norm(x, axis=1),
+            layer=np.asarray(lay.layer_names)[pts.layer[q]],
+            radial_stress_kPa=srr,
+            circ_stress_kPa=stt,
+        )
+    )
+    return table.groupby(["ring", "layer"], sort=True).mean().reset_index()[columns]
 
 
 def surface_radius(model: Model, x: np.ndarray, which: str) -> float:

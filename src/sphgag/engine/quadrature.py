@@ -19,11 +19,13 @@ outputs; docs/physics.md, "Interface-fitted particles"). Here, as finite element
   ``s_q = sum_e a_e``); an interface particle receives forces from both sides.
 
 Continuity across the interface is exact (shared particles), and the traction continuity is variational (one energy):
-no new unknown and no penalty. A field that is affine on each side is reproduced exactly on each side (the bimaterial
-patch test, ``tests/test_quadrature.py``). The hourglass control is the energy form of eq. (2.14) over each point's
-stencil (pairs within a side only): :class:`sphgag.engine.forces.EnergyForm` on :attr:`Quadrature.stencil`.
-
-The straddling scheme of the paper is the special case of one point per particle whose stencil is every neighbour.
+no new unknown and no penalty. A field that is affine on each side is reproduced exactly on each side. One-sided
+stencils alone leave the band along an interface out of balance under a piecewise-uniform stress (up to a third of
+``|P| dx`` per particle in the bimaterial patch test): the corrected gradients do not integrate consistently there.
+:func:`consistent_gradients` makes them do so (variationally consistent integration), once per layout, and the
+bimaterial patch test then holds to round-off (``tests/test_quadrature.py``). The hourglass control is the energy form
+of eq. (2.14) over each point's stencil (pairs within a side only): :class:`sphgag.engine.forces.EnergyForm` on the
+model's :attr:`sphgag.engine.model.Model.stencil`.
 """
 
 from __future__ import annotations

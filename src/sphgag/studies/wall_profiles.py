@@ -94,10 +94,13 @@ def mean_states(p: dict, numerics: Numerics, calibration: dict, pressures_mmHg) 
     return [("mean", model, tube, s) for s in path if _pressure(s) in wanted and s.load.axial_stretch == lz]
 
 
-def bilayer_states(p: dict, numerics: Numerics, homeostasis: dict, cal: dict, walls, pressures_mmHg) -> list:
+def bilayer_states(
+    p: dict, numerics: Numerics, homeostasis: dict, cal: dict, walls, pressures_mmHg, fitted: bool = False
+) -> list:
     """``[(wall, model, tube, state)]``: the bi-layered wall ``p``, passive and/or active (``walls``), at
-    ``pressures_mmHg`` by figure 3's path (:func:`sphgag.studies.wall_loading.activated`, then pressure control)."""
-    model = artery.bilayer_model(p, numerics)
+    ``pressures_mmHg`` by figure 3's path (:func:`sphgag.studies.wall_loading.activated`, then pressure control);
+    ``fitted``: on interface-fitted particles (:func:`sphgag.studies.artery.bilayer_model`)."""
+    model = artery.bilayer_model(p, numerics, name="bilayer-fitted" if fitted else "bilayer", fitted=fitted)
     path_solver = numerics.solver(model)
     h = homeostasis_(model, numerics, homeostasis, path_solver=path_solver)
     wanted = {round(P, 10) for P in pressures_mmHg}
