@@ -107,7 +107,7 @@ def test_straddling_stencils_fail_the_same_patch_test():
     a = np.empty_like(points.a)
     s, A = np.empty_like(points.s), np.empty_like(points.A)
     stencil = (points.volume, points.he, points.ptr, points.nbr, points.R)
-    quadrature._stencil_gradients(*stencil, np.ones(a.shape[0]), a, s, A)
+    quadrature.stencil_gradients(*stencil, np.ones(a.shape[0]), a, s, A)
     inside = ~np.isin(points.owner, edge) & (np.bincount(points.owner)[points.owner] == 1)
     for gradients, bound in ((a, None), (points.a, 1e-12)):
         D = quadrature.divergence(points.volume, points.ptr, points.nbr, points.mirror, gradients)

@@ -215,9 +215,10 @@ def _deformation_gradients(xe, pair_ptr, pair_j, pair_a, solo_ptr, solo_j, solo_
 
 
 @njit(cache=True, error_model="numpy", parallel=True)
-def _stresses(lz, cth, sth, props, extra, FP, n):
-    """Pass 1b of :func:`forces_and_stresses`: ``P_i`` (eq. 2.10) from ``F_i``, parallel over particles (Numba
-    threads); returns the smallest det(F_2D) (NaN stress where det <= 0)."""
+def piola_stresses(lz, cth, sth, props, extra, FP, n):
+    """Pass 1b of :func:`forces_and_stresses`: ``P_i`` (eq. 2.10) from ``F_i`` and row ``i`` of ``props``, parallel
+    over particles, or over integration points (:mod:`sphgag.engine.quadrature`) (Numba threads); returns the smallest
+    det(F_2D) (NaN stress where det <= 0)."""
     dets = np.empty(n)
     for i in prange(n):
         f00, f01, f10, f11 = FP[i, 0], FP[i, 1], FP[i, 2], FP[i, 3]
@@ -245,7 +246,7 @@ def forces_and_stresses(x, pd, lz, cth, sth, props, extra, xe, fe, FP, f):
     ``F~_i`` of the weighted stencil ``ah`` (:func:`sphgag.engine.kernel.hourglass_gradients`;
     ``F~ = F`` without a GAG/tissue interface), accumulated over the half list of pairs
     (:func:`_deformation_gradients`), then ``P_i`` from each particle's material row
-    (:func:`_stresses`, parallel); ``FP[i] = (F_i, P_i, F~_i)`` (row-major).
+    (:func:`piola_stresses`, parallel); ``FP[i] = (F_i, P_i, F~_i)`` (row-major).
     Pass 2, over the half list of real pairs: the two directed pair vectors
     ``t_ij = V_i P_i a_ij - c_ij delta_ij n_ij`` (``f_i += t_ij``, ``f_j -= t_ij``)
     and ``t_ji`` share the separation and the division, so each pair is
@@ -260,7 +261,7 @@ def forces_and_stresses(x, pd, lz, cth, sth, props, extra, xe, fe, FP, f):
     n = x.shape[0]
     extend(x, ghost_owner, ghost_mirror, xe)
     _deformation_gradients(xe, pair_ptr, pair_j, pair_a, solo_ptr, solo_j, solo_a, split, FP, n)
-    dmin = _stresses(lz, cth, sth, props, extra, FP, n)
+    dmin = piola_stresses(lz, cth, sth, props, extra, FP, n)
     fe[:, :] = 0.0
     for i in range(n):
         xi0, xi1 = xe[i, 0], xe[i, 1]

@@ -112,11 +112,11 @@ def _corrected_gradients(X, V, he, ptr, nbr, mir, R, w, a, s, A_out):
             R[e, 0] = r0
             R[e, 1] = r1
             w[e] = spiky(np.sqrt(r0 * r0 + r1 * r1), he[e])
-    _stencil_gradients(V, he, ptr, nbr, R, np.ones(nbr.shape[0]), a, s, A_out)
+    stencil_gradients(V, he, ptr, nbr, R, np.ones(nbr.shape[0]), a, s, A_out)
 
 
 @njit(cache=True)
-def _stencil_gradients(V, he, ptr, nbr, R, beta, a, s, A_out):
+def stencil_gradients(V, he, ptr, nbr, R, beta, a, s, A_out):
     """``a_ij = beta_ij V_j A_i^-1 grad xi_ij`` with ``A_i = sum_j beta_ij V_j grad xi_ij (x) R_ij`` (eqs. 2.7-2.8),
     their sums ``s_i`` and ``A_i``; ``he``: each entry's support ``h_ij``; ``beta`` weights the stencil (1: the full
     stencil). A particle whose ``A_i`` is singular gets zero gradients."""
@@ -180,7 +180,7 @@ def hourglass_gradients(nb: Neighbours, V, tissue):
     if np.all(beta == 1.0):
         return beta, nb.a, nb.s
     ah, sh, A = np.empty_like(nb.a), np.empty_like(nb.s), np.empty_like(nb.A)
-    _stencil_gradients(V, nb.he, nb.ptr, nb.nbr, nb.R, beta, ah, sh, A)
+    stencil_gradients(V, nb.he, nb.ptr, nb.nbr, nb.R, beta, ah, sh, A)
     # a (nearly) rank-deficient own-material stencil (an isolated GAG particle) keeps the full stencil
     det = A[:, 0, 0] * A[:, 1, 1] - A[:, 0, 1] * A[:, 1, 0]
     tr = A[:, 0, 0] + A[:, 1, 1]

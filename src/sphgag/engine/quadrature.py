@@ -37,10 +37,9 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 from numba import njit, prange
 
-from ..physics.materials import first_piola
-from .forces import block_pattern
+from .forces import NO_EXTRA_STRESS, block_pattern, piola_stresses
 from .geometry import Layout
-from .kernel import Neighbours, _stencil_gradients
+from .kernel import Neighbours, stencil_gradients
 from .loading import lumen_area_gradient
 
 
@@ -116,7 +115,7 @@ def build(layout: Layout, nb: Neighbours, free_surface=None, loaded_surface=None
     E = entry.size
     a, s, A = np.empty((E, 2)), np.empty((q_count, 2)), np.empty((q_count, 2, 2))
     R, he = np.ascontiguousarray(nb.R[entry]), np.ascontiguousarray(nb.he[entry])
-    _stencil_gradients(volume, he, ptr, target, R, np.ones(E), a, s, A)
+    stencil_gradients(volume, he, ptr, target, R, np.ones(E), a, s, A)
     free = np.zeros(n, dtype=bool)
     free[layout.outer_surface if free_surface is None else free_surface] = True
     loaded = np.full((q_count, 2), np.nan)
@@ -345,13 +344,10 @@ def _apply_correction(V, ptr, nbr, mir, R, w, lam, a):
 
 
 @njit(cache=True, error_model="numpy", parallel=True)
-def _gradients_and_stresses(x, owner, particle, ptr, mir, a, lz, cth, sth, props, FP):
-    """``FP[q] = (F_q, P_q)`` (row-major): ``F_q = sum_e (M_e x_j - x_o) (x) a_e`` over the point's one-sided stencil
-    and ``P_q`` of its own material row (eq. 2.10), parallel over points; returns the smallest det(F_2D) (NaN stress
-    where det <= 0)."""
-    nq = owner.shape[0]
-    dets = np.empty(nq)
-    for q in prange(nq):
+def _gradients(x, owner, particle, ptr, mir, a, FP):
+    """``FP[q, :4] = F_q`` (row-major): ``F_q = sum_e (M_e x_j - x_o) (x) a_e`` over the point's one-sided stencil
+    (eq. 2.9), parallel over points."""
+    for q in prange(owner.shape[0]):
         o = owner[q]
         xo0, xo1 = x[o, 0], x[o, 1]
         f00 = f01 = f10 = f11 = 0.0
@@ -364,16 +360,6 @@ def _gradients_and_stresses(x, owner, particle, ptr, mir, a, lz, cth, sth, props
             f10 += d1 * a[e, 0]
             f11 += d1 * a[e, 1]
         FP[q, 0], FP[q, 1], FP[q, 2], FP[q, 3] = f00, f01, f10, f11
-        det = f00 * f11 - f01 * f10
-        dets[q] = det
-        if det > 0.0:
-            FP[q, 4], FP[q, 5], FP[q, 6], FP[q, 7] = first_piola(f00, f01, f10, f11, lz, cth[q], sth[q], props, q)
-        else:
-            FP[q, 4] = FP[q, 5] = FP[q, 6] = FP[q, 7] = np.nan
-    dmin = np.inf
-    for q in range(nq):
-        dmin = min(dmin, dets[q])
-    return dmin
 
 
 @njit(cache=True, error_model="numpy")
@@ -394,7 +380,8 @@ def _scatter(owner, particle, ptr, mir, a, s, V, FP, f):
 
 def forces_and_stresses(x, quad: Quadrature, lz, cth, sth, props, FP, f) -> float:
     """One force evaluation of a fitted model: ``FP`` (Q, 8) the points' F and P, ``f`` (N, 2) the internal forces;
-    ``cth, sth, props``: per point. Returns the smallest det(F_2D)."""
-    dmin = _gradients_and_stresses(x, quad.owner, quad.particle, quad.ptr, quad.mirror, quad.a, lz, cth, sth, props, FP)
+    ``cth, sth, props``: per point. Returns the smallest det(F_2D) (a point with det <= 0 gets NaN stress)."""
+    _gradients(x, quad.owner, quad.particle, quad.ptr, quad.mirror, quad.a, FP)
+    dmin = piola_stresses(lz, cth, sth, props, NO_EXTRA_STRESS, FP, quad.n_points)  # P_q of its own row (eq. 2.10)
     _scatter(quad.owner, quad.particle, quad.ptr, quad.mirror, quad.a, quad.s, quad.volume, FP, f)
     return float(dmin)
