@@ -100,9 +100,9 @@ def test_bimaterial_patch_test(dy_above):
     assert points.shared.size == 24  # the interface row, shared
 
 
-def test_straddling_stencils_fail_the_same_patch_test():
-    """The same state on the gradients of eq. (2.9) over one-sided stencils without the integration constraints:
-    F is still exact, but the band along the interface is out of balance (the failure the constraints remove)."""
+def test_one_sided_gradients_alone_are_not_integration_consistent():
+    """Eq. (2.8)'s gradients over the one-sided stencils, before the integration constraints: the band along the
+    interface has ``D != 0`` (out of balance under the patch test's stress: the failure the constraints remove)."""
     lay, points, edge = block()
     a = np.empty_like(points.a)
     s, A = np.empty_like(points.s), np.empty_like(points.A)

@@ -384,7 +384,10 @@ def jacobian_blocks(x, V, ptr, nbr, mir, a, s, ah, sh, R, hgc, F, Fh, lz, cth, s
     Elastic part: ``-sum_i V_i B_i^T A_i B_i`` with ``F_i = sum_p (M_p x_p) (x) b_p``
     (node 0 = i with b = -s_i, node k = entry k with b = a_ik). Hourglass part:
     derivative of the pair vectors ``c delta n`` through the hourglass gradient
-    ``F~_i`` (node vectors ``-sh_i``, ``ah_ik``), ``r`` and ``n``.
+    ``F~_i`` (node vectors ``-sh_i``, ``ah_ik``), ``r`` and ``n``. Over integration points
+    (:mod:`sphgag.engine.quadrature`: stencil i is point i, its nodes its owner and its neighbour particles) the pair
+    coefficients ``hgc`` must be zero (their hourglass control is the energy form): the pair term reads ``x[i]`` as
+    the stencil's own particle.
     """
     n = ptr.shape[0] - 1  # stencils: the particles', or the integration points' (engine.quadrature)
     C = np.empty((3, 3))
