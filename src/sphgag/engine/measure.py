@@ -63,6 +63,13 @@ def cauchy_polar(ev: Evaluation, kernel: bool = False):
     return (*polar(sig, ev.x), J)
 
 
+def kernel_stress(F: np.ndarray, P: np.ndarray, lz: float) -> tuple[np.ndarray, np.ndarray]:
+    """``(sigma, J)``: the in-plane Cauchy stress ``sigma = P F^T / J`` (eq. 2.10) of the deformation gradients ``F``
+    and first Piola stresses ``P`` (n, 2, 2), with ``J = det F lambda_z``."""
+    J = (F[:, 0, 0] * F[:, 1, 1] - F[:, 0, 1] * F[:, 1, 0]) * lz
+    return np.einsum("nab,ncb->nac", P, F) / J[:, None, None], J
+
+
 def polar(sig: np.ndarray, x: np.ndarray):
     """``(sigma_rr, sigma_tt, sigma_rt)`` of the in-plane Cauchy stresses ``sig`` (n, 2, 2) at the positions ``x`` in
     their current polar frame."""
@@ -88,9 +95,8 @@ def interface_stresses(model: Model, ev: Evaluation) -> pd.DataFrame:
     q = np.flatnonzero(shared)
     F = np.ascontiguousarray(ev.FP_points[q, :4]).reshape(-1, 2, 2)
     P = np.ascontiguousarray(ev.FP_points[q, 4:]).reshape(-1, 2, 2)
-    J = (F[:, 0, 0] * F[:, 1, 1] - F[:, 0, 1] * F[:, 1, 0]) * ev.load.axial_stretch
     x = ev.x[pts.owner[q]]
-    srr, stt, _ = polar(np.einsum("nab,ncb->nac", P, F) / J[:, None, None], x)
+    srr, stt, _ = polar(kernel_stress(F, P, ev.load.axial_stretch)[0], x)
     lay = model.layout
     table = pd.DataFrame(
         dict(

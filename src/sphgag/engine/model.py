@@ -46,9 +46,7 @@ class Evaluation:
     def kernel_cauchy(self) -> tuple[np.ndarray, np.ndarray]:
         """``(sigma, J)``: each particle's own in-plane Cauchy stress ``sigma = P F^T / J`` (eq. 2.10), ``(n, 2, 2)``
         in global x-y, and ``J = det F lambda_z``: the stress the equilibrium balances."""
-        F, P = self.F, self.P
-        J = (F[:, 0, 0] * F[:, 1, 1] - F[:, 0, 1] * F[:, 1, 0]) * self.load.axial_stretch
-        return np.einsum("nab,ncb->nac", P, F) / J[:, None, None], J
+        return measure.kernel_stress(self.F, self.P, self.load.axial_stretch)
 
     def cauchy(self) -> tuple[np.ndarray, np.ndarray]:
         """``(sigma, J)`` as the measurements read them: the stress recovered by the model's recovery

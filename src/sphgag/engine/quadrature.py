@@ -137,8 +137,7 @@ def build(layout: Layout, nb: Neighbours, free_surface=None, loaded_surface=None
     mirror, w = np.ascontiguousarray(nb.mirror[entry]), np.ascontiguousarray(nb.w[entry])
     a = consistent_gradients(owner, volume, ptr, target, mirror, R, w, a, free, loaded)
     s = stencil_sums(ptr, a)
-    first = np.full(n, -1, dtype=np.int64)
-    first[owner[::-1]] = np.arange(q_count)[::-1]
+    first = first_points(owner)
     points = Layout(
         X=np.ascontiguousarray(layout.X[owner]),
         volume=volume,
@@ -171,6 +170,13 @@ def build(layout: Layout, nb: Neighbours, free_surface=None, loaded_surface=None
         A=A,
         layout=points,
     )
+
+
+def first_points(owner) -> np.ndarray:
+    """Each particle's first integration point (``owner`` sorted, as :meth:`Layout.points` orders it)."""
+    first = np.full(int(owner.max()) + 1, -1, dtype=np.int64)
+    first[owner[::-1]] = np.arange(owner.size)[::-1]
+    return first
 
 
 def stencil_sums(ptr, a) -> np.ndarray:
@@ -239,8 +245,7 @@ def _constraints(owner, ptr, nbr, R, free, loaded) -> tuple[sp.csr_matrix, np.nd
     tangential part (none at a corner)."""
     q_count = owner.size
     counts = np.bincount(owner)
-    first = np.full(counts.size, -1)
-    first[owner[::-1]] = np.arange(q_count)[::-1]
+    first = first_points(owner)
     shared = counts[owner] > 1
     normal = np.where(shared[:, None], _normals(shared[first], owner, ptr, nbr, R), _normals(free, owner, ptr, nbr, R))
     whole = ~free[owner] | shared  # every point with its two columns (on its particle's first point's)
